@@ -1,0 +1,14 @@
+#pragma once
+// Each `cutaway` subcommand registers itself on the CLI11 app and returns the action to run.
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace cutaway::app {
+
+/// Runs the parsed subcommand; returns the process exit code.
+using CommandAction = std::function<int()>;
+
+CommandAction add_inspect_command(CLI::App& app);
+
+}  // namespace cutaway::app

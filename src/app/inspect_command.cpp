@@ -1,0 +1,137 @@
+// `cutaway inspect MODEL.grdecl [MORE.grdecl...] [--json] [--cells-csv FILE]`
+#include <charconv>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "grid/grdecl_reader.h"
+#include "grid/grid_summary.h"
+
+namespace cutaway::app {
+namespace {
+
+struct InspectOptions {
+    std::vector<std::string> files;
+    bool json = false;
+    std::string cells_csv;
+    double memory_limit_gb = 16;
+};
+
+std::string shortest(double value) {
+    char buffer[32];
+    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+}
+
+void write_cells_csv(const std::string& path, const grid::CornerPointGrid& grid) {
+    std::ofstream out(path);
+    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+    out << "i,j,k,volume,cx,cy,cz\n";
+    const grid::GridDims& d = grid.dims();
+    for (int k = 0; k < d.nz; ++k)
+        for (int j = 0; j < d.ny; ++j)
+            for (int i = 0; i < d.nx; ++i) {
+                if (!grid.active(d.cell_index(i, j, k))) continue;
+                const grid::CellCorners corners = grid::cell_corners(grid, i, j, k);
+                const grid::Point3 c = grid::cell_centre(corners);
+                out << i << ',' << j << ',' << k << ',' << shortest(grid::cell_volume(corners)) << ','
+                    << shortest(c.x) << ',' << shortest(c.y) << ',' << shortest(c.z) << '\n';
+            }
+    if (!out.flush()) throw std::runtime_error(path + ": write failed");
+}
+
+nlohmann::json summary_json(const InspectOptions& options, const grid::CornerPointGrid& grid,
+                            const grid::GridSummary& s, const std::vector<std::string>& warnings, double load_ms,
+                            double summary_ms) {
+    nlohmann::json j;
+    j["files"] = options.files;
+    j["dims"] = {s.dims.nx, s.dims.ny, s.dims.nz};
+    j["cells"] = s.cells;
+    j["active_cells"] = s.active_cells;
+    j["faces"] = {{"interior", s.faces.interior}, {"fault", s.faces.fault}, {"shell", s.faces.shell}};
+    j["face_tolerance"] = s.face_tolerance;
+    j["volume"] = {{"total", s.total_active_volume}, {"min", s.min_active_volume}, {"max", s.max_active_volume}};
+    j["pinched_cells"] = s.pinched_cells;
+    j["inverted_cells"] = s.inverted_cells;
+    if (!s.bounds.empty())
+        j["bounds"] = {{"min", {s.bounds.min.x, s.bounds.min.y, s.bounds.min.z}},
+                       {"max", {s.bounds.max.x, s.bounds.max.y, s.bounds.max.z}}};
+    j["properties"] = grid.property_names();
+    j["int_properties"] = grid.int_property_names();
+    nlohmann::json dynamic = nlohmann::json::object();
+    for (const auto& name : grid.dynamic_property_names()) dynamic[name] = grid.step_count(name);
+    j["dynamic_properties"] = dynamic;
+    const grid::GridMetadata& meta = grid.metadata();
+    j["mapaxes"] = meta.mapaxes ? nlohmann::json(*meta.mapaxes) : nlohmann::json(nullptr);
+    j["grid_unit"] = meta.grid_unit;
+    j["map_units"] = meta.map_units;
+    j["gdorient"] = meta.gdorient;
+    j["zcorn_layout"] = s.zcorn_compact ? "compact" : "full";
+    j["memory"] = {{"geometry_bytes", s.geometry_bytes},
+                   {"property_bytes", s.property_bytes},
+                   {"geometry_bytes_per_cell", s.cells ? double(s.geometry_bytes) / double(s.cells) : 0.0}};
+    j["times_ms"] = {{"load", load_ms}, {"summary", summary_ms}};
+    j["warnings"] = warnings;
+    return j;
+}
+
+void print_text(std::ostream& out, const nlohmann::json& j) {
+    out << "files:        ";
+    for (const auto& f : j["files"]) out << f.get<std::string>() << ' ';
+    out << "\ndimensions:   " << j["dims"][0] << " x " << j["dims"][1] << " x " << j["dims"][2] << " = " << j["cells"]
+        << " cells\nactive cells: " << j["active_cells"] << "\nfaces:        interior " << j["faces"]["interior"]
+        << ", fault " << j["faces"]["fault"] << ", shell " << j["faces"]["shell"] << " (tolerance "
+        << j["face_tolerance"] << ")\nvolume:       total " << j["volume"]["total"] << ", min " << j["volume"]["min"]
+        << ", max " << j["volume"]["max"] << "\nshapes:       " << j["pinched_cells"] << " pinched, "
+        << j["inverted_cells"] << " inverted\n";
+    if (j.contains("bounds")) out << "bounds:       " << j["bounds"]["min"].dump() << " .. " << j["bounds"]["max"].dump() << '\n';
+    out << "properties:   " << j["properties"].dump() << " integer " << j["int_properties"].dump() << " dynamic "
+        << j["dynamic_properties"].dump() << "\nunits:        grid '" << j["grid_unit"].get<std::string>() << "', map '"
+        << j["map_units"].get<std::string>() << "', mapaxes " << j["mapaxes"].dump() << "\nmemory:       "
+        << j["memory"]["geometry_bytes"] << " bytes geometry (" << j["memory"]["geometry_bytes_per_cell"]
+        << " per cell, ZCORN " << j["zcorn_layout"].get<std::string>() << "), " << j["memory"]["property_bytes"]
+        << " bytes properties\ntimes:        load " << j["times_ms"]["load"] << " ms, summary "
+        << j["times_ms"]["summary"] << " ms\n";
+    for (const auto& w : j["warnings"]) out << "warning: " << w.get<std::string>() << '\n';
+}
+
+int run_inspect(const InspectOptions& options) {
+    using clock = std::chrono::steady_clock;
+    grid::GrdeclReadOptions read_options;
+    read_options.memory_limit_bytes = std::size_t(options.memory_limit_gb * 1e9);
+    std::vector<std::filesystem::path> paths(options.files.begin(), options.files.end());
+    std::vector<std::string> warnings;
+
+    const auto t0 = clock::now();
+    const grid::CornerPointGrid grid = grid::load_grdecl(paths, read_options, &warnings);
+    const auto t1 = clock::now();
+    const grid::GridSummary summary = grid::summarize(grid);
+    const auto t2 = clock::now();
+    const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+
+    const nlohmann::json j = summary_json(options, grid, summary, warnings, ms(t0, t1), ms(t1, t2));
+    if (options.json)
+        std::cout << j.dump(2) << '\n';
+    else
+        print_text(std::cout, j);
+    if (!options.cells_csv.empty()) write_cells_csv(options.cells_csv, grid);
+    return 0;
+}
+
+}  // namespace
+
+CommandAction add_inspect_command(CLI::App& app) {
+    auto options = std::make_shared<InspectOptions>();
+    CLI::App* cmd = app.add_subcommand("inspect", "Load GRDECL file(s) onto one grid and report dimensions, "
+                                                  "active cells, faces by class and volumes");
+    cmd->add_option("model", options->files, "GRDECL file(s): the grid, then any property files")->required();
+    cmd->add_flag("--json", options->json, "Print the report as JSON");
+    cmd->add_option("--cells-csv", options->cells_csv, "Write i,j,k,volume,cx,cy,cz per active cell (0-based ijk)");
+    cmd->add_option("--memory-limit-gb", options->memory_limit_gb, "Refuse grids whose arrays need more (GB)")
+        ->check(CLI::PositiveNumber);
+    return [options] { return run_inspect(*options); };
+}
+
+}  // namespace cutaway::app

@@ -1,0 +1,33 @@
+// `cutaway`: one program, one subcommand per job (see ../shared/DESIGN.md for the contract).
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include "app/commands.h"
+#include "grid/grdecl_error.h"
+
+int main(int argc, char** argv) {
+    CLI::App app{"cutaway: corner-point reservoir grids, cutaway rendering and seismic ray casting benchmarks"};
+    app.require_subcommand(1);
+    // One line per subcommand: its registration returns the action run when it is chosen.
+    const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        return app.exit(error);
+    }
+    try {
+        if (app.got_subcommand("inspect")) return inspect();
+    } catch (const cutaway::grid::GrdeclError& error) {
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "cutaway: out of memory (lower the input size or raise --memory-limit-gb)\n";
+        return 3;
+    } catch (const std::exception& error) {
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return 1;
+    }
+    return 1;
+}

@@ -1,0 +1,52 @@
+#include "grid/face_classification.h"
+
+#include <cmath>
+
+#include "grid/cell_geometry.h"
+
+namespace cutaway::grid {
+
+FaceClassification::FaceClassification(const CornerPointGrid& grid, double tolerance)
+    : classes_(6 * grid.cell_count(), FaceClass::none), tolerance_(tolerance) {
+    const GridDims& d = grid.dims();
+    const ZcornStore& z = grid.zcorn();
+    for (int k = 0; k < d.nz; ++k)
+        for (int j = 0; j < d.ny; ++j)
+            for (int i = 0; i < d.nx; ++i) {
+                const std::size_t cell = d.cell_index(i, j, k);
+                if (!grid.active(cell)) continue;
+                for (int side = 0; side < 6; ++side) {
+                    const int axis = side / 2;
+                    const bool plus = side % 2 == 1;
+                    const int step = plus ? 1 : -1;
+                    const int ni = i + (axis == 0 ? step : 0), nj = j + (axis == 1 ? step : 0),
+                              nk = k + (axis == 2 ? step : 0);
+                    FaceClass face = FaceClass::shell;
+                    if (d.contains(ni, nj, nk) && grid.active(d.cell_index(ni, nj, nk))) {
+                        // Corners on this face have the axis bit set (plus side) or clear; the
+                        // neighbour's matching corners sit on the same pillars with the bit flipped.
+                        const int bit = 1 << axis;
+                        face = FaceClass::interior;
+                        for (int c = 0; c < 8; ++c) {
+                            if (((c & bit) != 0) != plus) continue;
+                            if (std::abs(z.corner_depth(i, j, k, c) - z.corner_depth(ni, nj, nk, c ^ bit)) > tolerance)
+                                face = FaceClass::fault;
+                        }
+                    }
+                    classes_[6 * cell + std::size_t(side)] = face;
+                    if (face == FaceClass::shell)
+                        ++counts_.shell;
+                    else if (plus)
+                        ++(face == FaceClass::fault ? counts_.fault : counts_.interior);
+                }
+            }
+}
+
+double default_face_tolerance(const CornerPointGrid& grid) {
+    const Box3 box = grid_bounds(grid);
+    if (box.empty()) return 1e-9;
+    const double dx = box.max.x - box.min.x, dy = box.max.y - box.min.y, dz = box.max.z - box.min.z;
+    return std::max(1e-6 * std::sqrt(dx * dx + dy * dy + dz * dz), 1e-9);
+}
+
+}  // namespace cutaway::grid

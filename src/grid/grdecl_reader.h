@@ -1,0 +1,57 @@
+#pragma once
+// Eclipse GRDECL reader: SPECGRID/DIMENS, COORD, ZCORN, ACTNUM, MAPAXES, GRIDUNIT, MAPUNITS,
+// GDORIENT, per-cell property keywords, INCLUDE, NOECHO/ECHO. One or several files build one grid.
+// Every malformed input raises GrdeclError naming file, line, keyword, expected and found.
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "grid/corner_point_grid.h"
+#include "grid/grdecl_error.h"
+
+namespace cutaway::grid {
+
+struct GrdeclReadOptions {
+    /// Refuse a grid whose arrays would need more than this many bytes, before allocating.
+    std::size_t memory_limit_bytes = std::size_t(16) << 30;
+    /// Largest file (or in-memory text) accepted, bytes.
+    std::size_t max_file_bytes = std::size_t(8) << 30;
+    /// Deepest INCLUDE nesting accepted (loops are detected regardless).
+    int max_include_depth = 32;
+    /// Whether INCLUDE may open files (off for in-memory parsing such as fuzzing).
+    bool allow_include = true;
+};
+
+/// Reads GRDECL files into one grid. Files after the first may add properties only.
+class GrdeclReader {
+public:
+    explicit GrdeclReader(GrdeclReadOptions options = {});
+    ~GrdeclReader();
+    GrdeclReader(const GrdeclReader&) = delete;
+    GrdeclReader& operator=(const GrdeclReader&) = delete;
+
+    void read_file(const std::filesystem::path& path);
+    /// `name` stands for the file in messages; INCLUDE paths resolve against `base_dir`.
+    void read_text(std::string_view text, const std::string& name, const std::filesystem::path& base_dir = {});
+
+    /// The grid built from everything read; throws GrdeclError if SPECGRID/DIMENS, COORD or ZCORN
+    /// is missing. Leaves the reader empty but for its warnings.
+    CornerPointGrid finish();
+
+    /// Non-fatal notes (unknown keywords skipped, redefinitions), "file:line: text".
+    const std::vector<std::string>& warnings() const;
+
+    struct State;  // opaque: the keywords read so far
+
+private:
+    std::unique_ptr<State> state_;
+};
+
+/// Reads `files` in order onto one grid (e.g. a grid file then its property files).
+CornerPointGrid load_grdecl(const std::vector<std::filesystem::path>& files, const GrdeclReadOptions& options = {},
+                            std::vector<std::string>* warnings = nullptr);
+
+}  // namespace cutaway::grid

@@ -1,0 +1,22 @@
+#pragma once
+// GRDECL writer: SPECGRID, metadata, COORD, ZCORN, ACTNUM and every property, with `N*value`
+// runs and shortest round-trip number formatting, so read -> write -> read gives identical arrays.
+#include <filesystem>
+#include <ostream>
+#include <string>
+
+#include "grid/corner_point_grid.h"
+
+namespace cutaway::grid {
+
+struct GrdeclWriteOptions {
+    /// Lines written as `--` comments at the top of the file (e.g. generator parameters).
+    std::vector<std::string> header_comments;
+};
+
+void write_grdecl(std::ostream& out, const CornerPointGrid& grid, const GrdeclWriteOptions& options = {});
+/// Throws std::runtime_error naming the file when it cannot be written.
+void write_grdecl(const std::filesystem::path& path, const CornerPointGrid& grid,
+                  const GrdeclWriteOptions& options = {});
+
+}  // namespace cutaway::grid

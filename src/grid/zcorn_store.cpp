@@ -1,0 +1,53 @@
+#include "grid/zcorn_store.h"
+
+#include <stdexcept>
+
+namespace cutaway::grid {
+
+ZcornStore::ZcornStore(GridDims dims)
+    : dims_(dims), plane_size_(std::size_t(4) * std::size_t(dims.nx) * std::size_t(dims.ny)) {
+    if (plane_size_ == 0) plane_size_ = 1;
+    depths_.assign(plane_size_ * std::size_t(dims.nz + 1), 0.0);
+}
+
+std::size_t ZcornStore::compact_bytes(GridDims dims) {
+    return std::size_t(4) * std::size_t(dims.nx) * std::size_t(dims.ny) * std::size_t(dims.nz + 1) *
+           sizeof(double);
+}
+
+ZcornStore ZcornStore::from_values(GridDims dims, const std::vector<double>& values) {
+    if (values.size() != dims.zcorn_value_count())
+        throw std::invalid_argument("ZcornStore::from_values: expected " +
+                                    std::to_string(dims.zcorn_value_count()) + " depths, got " +
+                                    std::to_string(values.size()));
+    ZcornStore store(dims);
+    for (double z : values) store.push(z);
+    return store;
+}
+
+void ZcornStore::push(double depth) {
+    if (complete()) throw std::logic_error("ZcornStore::push: store is already complete");
+    const std::size_t plane = pushed_ / plane_size_;
+    const std::size_t offset = pushed_ % plane_size_;
+    if (compact_ && plane % 2 == 0 && plane > 0 &&
+        depths_[slot_of(plane) * plane_size_ + offset] != depth) {
+        expand_to_full();
+    }
+    depths_[slot_of(plane) * plane_size_ + offset] = depth;
+    ++pushed_;
+}
+
+void ZcornStore::expand_to_full() {
+    // Every value pushed so far is consistent with the compact layout, so reading each plane
+    // through the compact slots reproduces it exactly.
+    std::vector<double> full(plane_size_ * std::size_t(2 * dims_.nz), 0.0);
+    const std::size_t planes_touched = pushed_ / plane_size_ + 1;
+    for (std::size_t plane = 0; plane < planes_touched && plane < std::size_t(2 * dims_.nz); ++plane) {
+        const std::size_t slot = (plane + 1) / 2;
+        for (std::size_t o = 0; o < plane_size_; ++o) full[plane * plane_size_ + o] = depths_[slot * plane_size_ + o];
+    }
+    depths_ = std::move(full);
+    compact_ = false;
+}
+
+}  // namespace cutaway::grid

@@ -1,0 +1,32 @@
+# `cutaway inspect` as a user runs it: JSON on stdout for the Reek grid, a CSV with one row per
+# active cell, and a clear message with a non-zero exit for a missing file and a malformed one.
+file(MAKE_DIRECTORY ${OUT})
+execute_process(COMMAND ${CUTAWAY} inspect ${DATA}/grdecl/reek/reek_sim_grid.grdecl
+                        ${DATA}/grdecl/reek/reek_sim_poro.grdecl --json --cells-csv ${OUT}/reek_cells.csv
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "inspect failed (${rc}): ${err}")
+endif()
+string(JSON active GET "${out}" active_cells)
+string(JSON faults GET "${out}" faces fault)
+string(JSON poro GET "${out}" properties 0)
+if(NOT active EQUAL 35838 OR faults LESS 1000 OR NOT poro STREQUAL "PORO")
+  message(FATAL_ERROR "unexpected report: active ${active}, fault faces ${faults}, property ${poro}")
+endif()
+file(STRINGS ${OUT}/reek_cells.csv rows)
+list(LENGTH rows n)
+list(GET rows 0 head)
+if(NOT n EQUAL 35839 OR NOT head STREQUAL "i,j,k,volume,cx,cy,cz")
+  message(FATAL_ERROR "cells CSV: ${n} lines, header '${head}'")
+endif()
+
+execute_process(COMMAND ${CUTAWAY} inspect ${OUT}/does-not-exist.grdecl RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "does-not-exist.grdecl.*no such file")
+  message(FATAL_ERROR "missing file: exit ${rc}, message '${err}'")
+endif()
+
+file(WRITE ${OUT}/truncated.grdecl "SPECGRID\n 1 1 1 /\nCOORD\n 0 0 0 0 0 1 /\n")
+execute_process(COMMAND ${CUTAWAY} inspect ${OUT}/truncated.grdecl RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "truncated.grdecl:4: keyword COORD: expected 24 values, found 6")
+  message(FATAL_ERROR "truncated file: exit ${rc}, message '${err}'")
+endif()
