@@ -10,5 +10,6 @@ namespace cutaway::app {
 using CommandAction = std::function<int()>;
 
 CommandAction add_inspect_command(CLI::App& app);
+CommandAction add_generate_command(CLI::App& app);
 
 }  // namespace cutaway::app

@@ -55,6 +55,8 @@ nlohmann::json summary_json(const InspectOptions& options, const grid::CornerPoi
     j["volume"] = {{"total", s.total_active_volume}, {"min", s.min_active_volume}, {"max", s.max_active_volume}};
     j["pinched_cells"] = s.pinched_cells;
     j["inverted_cells"] = s.inverted_cells;
+    j["overlapping_cells"] = s.overlapping_cells;
+    j["depth_direction"] = s.depth_direction > 0 ? "down" : "up";
     if (!s.bounds.empty())
         j["bounds"] = {{"min", {s.bounds.min.x, s.bounds.min.y, s.bounds.min.z}},
                        {"max", {s.bounds.max.x, s.bounds.max.y, s.bounds.max.z}}};
@@ -85,7 +87,8 @@ void print_text(std::ostream& out, const nlohmann::json& j) {
         << ", fault " << j["faces"]["fault"] << ", shell " << j["faces"]["shell"] << " (tolerance "
         << j["face_tolerance"] << ")\nvolume:       total " << j["volume"]["total"] << ", min " << j["volume"]["min"]
         << ", max " << j["volume"]["max"] << "\nshapes:       " << j["pinched_cells"] << " pinched, "
-        << j["inverted_cells"] << " inverted\n";
+        << j["inverted_cells"] << " inverted, " << j["overlapping_cells"]
+        << " overlapping the layer above (kept as written; OPM cuts them)\n";
     if (j.contains("bounds")) out << "bounds:       " << j["bounds"]["min"].dump() << " .. " << j["bounds"]["max"].dump() << '\n';
     out << "properties:   " << j["properties"].dump() << " integer " << j["int_properties"].dump() << " dynamic "
         << j["dynamic_properties"].dump() << "\nunits:        grid '" << j["grid_unit"].get<std::string>() << "', map '"

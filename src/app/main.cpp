@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     // One line per subcommand: its registration returns the action run when it is chosen.
     const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
+    const cutaway::app::CommandAction generate = cutaway::app::add_generate_command(app);
 
     try {
         app.parse(argc, argv);
@@ -19,6 +20,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (app.got_subcommand("inspect")) return inspect();
+        if (app.got_subcommand("generate")) return generate();
     } catch (const cutaway::grid::GrdeclError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;

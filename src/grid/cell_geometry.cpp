@@ -72,11 +72,20 @@ CellShape classify_shape(const CornerPointGrid& grid, int i, int j, int k, doubl
     const ZcornStore& z = grid.zcorn();
     bool all_pinched = true;
     for (int c = 0; c < 4; ++c) {
-        const double thickness = z.corner_depth(i, j, k, c | 4) - z.corner_depth(i, j, k, c);
+        const double thickness = grid.depth_direction() * (z.corner_depth(i, j, k, c | 4) - z.corner_depth(i, j, k, c));
         if (thickness < -tolerance) return CellShape::inverted;
         if (thickness > tolerance) all_pinched = false;
     }
     return all_pinched ? CellShape::pinched : CellShape::regular;
+}
+
+bool overlaps_layer_above(const CornerPointGrid& grid, int i, int j, int k, double tolerance) {
+    if (k == 0) return false;
+    const ZcornStore& z = grid.zcorn();
+    for (int c = 0; c < 4; ++c)
+        if (grid.depth_direction() * (z.corner_depth(i, j, k, c) - z.corner_depth(i, j, k - 1, c | 4)) < -tolerance)
+            return true;
+    return false;
 }
 
 Box3 grid_bounds(const CornerPointGrid& grid, bool all_cells) {

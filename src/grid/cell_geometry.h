@@ -32,11 +32,16 @@ Box3 cell_bounds(const CellCorners& corners);
 enum class CellShape {
     regular,
     pinched,   ///< every pillar edge has zero thickness (a pinch-out): zero volume
-    inverted,  ///< some pillar edge has its bottom above its top (ZCORN crossed)
+    inverted,  ///< some pillar edge has its bottom above its top (ZCORN crossed), in the grid's
+               ///< depth direction
 };
 
 /// `tolerance`: depth difference treated as zero (model units).
 CellShape classify_shape(const CornerPointGrid& grid, int i, int j, int k, double tolerance);
+
+/// Whether some top corner of cell (i,j,k) lies above the bottom corner of cell (i,j,k-1) on the
+/// same pillar (layers overlap; OPM's fixupZCORN cuts such tops). Cells of layer 0 never do.
+bool overlaps_layer_above(const CornerPointGrid& grid, int i, int j, int k, double tolerance);
 
 /// Bounding box of the cells' corners; active cells only unless `all_cells`.
 Box3 grid_bounds(const CornerPointGrid& grid, bool all_cells = false);

@@ -17,6 +17,7 @@ CornerPointGrid::CornerPointGrid(GridDims dims, std::vector<double> coord, Zcorn
         throw std::invalid_argument("CornerPointGrid: ZCORN store is incomplete or has other dimensions");
     if (actnum_.empty()) actnum_.assign(dims.cell_count(), 1);
     require_cell_sized("ACTNUM", actnum_.size());
+    depth_direction_ = zcorn_.corner_depth(0, 0, 0, 0) <= zcorn_.corner_depth(0, 0, dims.nz - 1, 4) ? 1 : -1;
     active_count_ = std::size_t(std::count_if(actnum_.begin(), actnum_.end(), [](std::uint8_t a) { return a != 0; }));
 }
 

@@ -42,6 +42,10 @@ public:
     const std::vector<double>& coord() const { return coord_; }
     const ZcornStore& zcorn() const { return zcorn_; }
 
+    /// +1 when depths grow with k (z down, the usual case), -1 when they shrink. Decided as OPM's
+    /// fixupZCORN does: from corner 0 of cell (0,0,0)'s top against corner 4 of (0,0,NZ-1)'s bottom.
+    int depth_direction() const { return depth_direction_; }
+
     bool active(std::size_t cell) const { return actnum_[cell] != 0; }
     const std::vector<std::uint8_t>& actnum() const { return actnum_; }
     std::size_t active_count() const { return active_count_; }
@@ -76,6 +80,7 @@ private:
     ZcornStore zcorn_;
     std::vector<std::uint8_t> actnum_;
     std::size_t active_count_ = 0;
+    int depth_direction_ = 1;
     GridMetadata metadata_;
     std::map<std::string, std::vector<float>> float_properties_;
     std::map<std::string, std::vector<std::int32_t>> int_properties_;

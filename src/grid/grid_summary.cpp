@@ -27,8 +27,10 @@ GridSummary summarize(const CornerPointGrid& grid) {
                 const CellShape shape = classify_shape(grid, i, j, k, s.face_tolerance);
                 s.pinched_cells += shape == CellShape::pinched;
                 s.inverted_cells += shape == CellShape::inverted;
+                s.overlapping_cells += overlaps_layer_above(grid, i, j, k, s.face_tolerance);
             }
     if (s.active_cells == 0) s.min_active_volume = 0;
+    s.depth_direction = grid.depth_direction();
     s.zcorn_compact = grid.zcorn().is_compact();
     s.geometry_bytes = grid.geometry_bytes();
     s.property_bytes = grid.property_bytes();

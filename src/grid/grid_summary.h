@@ -20,6 +20,8 @@ struct GridSummary {
     double max_active_volume = 0;
     std::size_t pinched_cells = 0;   ///< active cells of zero thickness
     std::size_t inverted_cells = 0;  ///< active cells with a crossed pillar edge
+    std::size_t overlapping_cells = 0;  ///< active cells whose top overlaps the layer above
+    int depth_direction = 1;            ///< +1 depths grow with k, -1 they shrink
     Box3 bounds;                     ///< active cells
     bool zcorn_compact = false;
     std::size_t geometry_bytes = 0;

@@ -1,0 +1,52 @@
+#pragma once
+// Machine and build context shared by the benchmark programs: git revision, uname, environment.
+#include <sys/utsname.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace cutaway::bench {
+
+/// First line printed by `command` (empty if it fails or prints nothing).
+inline std::string command_line_output(const std::string& command) {
+    std::string out;
+    if (FILE* pipe = ::popen(command.c_str(), "r")) {
+        std::array<char, 256> buffer{};
+        while (std::fgets(buffer.data(), int(buffer.size()), pipe)) out += buffer.data();
+        ::pclose(pipe);
+    }
+    const auto end = out.find('\n');
+    return end == std::string::npos ? out : out.substr(0, end);
+}
+
+/// CUTAWAY_GIT_REVISION from the environment, else `git rev-parse HEAD` in the source tree
+/// (with "-dirty" when tracked files differ from HEAD), else "unknown".
+inline std::string git_revision() {
+    if (const char* env = std::getenv("CUTAWAY_GIT_REVISION"); env && *env) return env;
+#ifdef CUTAWAY_SOURCE_DIR
+    const std::string git = "git -C '" + std::string(CUTAWAY_SOURCE_DIR) + "' ";
+    const std::string head = command_line_output(git + "rev-parse HEAD 2>/dev/null");
+    if (head.empty()) return "unknown";
+    const std::string dirty = command_line_output(git + "status --porcelain --untracked-files=no 2>/dev/null");
+    return dirty.empty() ? head : head + "-dirty";
+#else
+    return "unknown";
+#endif
+}
+
+/// `uname -srvm` equivalent.
+inline std::string uname_text() {
+    struct utsname u {};
+    if (::uname(&u) != 0) return "unknown";
+    return std::string(u.sysname) + " " + u.release + " " + u.version + " " + u.machine;
+}
+
+/// Value of an environment variable, or empty.
+inline std::string env_or_empty(const char* name) {
+    const char* value = std::getenv(name);
+    return value ? value : "";
+}
+
+}  // namespace cutaway::bench

@@ -1,0 +1,45 @@
+#include "presets.h"
+
+#include <stdexcept>
+
+namespace cutaway::generators {
+namespace {
+
+/// A preset: name, dims and lateral cell size (metres); the rest keeps the defaults, with more
+/// faults on larger models.
+GeneratorParameters preset(const char* name, grid::GridDims dims, double cell_size, double thickness, int faults) {
+    GeneratorParameters p;
+    p.name = name;
+    p.dims = dims;
+    p.length_x = cell_size * dims.nx;
+    p.length_y = cell_size * dims.ny;
+    p.thickness = thickness;
+    p.fault_count = faults;
+    p.poro_correlation_length = 8 * cell_size;
+    return p;
+}
+
+}  // namespace
+
+const std::vector<GeneratorParameters>& presets() {
+    static const std::vector<GeneratorParameters> table = {
+        preset("zaphirus", {30, 50, 5}, 100, 60, 3),
+        preset("petra", {39, 42, 20}, 100, 120, 4),
+        preset("opharine", {95, 80, 10}, 80, 100, 5),
+        preset("sapphire", {124, 84, 20}, 80, 150, 6),
+        preset("scale-1m", {200, 250, 20}, 50, 150, 8),
+        preset("scale-10m", {500, 500, 40}, 25, 200, 10),
+    };
+    return table;
+}
+
+GeneratorParameters find_preset(const std::string& name) {
+    std::string known;
+    for (const GeneratorParameters& p : presets()) {
+        if (p.name == name) return p;
+        known += (known.empty() ? "" : ", ") + p.name;
+    }
+    throw std::invalid_argument("generate: unknown preset '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace cutaway::generators

@@ -1,0 +1,131 @@
+// `cutaway generate --preset NAME | --dims NX NY NZ [options] --seed S --out FILE.grdecl`
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "app/commands.h"
+#include "generators/generator.h"
+#include "generators/presets.h"
+#include "generators/write_progress.h"
+#include "grid/grdecl_writer.h"
+
+namespace cutaway::app {
+namespace {
+
+using generators::GeneratorParameters;
+
+/// Applies one given option onto the parameters (options left out keep the preset's value).
+using Override = std::function<void(GeneratorParameters&)>;
+
+struct GenerateOptions {
+    std::string preset;
+    std::vector<int> dims;
+    std::vector<double> extent;
+    std::string out;
+    double memory_limit_gb = double(generators::kDefaultGeneratorMemoryLimit) / double(1 << 30);
+    bool quiet = false;
+    bool list_presets = false;
+    std::vector<Override> overrides;
+};
+
+/// Registers `--name VALUE` bound to one parameter field.
+template <typename T>
+void add_parameter(CLI::App* cmd, GenerateOptions& options, const std::string& name, T GeneratorParameters::*field,
+                   const std::string& help) {
+    auto value = std::make_shared<T>();
+    CLI::Option* option = cmd->add_option(name, *value, help);
+    options.overrides.push_back([option, value, field](GeneratorParameters& p) {
+        if (option->count() > 0) p.*field = *value;
+    });
+}
+
+GeneratorParameters effective_parameters(const GenerateOptions& options) {
+    if (options.preset.empty() && options.dims.empty())
+        throw std::invalid_argument("generate: give --preset NAME or --dims NX NY NZ");
+    GeneratorParameters p = options.preset.empty() ? GeneratorParameters{} : generators::find_preset(options.preset);
+    if (options.preset.empty()) p.name = "custom";
+    if (!options.dims.empty()) p.dims = {options.dims[0], options.dims[1], options.dims[2]};
+    if (!options.extent.empty()) {
+        p.length_x = options.extent[0];
+        p.length_y = options.extent[1];
+        p.thickness = options.extent[2];
+    }
+    for (const Override& apply : options.overrides) apply(p);
+    return p;
+}
+
+int run_generate(const GenerateOptions& options) {
+    if (options.list_presets) {
+        for (const GeneratorParameters& p : generators::presets())
+            std::cout << p.name << ": " << p.dims.nx << " x " << p.dims.ny << " x " << p.dims.nz << " = "
+                      << p.dims.cell_count() << " cells\n";
+        return 0;
+    }
+    if (options.out.empty()) throw std::invalid_argument("generate: --out FILE.grdecl is required");
+    const GeneratorParameters parameters = effective_parameters(options);
+    std::ostream* log = options.quiet ? nullptr : &std::cerr;
+    generators::ProgressLog progress(log);
+    const generators::GeneratedModel model =
+        generators::generate_model(parameters, progress, std::size_t(options.memory_limit_gb * double(1 << 30)));
+
+    grid::GrdeclWriteOptions write_options;
+    write_options.header_comments = generators::header_lines(parameters, model.report);
+    {
+        std::ofstream file(options.out, std::ios::binary);
+        if (!file) throw std::runtime_error(options.out + ": cannot open for writing");
+        generators::WriteProgressBuf buffer(file.rdbuf(), log);
+        std::ostream out(&buffer);
+        grid::write_grdecl(out, model.grid, write_options);
+        out.flush();
+        file.flush();
+        if (!out || !file) throw std::runtime_error(options.out + ": write failed (disk full?)");
+        progress.finished("write", std::to_string(buffer.bytes_written()) + " bytes to " + options.out);
+    }
+    if (!options.quiet)
+        for (const std::string& line : model.report.lines()) std::cout << line << '\n';
+    return 0;
+}
+
+}  // namespace
+
+CommandAction add_generate_command(CLI::App& app) {
+    auto options = std::make_shared<GenerateOptions>();
+    CLI::App* cmd = app.add_subcommand("generate", "Write a synthetic faulted corner-point model (GRDECL) with PORO, "
+                                                   "PERMX, NTG, FACIES and SWAT time steps");
+    cmd->add_option("--preset", options->preset,
+                    "zaphirus, petra, opharine, sapphire, scale-1m, scale-10m (options below override it)");
+    cmd->add_option("--dims", options->dims, "Cells NX NY NZ")->expected(3);
+    cmd->add_option("--extent", options->extent, "Model size east, north and thickness (metres)")->expected(3);
+    cmd->add_option("--out", options->out, "Output GRDECL file");
+    cmd->add_option("--memory-limit-gb", options->memory_limit_gb, "Refuse models needing more memory (GiB)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--quiet", options->quiet, "No progress lines or report");
+    cmd->add_flag("--list-presets", options->list_presets, "Print the presets and exit");
+    GenerateOptions& o = *options;
+    add_parameter(cmd, o, "--seed", &GeneratorParameters::seed, "Random seed (same seed, same file)");
+    add_parameter(cmd, o, "--top-depth", &GeneratorParameters::top_depth, "Mean top depth (metres, z down)");
+    add_parameter(cmd, o, "--faults", &GeneratorParameters::fault_count, "Number of fault planes (0..64)");
+    add_parameter(cmd, o, "--throw", &GeneratorParameters::throw_range, "Fault throw range MIN MAX (metres)");
+    add_parameter(cmd, o, "--dip", &GeneratorParameters::fault_dip_deg, "Fault dip from horizontal (30..90 degrees)");
+    add_parameter(cmd, o, "--azimuth", &GeneratorParameters::fault_azimuth_deg, "Mean fault strike (degrees from north)");
+    add_parameter(cmd, o, "--azimuth-spread", &GeneratorParameters::fault_azimuth_spread_deg,
+                  "Strike spread around the mean (degrees)");
+    add_parameter(cmd, o, "--lean-spread", &GeneratorParameters::lean_spread_pillars,
+                  "Pillars beside a fault that share its lean");
+    add_parameter(cmd, o, "--roughness", &GeneratorParameters::horizon_roughness, "Horizon relief std (metres)");
+    add_parameter(cmd, o, "--pinch-fraction", &GeneratorParameters::pinch_out_fraction,
+                  "Share of cells pinched out (0..1)");
+    add_parameter(cmd, o, "--inactive-fraction", &GeneratorParameters::inactive_fraction,
+                  "Share of cells made inactive in clusters (0..1)");
+    add_parameter(cmd, o, "--poro-mean", &GeneratorParameters::poro_mean, "Porosity mean (fraction)");
+    add_parameter(cmd, o, "--poro-std", &GeneratorParameters::poro_std, "Porosity standard deviation (fraction)");
+    add_parameter(cmd, o, "--poro-correlation", &GeneratorParameters::poro_correlation_length,
+                  "Porosity lateral correlation length (metres)");
+    add_parameter(cmd, o, "--time-steps", &GeneratorParameters::time_steps, "SWAT time steps (0: none)");
+    add_parameter(cmd, o, "--injectors", &GeneratorParameters::injector_count, "Injector columns of the water front");
+    return [options] { return run_generate(*options); };
+}
+
+}  // namespace cutaway::app
