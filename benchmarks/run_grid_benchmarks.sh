@@ -30,7 +30,7 @@ done
 
 # One revision for both programs (they fall back to asking git themselves).
 revision="$(git -C "$root" rev-parse HEAD 2>/dev/null || echo unknown)"
-if [[ "$revision" != unknown && -n "$(git -C "$root" status --porcelain --untracked-files=no 2>/dev/null)" ]]; then
+if [[ "$revision" != unknown && -n "$(git -C "$root" status --porcelain --untracked-files=no -- . ':!results' 2>/dev/null)" ]]; then
   revision="$revision-dirty"
 fi
 export CUTAWAY_GIT_REVISION="$revision"
