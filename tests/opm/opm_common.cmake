@@ -28,4 +28,6 @@ if(NOT TARGET cutaway_opm)
   target_compile_definitions(cutaway_opm INTERFACE ${opm-common_DEFINITIONS}
                              CUTAWAY_OPM_VERSION="${opm-common_VERSION}")
   target_link_libraries(cutaway_opm INTERFACE opmcommon)
+  # Each program linking OPM gets the LeakSanitizer suppressions for OPM's own leaks.
+  target_sources(cutaway_opm INTERFACE ${CMAKE_CURRENT_LIST_DIR}/opm_leak_suppressions.cpp)
 endif()
