@@ -34,6 +34,7 @@ std::vector<std::string> GenerationReport::lines() const {
         "degenerate_cells (inactive) = " + std::to_string(degenerate_cells),
         "repaired_interface_depths = " + std::to_string(repaired_depths),
         "pillar_depth_columns = " + std::to_string(depth_columns),
+        "pillar_lean_scale = " + text(lean_scale),
         "key_horizons = " + std::to_string(horizons) + " (" + std::to_string(triangles_per_horizon) +
             " triangles each)",
     };

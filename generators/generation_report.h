@@ -15,6 +15,7 @@ struct GenerationReport {
     std::size_t degenerate_cells = 0;      ///< flat corner with a pillar edge of length: inactive
     std::size_t repaired_depths = 0;       ///< interface depths lifted below the one above
     std::size_t depth_columns = 0;         ///< pillars + extra fault sides
+    double lean_scale = 1;                 ///< factor applied to fault leans so pillars never cross
     int horizons = 0;
     std::size_t triangles_per_horizon = 0;
     std::vector<std::string> faults;       ///< one description per fault plane

@@ -111,12 +111,17 @@ GeneratedModel generate_model(const GeneratorParameters& p, ProgressLog& progres
     const std::vector<FaultPlane> faults = make_faults(p, frame, fault_random);
     const std::vector<std::uint64_t> masks = hanging_wall_masks(faults, frame);
     model.column_offsets = column_offsets(faults, masks);
-    const std::vector<PillarLean> leans = pillar_leans(frame, faults, masks, p.lean_spread_pillars);
     double total_throw = 0;
     for (const FaultPlane& f : faults) {
         total_throw += f.throw_m;
         report.faults.push_back(f.describe());
     }
+    // Cell corners lie at most this far from mid-depth: half the thickness, every throw, and
+    // the horizons' roughness (three standard deviations).
+    const double depth_reach = 0.5 * p.thickness + total_throw + 3 * p.horizon_roughness;
+    const PillarLeans pillar_lean_field = pillar_leans(frame, faults, masks, p.lean_spread_pillars, depth_reach);
+    const std::vector<PillarLean>& leans = pillar_lean_field.leans;
+    report.lean_scale = pillar_lean_field.scale;
     progress.finished("faults", std::to_string(faults.size()) + " planes");
 
     DeterministicRandom layering_random(p.seed, layering_stream);

@@ -19,10 +19,18 @@ struct PillarLean {
 /// True for pillar (pi, pj) when its neighbouring columns lie on both sides of fault `f`.
 bool on_fault_trace(const ModelFrame& frame, const std::vector<std::uint64_t>& masks, int pi, int pj, int f);
 
-/// One lean per pillar (GridDims::pillar_index order). A pillar at Chebyshev distance r from a
-/// trace pillar of fault f gets (1 - r / (spread + 1)) of f's lean; the largest share per fault
-/// is kept and the faults' leans add.
-std::vector<PillarLean> pillar_leans(const ModelFrame& frame, const std::vector<FaultPlane>& faults,
-                                     const std::vector<std::uint64_t>& masks, int spread);
+/// Leans per pillar (GridDims::pillar_index order) and the factor they were scaled by.
+struct PillarLeans {
+    std::vector<PillarLean> leans;
+    double scale = 1;  ///< 1, or less where neighbouring pillars would otherwise cross
+};
+
+/// A pillar at Chebyshev distance r from a trace pillar of fault f gets (1 - r / (spread + 1))
+/// of f's lean; the largest share per fault is kept and the faults' leans add. Where traces meet,
+/// the sum can make neighbouring pillars cross within `depth_reach` metres of mid-depth (cells
+/// turn inside out), so all leans are scaled down until neighbours stay at least half a cell
+/// apart there.
+PillarLeans pillar_leans(const ModelFrame& frame, const std::vector<FaultPlane>& faults,
+                         const std::vector<std::uint64_t>& masks, int spread, double depth_reach);
 
 }  // namespace cutaway::generators
