@@ -1,0 +1,45 @@
+#include "gl/image.h"
+
+#include <epoxy/gl.h>
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <cstring>
+
+#include "gl/gl_error.h"
+
+namespace cutaway::gl {
+
+RgbaImage read_rgba(unsigned framebuffer, unsigned attachment, int width, int height) {
+    RgbaImage image{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 4)};
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+    glReadBuffer(framebuffer == 0 ? GL_BACK : GL_COLOR_ATTACHMENT0 + attachment);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.pixels.data());
+    const std::size_t row = std::size_t(width) * 4;
+    std::vector<std::uint8_t> swap(row);
+    for (int y = 0; y < height / 2; ++y) {
+        std::uint8_t* top = image.pixels.data() + std::size_t(y) * row;
+        std::uint8_t* bottom = image.pixels.data() + std::size_t(height - 1 - y) * row;
+        std::memcpy(swap.data(), top, row);
+        std::memcpy(top, bottom, row);
+        std::memcpy(bottom, swap.data(), row);
+    }
+    return image;
+}
+
+void write_png(const RgbaImage& image, const std::filesystem::path& path) {
+    if (!stbi_write_png(path.string().c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4))
+        throw GlError("image " + path.string() + ": cannot be written");
+}
+
+RgbaImage read_png(const std::filesystem::path& path) {
+    int width = 0, height = 0, channels = 0;
+    stbi_uc* data = stbi_load(path.string().c_str(), &width, &height, &channels, 4);
+    if (data == nullptr) throw GlError("image " + path.string() + ": cannot be read as PNG");
+    RgbaImage image{width, height, std::vector<std::uint8_t>(data, data + std::size_t(width) * std::size_t(height) * 4)};
+    stbi_image_free(data);
+    return image;
+}
+
+}  // namespace cutaway::gl

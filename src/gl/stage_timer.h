@@ -1,0 +1,52 @@
+#pragma once
+// Per-stage GPU timing. On llvmpipe GL timer queries do not measure draws (they time roughly the
+// last 64x64 tile), so the time that counts is a fenced wall clock: glFinish before and after the
+// stage, std::chrono::steady_clock between. The GL_TIME_ELAPSED query runs beside it and is kept
+// with a flag saying whether it agrees with the wall clock.
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "gl/gl_objects.h"
+
+namespace cutaway::gl {
+
+struct StageTime {
+    std::string stage;
+    double wall_ms = 0;      ///< fenced wall-clock time, milliseconds
+    double gl_query_ms = 0;  ///< GL_TIME_ELAPSED of the same commands, milliseconds
+    /// Whether the query agrees with the wall clock: query >= 50% of wall time, or within 0.5 ms of
+    /// it (the wall clock also counts driver submission, so a real GPU reads somewhat lower).
+    bool gl_query_valid = false;
+};
+
+/// Whether a GL query time is believable next to the fenced wall time of the same stage.
+bool query_agrees(double wall_ms, double query_ms);
+
+class StageTimer {
+public:
+    /// Starts timing `stage` after a glFinish. Stages do not nest.
+    void begin(std::string stage);
+    /// glFinish, then records the stage.
+    void end();
+    const std::vector<StageTime>& stages() const { return stages_; }
+    /// Wall time of a recorded stage (0 if it did not run).
+    double wall_ms(const std::string& stage) const;
+    void clear() { stages_.clear(); }
+
+private:
+    Query query_;
+    std::string current_;
+    std::chrono::steady_clock::time_point started_;
+    std::vector<StageTime> stages_;
+};
+
+/// Runs `work` as one timed stage of `timer`.
+template <typename Work>
+void timed_stage(StageTimer& timer, std::string stage, Work&& work) {
+    timer.begin(std::move(stage));
+    work();
+    timer.end();
+}
+
+}  // namespace cutaway::gl
