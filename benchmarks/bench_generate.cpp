@@ -21,7 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench_context.h"
+#include "app/run_context.h"
 #include "generators/generator.h"
 #include "generators/presets.h"
 #include "generators/write_progress.h"
@@ -197,9 +197,9 @@ int main(int argc, char** argv) try {
                    {"repetitions_byte_identical", identical}};
     j["target"] = {{"max_seconds", target.max_seconds}, {"max_peak_bytes", target.max_peak_bytes}};
     j["meets_target"] = worst_total <= target.max_seconds && double(peak) <= target.max_peak_bytes;
-    j["context"] = {{"uname", bench::uname_text()},
+    j["context"] = {{"uname", run_context::uname_text()},
                     {"nproc", std::thread::hardware_concurrency()},
-                    {"git_revision", bench::git_revision()},
+                    {"git_revision", run_context::git_revision()},
                     {"date_utc", utc_now()},
                     {"build_type", CUTAWAY_BUILD_TYPE},
                     {"compiler", std::string("g++ ") + __VERSION__},

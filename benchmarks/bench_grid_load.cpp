@@ -25,7 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench_context.h"
+#include "app/run_context.h"
 #include "grid/grdecl_reader.h"
 
 #ifdef CUTAWAY_HAVE_OPM
@@ -164,14 +164,14 @@ std::string benchmark_out_path(int argc, char** argv) {
 int main(int argc, char** argv) {
     const std::string out_path = benchmark_out_path(argc, argv);
 
-    benchmark::AddCustomContext("git_revision", cutaway::bench::git_revision());
-    benchmark::AddCustomContext("uname", cutaway::bench::uname_text());
+    benchmark::AddCustomContext("git_revision", cutaway::run_context::git_revision());
+    benchmark::AddCustomContext("uname", cutaway::run_context::uname_text());
     benchmark::AddCustomContext("cutaway_build_type", CUTAWAY_BUILD_TYPE);
     benchmark::AddCustomContext("cutaway_cxx_flags", CUTAWAY_CXX_FLAGS);
     benchmark::AddCustomContext("reek_grid_file", kReekGrid.string());
-    if (const std::string lp = cutaway::bench::env_or_empty("LP_NUM_THREADS"); !lp.empty())
+    if (const std::string lp = cutaway::run_context::env_or_empty("LP_NUM_THREADS"); !lp.empty())
         benchmark::AddCustomContext("LP_NUM_THREADS", lp);
-    if (const std::string omp = cutaway::bench::env_or_empty("OMP_NUM_THREADS"); !omp.empty())
+    if (const std::string omp = cutaway::run_context::env_or_empty("OMP_NUM_THREADS"); !omp.empty())
         benchmark::AddCustomContext("OMP_NUM_THREADS", omp);
 #ifdef CUTAWAY_HAVE_OPM
     benchmark::AddCustomContext("opm_common_version", CUTAWAY_OPM_VERSION);

@@ -32,7 +32,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "bench_context.h"
+#include "app/run_context.h"
 #include "grid/box_grid.h"
 #include "grid/grdecl_reader.h"
 #include "grid/grdecl_writer.h"
@@ -118,8 +118,8 @@ std::string utc_now() {
 }
 
 nlohmann::json machine_context() {
-    return {{"git_revision", cutaway::bench::git_revision()},
-            {"uname", cutaway::bench::uname_text()},
+    return {{"git_revision", cutaway::run_context::git_revision()},
+            {"uname", cutaway::run_context::uname_text()},
             {"nproc", ::sysconf(_SC_NPROCESSORS_ONLN)},
             {"date_utc", utc_now()},
             {"build_type", CUTAWAY_BUILD_TYPE},

@@ -4,7 +4,9 @@
 #include <new>
 
 #include "app/commands.h"
+#include "gl/gl_error.h"
 #include "grid/grdecl_error.h"
+#include "volume/volume_error.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"cutaway: corner-point reservoir grids, cutaway rendering and seismic ray casting benchmarks"};
@@ -12,6 +14,9 @@ int main(int argc, char** argv) {
     // One line per subcommand: its registration returns the action run when it is chosen.
     const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
     const cutaway::app::CommandAction generate = cutaway::app::add_generate_command(app);
+    const cutaway::app::CommandAction render = cutaway::app::add_render_command(app);
+    const cutaway::app::CommandAction volume = cutaway::app::add_volume_command(app);
+    const cutaway::app::CommandAction generate_seismic = cutaway::app::add_generate_seismic_command(app);
 
     try {
         app.parse(argc, argv);
@@ -21,7 +26,19 @@ int main(int argc, char** argv) {
     try {
         if (app.got_subcommand("inspect")) return inspect();
         if (app.got_subcommand("generate")) return generate();
+        if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("volume")) return volume();
+        if (app.got_subcommand("generate-seismic")) return generate_seismic();
     } catch (const cutaway::grid::GrdeclError& error) {
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return 2;
+    } catch (const cutaway::volume::VolumeError& error) {
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return 2;
+    } catch (const cutaway::gl::GlError& error) {
+        std::cerr << "cutaway: OpenGL: " << error.what() << '\n';
+        return 4;
+    } catch (const std::invalid_argument& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;
     } catch (const std::bad_alloc&) {

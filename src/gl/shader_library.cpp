@@ -113,7 +113,7 @@ ExpandedSource ShaderLibrary::expand(const std::string& file, const ShaderDefine
     return out;
 }
 
-Program ShaderLibrary::build(std::initializer_list<ShaderStage> stages, const ShaderDefines& defines) const {
+Program ShaderLibrary::build(const std::vector<ShaderStage>& stages, const ShaderDefines& defines) const {
     Program program(glCreateProgram());
     std::vector<Shader> shaders;
     std::string names;

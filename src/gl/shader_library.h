@@ -42,7 +42,7 @@ public:
     ExpandedSource expand(const std::string& file, const ShaderDefines& defines = {}) const;
 
     /// Compiles and links the stages; throws GlError with the info log and file names on failure.
-    Program build(std::initializer_list<ShaderStage> stages, const ShaderDefines& defines = {}) const;
+    Program build(const std::vector<ShaderStage>& stages, const ShaderDefines& defines = {}) const;
 
     /// Latest modification time over every file the library has read (for hot reload).
     std::filesystem::file_time_type newest_source_time() const;

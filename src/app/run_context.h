@@ -1,5 +1,5 @@
 #pragma once
-// Machine and build context shared by the benchmark programs: git revision, uname, environment.
+// Machine and build context every run records (benchmarks, render stats): git revision, uname, environment.
 #include <sys/utsname.h>
 
 #include <array>
@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string>
 
-namespace cutaway::bench {
+namespace cutaway::run_context {
 
 /// First line printed by `command` (empty if it fails or prints nothing).
 inline std::string command_line_output(const std::string& command) {
@@ -49,4 +49,14 @@ inline std::string env_or_empty(const char* name) {
     return value ? value : "";
 }
 
-}  // namespace cutaway::bench
+}  // namespace cutaway::run_context
+
+namespace cutaway::run_context {
+
+/// LP_NUM_THREADS as set for llvmpipe, or "unset" (llvmpipe then uses one thread per core).
+inline std::string lp_num_threads() {
+    const std::string value = env_or_empty("LP_NUM_THREADS");
+    return value.empty() ? "unset" : value;
+}
+
+}  // namespace cutaway::run_context

@@ -1,0 +1,26 @@
+// The cut surface as stage 2 reads it: texture RGB = world-space normal, A = depth along the
+// cut camera's view axis (0 = nothing cut). The cut camera is the model camera unless the view
+// is frozen, so every fragment is projected into the cut camera's image (as in shadow mapping).
+uniform sampler2D cut_surface;   // RGBA32F, cut camera's image
+uniform mat4 cut_view;
+uniform mat4 cut_projection;
+uniform vec2 cut_size;           // pixels
+
+struct CutSample {
+    ivec2 texel;            // cut image pixel (may be outside the image)
+    float fragment_depth;   // depth of the point along the cut camera's view axis
+    float cut_depth;        // the cut surface's depth at that pixel (0: no cut)
+};
+
+CutSample cut_at(vec3 world) {
+    vec4 eye = cut_view * vec4(world, 1.0);
+    vec4 clip = cut_projection * eye;
+    CutSample s;
+    s.fragment_depth = -eye.z;
+    s.texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * cut_size));
+    bool inside = clip.w > 0.0 && all(greaterThanEqual(s.texel, ivec2(0))) && all(lessThan(s.texel, ivec2(cut_size)));
+    s.cut_depth = inside ? texelFetch(cut_surface, s.texel, 0).a : 0.0;
+    return s;
+}
+
+vec3 cut_normal_at(ivec2 texel) { return texelFetch(cut_surface, texel, 0).rgb; }

@@ -1,0 +1,6 @@
+// Members of the FaceVaryings block the face vertex shader hands to the fragment shaders.
+vec3 world_position;               // render space
+flat vec3 face_normal;             // outward, render space, unit
+flat uint compact_cell;            // index into the per-active-cell buffers
+flat uint face_info;               // bits 0-1 face class, bit 2 back-facing (seen from inside)
+noperspective vec4 edge_distance;  // window pixels to the quad's 4 edges

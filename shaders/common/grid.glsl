@@ -1,0 +1,34 @@
+// Corner-point geometry on the GPU: corners rebuilt from pillars and per-cell corner depths
+// (src/cutaway/grid_layout.h describes the buffers). Render space: X east, Y north, Z up.
+layout(std430, binding = 0) readonly buffer Pillars { vec4 pillars[]; };           // top, bottom per pillar
+layout(std430, binding = 1) readonly buffer CornerDepths { float corner_depths[]; };  // 8 per active cell
+layout(std430, binding = 2) readonly buffer Cells { uint cells[]; };               // Eclipse index | flip bit
+layout(std430, binding = 4) readonly buffer CellValues { float cell_values[]; };     // property per active cell
+
+uniform uvec2 grid_size;  // NX, NY
+uniform float up_sign;    // -1 when z is depth
+uniform float z_scale;    // vertical exaggeration
+
+const uint face_class_interior = 1u;
+const uint face_class_fault = 2u;
+const uint face_class_shell = 3u;
+
+// Corners of each face (I-, I+, J-, J+, K-, K+) in an order whose diagonal cross product points
+// out of a cell with positive signed volume in model (x, y, z) space.
+const uint face_corners[24] = uint[](0u, 4u, 6u, 2u,  1u, 3u, 7u, 5u,  0u, 1u, 5u, 4u,
+                                     2u, 6u, 7u, 3u,  0u, 2u, 3u, 1u,  4u, 5u, 7u, 6u);
+
+vec3 corner_position(uint compact_cell, uint corner) {
+    uint eclipse = cells[compact_cell] & 0x7fffffffu;
+    uint i = eclipse % grid_size.x;
+    uint j = (eclipse / grid_size.x) % grid_size.y;
+    uint pillar = (j + ((corner >> 1) & 1u)) * (grid_size.x + 1u) + i + (corner & 1u);
+    vec3 top = pillars[2u * pillar].xyz;
+    vec3 bottom = pillars[2u * pillar + 1u].xyz;
+    float z = corner_depths[8u * compact_cell + corner];
+    float dz = bottom.z - top.z;
+    vec2 xy = dz == 0.0 ? top.xy : top.xy + ((z - top.z) / dz) * (bottom.xy - top.xy);
+    return vec3(xy, up_sign * z * z_scale);
+}
+
+bool cell_normals_flipped(uint compact_cell) { return (cells[compact_cell] & 0x80000000u) != 0u; }

@@ -1,0 +1,23 @@
+// Cell colours and lighting shared by every pass that draws faces.
+uniform sampler1D colour_map;   // perceptual map, 256 texels
+uniform vec2 value_range;       // property values mapped to the ends of the colour map
+uniform vec3 light_eye;         // headlight position (render space): the model camera
+
+vec3 cell_colour(uint compact_cell) {
+    float span = value_range.y - value_range.x;
+    float t = span > 0.0 ? (cell_values[compact_cell] - value_range.x) / span : 0.5;
+    return texture(colour_map, clamp(t, 0.0, 1.0)).rgb;
+}
+
+vec3 lit(vec3 colour, vec3 normal, vec3 world) {
+    vec3 to_light = normalize(light_eye - world);
+    float diffuse = abs(dot(normalize(normal), to_light));
+    return colour * (0.35 + 0.65 * diffuse);
+}
+
+// Single-pass wireframe: line opacity at `distance` pixels from an edge, for a line `width` wide
+// with a smooth falloff over the last pixel.
+float line_opacity(float distance, float width) {
+    float d = max(distance - 0.5 * width + 0.5, 0.0);
+    return exp2(-2.0 * d * d);
+}

@@ -1,0 +1,77 @@
+#version 450 core
+// Final image: ambient occlusion, saturation contrast (HSV), primary silhouette, shell contours.
+// Each is a #define variant: SSAO, SATURATION, SILHOUETTE, CONTOURS.
+uniform sampler2D scene_colour;
+uniform sampler2D ambient;
+uniform usampler2D scene_id;     // compact cell + 1, flags
+uniform sampler2D shell_depth;   // linear depth of the uncut shell (0 = background)
+uniform vec2 viewport_size;
+uniform float saturation_primary;    // factor on primaries' saturation
+uniform float saturation_secondary;  // factor on secondaries' saturation
+uniform int silhouette_width;        // pixels
+uniform vec3 silhouette_colour;
+uniform vec3 contour_colour;
+uniform float contour_jump;          // relative depth jump that makes a fold contour
+uniform vec3 background;
+
+layout(location = 0) out vec4 out_colour;
+
+const uint flag_primary = 1u;
+
+vec3 rgb_to_hsv(vec3 c) {
+    vec4 K = vec4(0.0, -1.0 / 3.0, 2.0 / 3.0, -1.0);
+    vec4 p = mix(vec4(c.bg, K.wz), vec4(c.gb, K.xy), step(c.b, c.g));
+    vec4 q = mix(vec4(p.xyw, c.r), vec4(c.r, p.yzx), step(p.x, c.r));
+    float d = q.x - min(q.w, q.y);
+    return vec3(abs(q.z + (q.w - q.y) / (6.0 * d + 1e-10)), d / (q.x + 1e-10), q.x);
+}
+
+vec3 hsv_to_rgb(vec3 c) {
+    vec3 p = abs(fract(c.xxx + vec3(1.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0);
+    return c.z * mix(vec3(1.0), clamp(p - 1.0, 0.0, 1.0), c.y);
+}
+
+bool is_primary(ivec2 texel) { return (texelFetch(scene_id, texel, 0).g & flag_primary) != 0u; }
+
+void main() {
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    uvec2 id = texelFetch(scene_id, texel, 0).rg;
+    bool covered = id.r != 0u;
+    bool primary = (id.g & flag_primary) != 0u;
+    vec3 colour = covered ? texelFetch(scene_colour, texel, 0).rgb : background;
+#ifdef SSAO
+    if (covered) colour *= texelFetch(ambient, texel, 0).r;
+#endif
+#ifdef SATURATION
+    if (covered) {
+        vec3 hsv = rgb_to_hsv(colour);
+        hsv.y = clamp(hsv.y * (primary ? saturation_primary : saturation_secondary), 0.0, 1.0);
+        colour = hsv_to_rgb(hsv);
+    }
+#endif
+#ifdef SILHOUETTE
+    if (!primary) {
+        ivec2 last = ivec2(viewport_size) - 1;
+        bool near_primary = false;
+        for (int dy = -silhouette_width; dy <= silhouette_width && !near_primary; ++dy)
+            for (int dx = -silhouette_width; dx <= silhouette_width && !near_primary; ++dx)
+                near_primary = dx * dx + dy * dy <= silhouette_width * silhouette_width &&
+                               is_primary(clamp(texel + ivec2(dx, dy), ivec2(0), last));
+        if (near_primary) colour = silhouette_colour;
+    }
+#endif
+#ifdef CONTOURS
+    // Outline of the uncut shell and its folds: a 1-pixel line where the shell's depth jumps.
+    float depth = texelFetch(shell_depth, texel, 0).r;
+    ivec2 last_texel = ivec2(viewport_size) - 1;
+    const ivec2 neighbours[4] = ivec2[](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
+    bool contour = false;
+    for (int n = 0; n < 4; ++n) {
+        float other = texelFetch(shell_depth, clamp(texel + neighbours[n], ivec2(0), last_texel), 0).r;
+        // Only the nearer side of a jump draws, so the line is one pixel wide.
+        contour = contour || (depth > 0.0 && (other == 0.0 || other - depth > contour_jump * depth));
+    }
+    if (contour && !primary) colour = contour_colour;
+#endif
+    out_colour = vec4(colour, 1.0);
+}

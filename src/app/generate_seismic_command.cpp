@@ -1,0 +1,106 @@
+// `cutaway generate-seismic --preset NAME | --dims NI NX NS [options] --out FILE.sgy`
+#include <iostream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+
+#include "app/commands.h"
+#include "generators/seismic_model.h"
+#include "generators/seismic_segy_writer.h"
+
+namespace cutaway::app {
+namespace {
+
+using generators::SeismicParameters;
+
+struct GenerateSeismicOptions {
+    std::string preset;
+    std::vector<int> dims;
+    std::string format = "ieee";
+    bool little_endian = false;
+    bool crossline_sorted = false;
+    bool list_presets = false;
+    double memory_limit_gb = double(generators::kDefaultSeismicMemoryLimit) / double(1 << 30);
+    std::string out;
+    std::vector<std::function<void(SeismicParameters&)>> overrides;
+};
+
+int format_code(const std::string& name) {
+    static const std::map<std::string, int> codes{{"ibm", 1}, {"int32", 2}, {"int16", 3}, {"ieee", 5}, {"int8", 8}};
+    const auto it = codes.find(name);
+    if (it == codes.end())
+        throw std::invalid_argument("generate-seismic: --format " + name + ": expected ibm, ieee, int32, int16 or int8");
+    return it->second;
+}
+
+/// Registers `--name VALUE` bound to one parameter field (applied over the preset if given).
+template <typename T>
+void add_parameter(CLI::App* cmd, GenerateSeismicOptions& options, const std::string& name,
+                   T SeismicParameters::*field, const std::string& help) {
+    auto value = std::make_shared<T>();
+    CLI::Option* option = cmd->add_option(name, *value, help);
+    options.overrides.push_back([option, value, field](SeismicParameters& p) {
+        if (option->count() > 0) p.*field = *value;
+    });
+}
+
+int run_generate_seismic(const GenerateSeismicOptions& options) {
+    if (options.list_presets) {
+        for (const SeismicParameters& p : generators::seismic_presets())
+            std::cout << p.name << ": " << p.inlines << " x " << p.crosslines << " x " << p.samples << '\n';
+        return 0;
+    }
+    if (options.out.empty()) throw std::invalid_argument("generate-seismic: --out FILE.sgy is required");
+    if (options.preset.empty() && options.dims.empty())
+        throw std::invalid_argument("generate-seismic: give --preset NAME or --dims INLINES CROSSLINES SAMPLES");
+    SeismicParameters p = options.preset.empty() ? SeismicParameters{} : generators::find_seismic_preset(options.preset);
+    if (!options.dims.empty()) {
+        p.inlines = options.dims[0];
+        p.crosslines = options.dims[1];
+        p.samples = options.dims[2];
+    }
+    for (const auto& apply : options.overrides) apply(p);
+
+    generators::SegyWriteOptions write;
+    write.format = format_code(options.format);
+    write.little_endian = options.little_endian;
+    write.crossline_sorted = options.crossline_sorted;
+    const auto volume = generators::generate_seismic(p, std::uint64_t(options.memory_limit_gb * double(1 << 30)));
+    generators::write_segy(options.out, volume, write);
+    std::cout << options.out << ": " << p.name << " " << p.inlines << " x " << p.crosslines << " x " << p.samples
+              << " samples, seed " << p.seed << ", format " << options.format << (write.little_endian ? " LSB" : " MSB")
+              << (write.crossline_sorted ? ", crossline sorted" : ", inline sorted") << '\n';
+    return 0;
+}
+
+}  // namespace
+
+CommandAction add_generate_seismic_command(CLI::App& app) {
+    auto options = std::make_shared<GenerateSeismicOptions>();
+    CLI::App* cmd = app.add_subcommand("generate-seismic",
+                                       "Write a synthetic post-stack seismic cube (SEG-Y): layered reflectivity with "
+                                       "normal faults, Ricker wavelet, noise");
+    cmd->add_option("--preset", options->preset, "paper-500, paper-250, growth-1 .. growth-10 (see --list-presets)");
+    cmd->add_option("--dims", options->dims, "INLINES CROSSLINES SAMPLES")->expected(3);
+    cmd->add_option("--format", options->format, "Sample format: ibm, ieee (default), int32, int16, int8");
+    cmd->add_flag("--little-endian", options->little_endian, "Write little-endian (default big-endian)");
+    cmd->add_flag("--crossline-sorted", options->crossline_sorted, "Order traces crossline-major");
+    cmd->add_option("--memory-limit-gb", options->memory_limit_gb, "Refuse cubes needing more memory (GiB)")
+        ->check(CLI::PositiveNumber);
+    cmd->add_flag("--list-presets", options->list_presets, "Print the presets and exit");
+    cmd->add_option("--out", options->out, "Output SEG-Y file");
+    GenerateSeismicOptions& o = *options;
+    add_parameter(cmd, o, "--seed", &SeismicParameters::seed, "Random seed (same seed, same file)");
+    add_parameter(cmd, o, "--horizons", &SeismicParameters::horizons, "Reflecting layer boundaries");
+    add_parameter(cmd, o, "--faults", &SeismicParameters::faults, "Normal faults (0..16)");
+    add_parameter(cmd, o, "--max-throw", &SeismicParameters::max_throw_samples, "Largest fault throw (samples)");
+    add_parameter(cmd, o, "--dip", &SeismicParameters::fault_dip_deg, "Fault dip (30..90 degrees)");
+    add_parameter(cmd, o, "--relief", &SeismicParameters::horizon_relief_samples, "Horizon undulation (samples)");
+    add_parameter(cmd, o, "--ricker-hz", &SeismicParameters::ricker_peak_hz, "Ricker wavelet peak frequency (Hz)");
+    add_parameter(cmd, o, "--noise", &SeismicParameters::noise_fraction, "Noise std relative to the signal RMS");
+    add_parameter(cmd, o, "--sample-interval-us", &SeismicParameters::sample_interval_us,
+                  "Time between samples (microseconds)");
+    return [options] { return run_generate_seismic(*options); };
+}
+
+}  // namespace cutaway::app

@@ -1,0 +1,143 @@
+// `cutaway render MODEL [options] --out IMG.png [--stats STATS.json]`: one headless cutaway frame
+// with per-stage fenced times and image metrics (DESIGN.md contract).
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+
+#include "app/commands.h"
+#include "app/model_source.h"
+#include "app/render_options.h"
+#include "app/run_context.h"
+#include "cutaway/cut_surface/cut_surface_registry.h"
+#include "cutaway/cutaway_renderer.h"
+#include "cutaway/frame_metrics.h"
+#include "gl/gl_context.h"
+#include "gl/image.h"
+#include "grid/primary_selection.h"
+
+namespace cutaway::app {
+namespace {
+
+using nlohmann::json;
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+/// Median over repetitions of each stage's wall and query times, plus validity of all.
+json stage_statistics(const std::vector<pipeline::FrameTimes>& runs) {
+    json wall = json::object(), query = json::object(), valid = json::object();
+    std::vector<std::string> names(std::begin(pipeline::stage_names), std::end(pipeline::stage_names));
+    names.push_back("total");
+    for (const std::string& name : names) {
+        std::vector<double> walls, queries;
+        bool all_valid = true;
+        for (const pipeline::FrameTimes& run : runs) {
+            const gl::StageTime* found = name == "total" ? &run.total : nullptr;
+            for (const gl::StageTime& stage : run.stages)
+                if (stage.stage == name) found = &stage;
+            walls.push_back(found ? found->wall_ms : 0.0);
+            queries.push_back(found ? found->gl_query_ms : 0.0);
+            all_valid = all_valid && (!found || found->gl_query_valid);
+        }
+        wall[name] = median(walls);
+        query[name] = median(queries);
+        valid[name] = all_valid;
+    }
+    json all_runs = json::array();
+    for (const pipeline::FrameTimes& run : runs) all_runs.push_back(run.total.wall_ms);
+    return {{"stages_ms", wall}, {"gl_query_ms", query}, {"gl_query_valid_by_stage", valid},
+            {"gl_query_valid", std::all_of(valid.begin(), valid.end(), [](const json& v) { return v.get<bool>(); })},
+            {"total_ms_per_run", all_runs}};
+}
+
+int run_render(const RenderOptions& options) {
+    const LoadedModel model = load_model(options.model, options.memory_limit_bytes());
+    const grid::CornerPointGrid& grid = model.grid;
+    PropertyChoice property = choose_property(grid, options);
+    const std::vector<std::uint8_t> primaries = select_primary_cells(grid, property, options);
+    const std::size_t primary_count = grid::count_primaries(primaries);
+    if (primary_count == 0)
+        std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
+                  << property.primary_range.min << ", " << property.primary_range.max
+                  << "]; rendering the context only\n";
+
+    std::unique_ptr<gl::GlContext> context = gl::create_context(options.context_options());
+    const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
+    pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height);
+    renderer.set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
+    renderer.set_primaries(primaries);
+    const pipeline::FrameSettings settings = options.frame_settings();
+    const pipeline::Camera camera =
+        pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height);
+    if (options.freeze_pose)
+        renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *options.freeze_pose, options.width, options.height));
+
+    for (int i = 0; i < options.warmup; ++i) renderer.render(settings, camera);
+    std::vector<pipeline::FrameTimes> runs;
+    for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
+    gl::write_png(renderer.read_image(), options.out);
+
+    json stats = stage_statistics(runs);
+    if (options.baseline) {
+        std::vector<double> baseline;
+        for (int i = 0; i < std::max(1, options.repeat); ++i) baseline.push_back(renderer.render_baseline(camera).wall_ms);
+        stats["baseline_ms"] = median(baseline);
+        stats["total_over_baseline"] = stats["stages_ms"]["total"].get<double>() / median(baseline);
+    }
+    if (options.metrics) {
+        const pipeline::FrameMetrics m = pipeline::measure_frame(renderer, settings, camera);
+        stats["primary_exposure"] = m.exposure.fraction;
+        stats["primary_pixels"] = m.exposure.primary_pixels;
+        stats["context_kept"] = m.context.fraction;
+        stats["context_pixels"] = {{"cutaway", m.context.kept}, {"aperture_180", m.context.kept_180},
+                                   {"uncut", m.context.uncut}};
+        stats["border_line_width"] = {{"mean_px", m.border_width.mean}, {"stddev_px", m.border_width.stddev},
+                                      {"pixels", m.border_width.pixels}};
+        stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
+    }
+    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(settings.strategy);
+    stats["strategy"] = {{"name", strategy.name}, {"device", strategy.device}, {"why", strategy.why}};
+    stats["gl_renderer"] = gl::gl_renderer();
+    stats["gl_version"] = gl::gl_version();
+    stats["gl_platform"] = context->platform();
+    stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["git_revision"] = run_context::git_revision();
+    stats["size"] = {options.width, options.height};
+    stats["cells"] = grid.cell_count();
+    stats["active_cells"] = grid.active_count();
+    stats["primary_cells"] = primary_count;
+    stats["model"] = model.description;
+    stats["model_load_s"] = model.load_seconds;
+    stats["property"] = {{"name", property.label}, {"primary_range", {property.primary_range.min, property.primary_range.max}},
+                         {"colour_range", {property.colour_range.min, property.colour_range.max}}};
+    stats["configuration"] = options.describe();
+    stats["warmup"] = options.warmup;
+    stats["repeat"] = options.repeat;
+    if (!options.stats.empty()) {
+        std::ofstream file(options.stats);
+        if (!file) throw std::runtime_error(options.stats + ": cannot open for writing");
+        file << stats.dump(2) << '\n';
+    }
+    std::cout << "cutaway render: " << options.out << " (" << primary_count << " primary cells, total "
+              << stats["stages_ms"]["total"].get<double>() << " ms median of " << options.repeat << ")\n";
+    return 0;
+}
+
+}  // namespace
+
+CommandAction add_render_command(CLI::App& app) {
+    auto options = std::make_shared<RenderOptions>();
+    CLI::App* command = app.add_subcommand("render", "Render one headless cutaway frame with per-stage times and metrics");
+    add_render_options(*command, *options);
+    return [options] { return run_render(*options); };
+}
+
+}  // namespace cutaway::app

@@ -1,0 +1,174 @@
+#include "app/render_options.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace cutaway::app {
+namespace {
+
+template <typename Enum>
+Enum parse_choice(const std::string& option, const std::string& value,
+                  std::initializer_list<std::pair<const char*, Enum>> choices) {
+    std::string known;
+    for (const auto& [name, result] : choices) {
+        if (value == name) return result;
+        known += (known.empty() ? "" : "|") + std::string(name);
+    }
+    throw std::invalid_argument(option + " '" + value + "': expected " + known);
+}
+
+std::string names_of(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text.empty() ? "none" : text;
+}
+
+}  // namespace
+
+gl::ContextOptions RenderOptions::context_options() const {
+    gl::ContextOptions options;
+    options.egl_platform = egl_platform;
+#ifndef NDEBUG
+    options.debug_output = true;
+#endif
+    return options;
+}
+
+pipeline::OrbitPose RenderOptions::camera_pose() const { return {camera[0], camera[1], camera[2], glm::vec3(0)}; }
+
+pipeline::FrameSettings RenderOptions::frame_settings() const {
+    using namespace pipeline;
+    FrameSettings s = settings;
+    s.border = parse_choice<BorderMode>("--border", border, {{"raycast", BorderMode::raycast}, {"threshold", BorderMode::threshold}});
+    s.mean_filter_kernel = parse_choice<MeanFilterKernel>(
+        "--mean-filter-kernel", kernel, {{"full", MeanFilterKernel::full}, {"sampled", MeanFilterKernel::sampled}});
+    s.ssao = parse_choice<bool>("--ssao", ssao, {{"on", true}, {"off", false}});
+    s.contours = parse_choice<bool>("--contours", contours, {{"on", true}, {"off", false}});
+    s.only = parse_choice<OnlyLayer>("--only", only, {{"both", OnlyLayer::both}, {"primaries", OnlyLayer::primaries},
+                                                      {"secondaries", OnlyLayer::secondaries}});
+    for (float a : aperture)
+        if (!(a >= 0 && a <= 90)) throw std::invalid_argument("--aperture " + std::to_string(a) + ": expected 0..90 degrees");
+    s.aperture_h_deg = aperture[0];
+    s.aperture_v_deg = aperture[1];
+    if (aperture_180) set_aperture_180(s);
+    if (s.mean_filter < 0 || s.mean_filter > 65 || (s.mean_filter > 1 && s.mean_filter % 2 == 0))
+        throw std::invalid_argument("--mean-filter " + std::to_string(s.mean_filter) + ": expected 0 (off) or an odd size 3..65");
+    if (!(s.border_width_px >= 1 && s.border_width_px <= 32))
+        throw std::invalid_argument("--border-width: expected 1..32 pixels");
+    if (!(s.line_width_px >= 0 && s.line_width_px <= 16)) throw std::invalid_argument("--line-width: expected 0..16 pixels");
+    return s;
+}
+
+nlohmann::json RenderOptions::describe() const {
+    const pipeline::FrameSettings s = frame_settings();
+    return {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
+            {"step", step}, {"ijk_box", ijk_box}, {"strategy", s.strategy},
+            {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
+            {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
+            {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
+            {"mean_filter_kernel", pipeline::to_string(s.mean_filter_kernel)}, {"ssao", s.ssao},
+            {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius}, {"saturation", s.saturation},
+            {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
+            {"hide_internal_lines", s.hide_internal_lines}, {"only", pipeline::to_string(s.only)},
+            {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
+            {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}};
+}
+
+void add_render_options(CLI::App& c, RenderOptions& o) {
+    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")->required();
+    c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)");
+    c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2);
+    c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)");
+    c.add_option("--step", o.step, "time step of a dynamic property (0-based)");
+    c.add_option("--ijk-box", o.ijk_box, "restrict primaries to I0 J0 K0 I1 J1 K1 (0-based, inclusive)")->expected(6);
+    c.add_option("--strategy", o.settings.strategy, "cut-surface strategy");
+    c.add_option("--border", o.border, "border lines: raycast|threshold");
+    c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels");
+    c.add_option("--line-width", o.settings.line_width_px, "cell edge line width, pixels (0: none)");
+    c.add_option("--mean-filter", o.settings.mean_filter, "mean filter size k (odd; 0 = off)");
+    c.add_option("--mean-filter-kernel", o.kernel, "full|sampled");
+    c.add_option("--ssao", o.ssao, "on|off");
+    c.add_option("--aperture", o.aperture, "horizontal and vertical aperture H V, degrees 0..90")->expected(2);
+    c.add_flag("--aperture-180", o.aperture_180, "remove everything between the primaries and the camera");
+    c.add_option("--back-margin", o.settings.back_margin, "back-plane margin, fraction of the model radius");
+    c.add_option("--camera", o.camera, "AZ EL DIST: degrees around the model centre; DIST 0 frames the model")->expected(3);
+    c.add_option("--freeze-camera", o.freeze_camera, "freeze view: the cut is made from this AZ EL DIST")->expected(3);
+    c.add_option("--size", o.size, "image W H, pixels")->expected(2);
+    c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)");
+    c.add_flag("--saturation", o.settings.saturation, "saturation contrast between primaries and secondaries");
+    c.add_flag("--silhouette", o.settings.silhouette, "silhouette of the primary cluster");
+    c.add_option("--silhouette-width", o.settings.silhouette_width_px, "silhouette width, pixels");
+    c.add_flag("--hide-internal-lines", o.settings.hide_internal_lines, "no cell edges on the cut fill");
+    c.add_option("--contours", o.contours, "shell contour lines: on|off");
+    c.add_option("--only", o.only, "both|primaries|secondaries");
+    c.add_flag("!--no-colour-bar", o.settings.colour_bar, "leave out the colour bar");
+    c.add_option("--out", o.out, "output PNG")->required();
+    c.add_option("--stats", o.stats, "write stage times, metrics and configuration as JSON");
+    c.add_flag("--baseline", o.baseline, "also time a plain shaded frame of the whole model (baseline_ms)");
+    c.add_flag("!--no-metrics", o.metrics, "skip the image metrics (3 extra untimed frames)");
+    c.add_option("--warmup", o.warmup, "untimed frames first")->check(CLI::Range(0, 100));
+    c.add_option("--repeat", o.repeat, "timed frames; stats hold medians")->check(CLI::Range(1, 1000));
+    c.add_option("--egl-platform", o.egl_platform, "auto|surfaceless|device");
+    c.add_option("--memory-limit-gb", o.memory_limit_gb, "refuse models needing more memory than this");
+    c.callback([&o] {
+        o.width = o.size[0];
+        o.height = o.size[1];
+        if (o.freeze_camera.size() == 3)
+            o.freeze_pose = pipeline::OrbitPose{o.freeze_camera[0], o.freeze_camera[1], o.freeze_camera[2], glm::vec3(0)};
+    });
+}
+
+PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options) {
+    PropertyChoice choice;
+    const std::vector<std::string> statics = grid.property_names();
+    const std::vector<std::string> dynamics = grid.dynamic_property_names();
+    std::string name = options.property;
+    if (name.empty()) {
+        if (grid.property("PORO")) name = "PORO";
+        else if (!statics.empty()) name = statics.front();
+        else if (!dynamics.empty()) name = dynamics.front();
+    }
+    if (name.empty()) {
+        // No property in the model: colour and select by layer index so the frame still says something.
+        choice.name = choice.label = "K (layer index; the model has no property)";
+        choice.owned.resize(grid.cell_count());
+        for (std::size_t c = 0; c < grid.cell_count(); ++c) choice.owned[c] = float(grid::cell_ijk(grid.dims(), c).k);
+    } else if (const std::vector<float>* values = grid.property(name); values && options.step < 0) {
+        choice.name = choice.label = name;
+        choice.external = values;
+    } else if (grid.step_count(name) > 0) {
+        const int step = std::max(options.step, 0);
+        if (std::size_t(step) >= grid.step_count(name))
+            throw std::invalid_argument("--step " + std::to_string(step) + ": property " + name + " has " +
+                                        std::to_string(grid.step_count(name)) + " time steps (0-based)");
+        choice.name = name;
+        choice.label = name + " step " + std::to_string(step);
+        choice.external = grid.dynamic_property(name, std::size_t(step));
+    } else if (values) {
+        throw std::invalid_argument("--step: property " + name + " is static (dynamic ones: " + names_of(dynamics) + ")");
+    } else {
+        throw std::invalid_argument("--property " + name + ": not in the model (static: " + names_of(statics) +
+                                    "; dynamic: " + names_of(dynamics) + ")");
+    }
+    choice.colour_range = grid::active_value_range(grid, choice.values(), choice.name);
+    return choice;
+}
+
+std::vector<std::uint8_t> select_primary_cells(const grid::CornerPointGrid& grid, PropertyChoice& property,
+                                               const RenderOptions& options) {
+    if (!options.range.empty() && options.primary_fraction > 0)
+        throw std::invalid_argument("give either --range or --primary-fraction, not both");
+    if (!options.range.empty())
+        property.primary_range = {options.range[0], options.range[1]};
+    else
+        property.primary_range = grid::range_for_fraction(grid, property.values(), property.name,
+                                                          options.primary_fraction > 0 ? options.primary_fraction : 0.01);
+    std::optional<grid::IjkBox> box;
+    if (options.ijk_box.size() == 6) {
+        const auto& b = options.ijk_box;
+        box = grid::IjkBox{b[0], b[1], b[2], b[3], b[4], b[5]};
+    }
+    return grid::select_primaries(grid, property.values(), property.name, property.primary_range, box);
+}
+
+}  // namespace cutaway::app

@@ -1,0 +1,79 @@
+#pragma once
+// Options of `cutaway render` (and the viewer), their CLI registration, and what they select.
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "cutaway/camera.h"
+#include "cutaway/frame_settings.h"
+#include "gl/gl_context.h"
+#include "grid/primary_selection.h"
+
+namespace cutaway::app {
+
+struct RenderOptions {
+    std::vector<std::string> model;   ///< GRDECL file(s) loaded onto one grid, or preset:NAME
+    std::string property;             ///< empty: PORO, else the first property
+    std::vector<float> range;         ///< LO HI
+    double primary_fraction = 0;      ///< 0: --range or the default 1%
+    int step = -1;                    ///< time step of a dynamic property
+    std::vector<int> ijk_box;         ///< I0 J0 K0 I1 J1 K1
+    pipeline::FrameSettings settings;
+    std::string border = "raycast";
+    std::string kernel = "full";
+    std::string ssao = "on";
+    std::string contours = "on";
+    std::string only = "both";
+    std::vector<float> aperture{30, 30};
+    bool aperture_180 = false;
+    std::vector<float> camera{35, 30, 0};
+    std::vector<float> freeze_camera;  ///< AZ EL DIST of the frozen cut camera
+    std::optional<pipeline::OrbitPose> freeze_pose;
+    std::vector<int> size{1280, 720};
+    int width = 1280, height = 720;
+    double z_scale = 0;
+    std::string out;
+    std::string stats;
+    bool baseline = false;
+    bool metrics = true;
+    int warmup = 1;
+    int repeat = 3;
+    std::string egl_platform = "auto";
+    double memory_limit_gb = 16;
+
+    std::size_t memory_limit_bytes() const { return std::size_t(memory_limit_gb * double(std::size_t(1) << 30)); }
+    gl::ContextOptions context_options() const;
+    pipeline::OrbitPose camera_pose() const;
+    /// Settings after the string options are checked (throws std::invalid_argument naming the
+    /// option and the accepted values).
+    pipeline::FrameSettings frame_settings() const;
+    /// Every effective option, for stats.json.
+    nlohmann::json describe() const;
+};
+
+/// Registers the options on `command`; parsed values land in `options` (finalised by a callback).
+void add_render_options(CLI::App& command, RenderOptions& options);
+
+/// The property cells are coloured and selected by.
+struct PropertyChoice {
+    std::string name;                 ///< as in the file, e.g. "SWAT"
+    std::string label;                ///< with the step, e.g. "SWAT step 3"
+    const std::vector<float>* external = nullptr;  ///< the grid's array, or null when owned
+    std::vector<float> owned;         ///< storage for a derived property (layer index)
+    grid::PrimaryRange colour_range;  ///< active min and max
+    grid::PrimaryRange primary_range;
+    const std::vector<float>& values() const { return external ? *external : owned; }
+};
+
+/// Throws std::invalid_argument for an unknown property or step, naming the known ones.
+PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options);
+
+/// Primary flags per cell from the property range (or fraction) and the IJK box.
+std::vector<std::uint8_t> select_primary_cells(const grid::CornerPointGrid& grid, PropertyChoice& property,
+                                               const RenderOptions& options);
+
+}  // namespace cutaway::app

@@ -1,0 +1,270 @@
+// `cutaway volume CUBE.sgy [--tf grey|pseudo|layer] [--camera AZ EL DIST] [--size W H]
+//  [--caster gpu|cpu] [--step S] [--no-skip] ... --out IMG.png [--stats STATS.json]`
+#include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "app/run_context.h"
+#include "gl/gl_context.h"
+#include "gl/image.h"
+#include "gl/shader_library.h"
+#include "gl/stage_timer.h"
+#include "volume/cpu_ray_caster.h"
+#include "volume/gpu_ray_caster.h"
+#include "volume/segy_reader.h"
+#include "volume/view_geometry.h"
+
+namespace cutaway::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using volume::RayCastSettings;
+
+struct VolumeOptions {
+    std::string cube;
+    std::string out;
+    std::string stats;
+    std::string tf = "grey";
+    std::string caster = "gpu";
+    std::vector<double> camera;
+    std::vector<int> size;
+    std::vector<double> layer;  ///< k r alpha_v f_v
+    double opacity = volume::TransferFunctionSettings{}.opacity;
+    bool no_skip = false, no_jitter = false, no_opacity_correction = false, no_early_termination = false;
+    bool no_colour_bar = false;
+    unsigned threads = 0;
+    int warmup = 1;
+    int repeat = 1;
+    double memory_limit_gb = 4;
+    volume::SegyReadOptions read;
+    RayCastSettings settings;
+};
+
+double elapsed_ms(Clock::time_point since) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
+}
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+/// Per-stage times over the timed repetitions: fenced wall and GL query, ms.
+struct StageSeries {
+    std::vector<double> wall_ms, gl_query_ms;
+    bool gl_query_valid = true;
+};
+
+/// Times and counts of the timed frames, plus the last frame.
+struct FrameRuns {
+    std::map<std::string, StageSeries> stages;
+    std::vector<double> total_ms;
+    volume::CastResult last;
+    std::string gl_renderer = "none (cpu caster)";
+};
+
+FrameRuns run_gpu(const volume::VolumeScene& scene, const VolumeOptions& options) {
+    FrameRuns runs;
+    const auto context = gl::create_context(gl::ContextOptions{});
+    runs.gl_renderer = gl::gl_renderer();
+    const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
+    volume::GpuRayCaster caster(shaders, scene);
+    for (int frame = 0; frame < options.warmup + options.repeat; ++frame) {
+        gl::StageTimer timer;
+        runs.last = caster.render(options.settings, timer);
+        if (frame < options.warmup) continue;
+        double total = 0;
+        for (const gl::StageTime& stage : timer.stages()) {
+            StageSeries& series = runs.stages[stage.stage];
+            series.wall_ms.push_back(stage.wall_ms);
+            series.gl_query_ms.push_back(stage.gl_query_ms);
+            series.gl_query_valid = series.gl_query_valid && stage.gl_query_valid;
+            total += stage.wall_ms;
+        }
+        runs.total_ms.push_back(total);
+    }
+    return runs;
+}
+
+FrameRuns run_cpu(const volume::VolumeScene& scene, const VolumeOptions& options) {
+    FrameRuns runs;
+    for (int frame = 0; frame < options.warmup + options.repeat; ++frame) {
+        const Clock::time_point start = Clock::now();
+        runs.last = volume::cast_rays_cpu(scene, options.settings, options.threads);
+        const double ms = elapsed_ms(start);
+        if (frame < options.warmup) continue;
+        runs.stages["ray_cast"].wall_ms.push_back(ms);
+        runs.total_ms.push_back(ms);
+    }
+    return runs;
+}
+
+nlohmann::json configuration_json(const VolumeOptions& o, const volume::TransferFunctionSettings& tf,
+                                   const volume::ViewGeometry& view, unsigned threads) {
+    const RayCastSettings& s = o.settings;
+    return {{"caster", o.caster},
+            {"transfer_function",
+             {{"name", volume::transfer_function_name(tf.kind)},
+              {"opacity", tf.opacity},
+              {"layer", {{"k", tf.layer.k}, {"r", tf.layer.r}, {"alpha_v", tf.layer.alpha_v}, {"f_v", tf.layer.f_v}}}}},
+            {"size", {s.width, s.height}},
+            {"camera",
+             {{"azimuth_deg", s.camera.azimuth_deg},
+              {"elevation_deg", s.camera.elevation_deg},
+              {"distance", view.distance},
+              {"fov_deg", s.camera.fov_deg}}},
+            {"time_scale", view.time_scale},
+            {"step_voxels", s.step},
+            {"opacity_correction", s.opacity_correction},
+            {"jitter", s.jitter},
+            {"early_termination", s.early_termination},
+            {"early_termination_alpha", s.early_termination_alpha},
+            {"empty_space_skipping", s.empty_space_skipping},
+            {"block_size", s.block_size},
+            {"colour_bar", s.colour_bar},
+            {"cpu_threads", threads},
+            {"warmup", o.warmup},
+            {"repeat", o.repeat},
+            {"null_value", o.read.null_value}};
+}
+
+nlohmann::json input_json(const volume::VolumeCube& cube, const volume::QuantisedVolume& levels) {
+    return {{"path", cube.source},
+            {"dims", {cube.dims.inlines, cube.dims.crosslines, cube.dims.samples}},
+            {"inline_range", {cube.inline_numbers.front(), cube.inline_numbers.back()}},
+            {"crossline_range", {cube.crossline_numbers.front(), cube.crossline_numbers.back()}},
+            {"sample_interval_ms", cube.sample_interval_ms},
+            {"format", cube.format_name},
+            {"byte_order", cube.little_endian ? "little-endian" : "big-endian"},
+            {"sorting", volume::sorting_name(cube.sorting)},
+            {"missing_traces", cube.missing_traces.size()},
+            {"value_range", {levels.range.min, levels.range.max}}};
+}
+
+void apply_options(VolumeOptions& o, volume::TransferFunctionSettings& tf) {
+    RayCastSettings& s = o.settings;
+    if (!o.size.empty()) {
+        s.width = o.size[0];
+        s.height = o.size[1];
+    }
+    if (!o.camera.empty()) s.camera = {o.camera[0], o.camera[1], o.camera[2], s.camera.fov_deg};
+    s.empty_space_skipping = !o.no_skip;
+    s.jitter = !o.no_jitter;
+    s.opacity_correction = !o.no_opacity_correction;
+    s.early_termination = !o.no_early_termination;
+    s.colour_bar = !o.no_colour_bar;
+    if (o.caster != "gpu" && o.caster != "cpu")
+        throw std::invalid_argument("volume: --caster " + o.caster + ": expected gpu or cpu");
+    if (o.warmup < 0 || o.repeat < 1)
+        throw std::invalid_argument("volume: --warmup must be >= 0 and --repeat >= 1");
+    volume::validate(s);
+    tf.kind = volume::parse_transfer_function(o.tf);
+    tf.opacity = o.opacity;
+    if (!o.layer.empty()) tf.layer = {o.layer[0], o.layer[1], o.layer[2], o.layer[3]};
+    o.read.memory_limit_bytes = std::uint64_t(o.memory_limit_gb * double(std::uint64_t(1) << 30));
+}
+
+int run_volume(VolumeOptions& o) {
+    volume::TransferFunctionSettings tf;
+    apply_options(o, tf);
+
+    Clock::time_point start = Clock::now();
+    const volume::VolumeCube cube = volume::load_segy(o.cube, o.read);
+    const double load_ms = elapsed_ms(start);
+    if (!cube.missing_traces.empty())
+        std::cerr << "cutaway: " << cube.source << ": irregular survey, " << cube.missing_traces.size()
+                  << " missing traces filled with " << cube.null_value << '\n';
+    start = Clock::now();
+    const volume::QuantisedVolume levels = volume::quantise(cube);
+    const volume::VolumeScene scene = volume::make_scene(levels, volume::build_transfer_table(tf), o.settings.block_size);
+    const double prepare_ms = elapsed_ms(start);
+
+    const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    FrameRuns runs = o.caster == "gpu" ? run_gpu(scene, o) : run_cpu(scene, o);
+    gl::write_png(runs.last.image, o.out);
+
+    const double ray_cast_ms = median(runs.stages["ray_cast"].wall_ms);
+    const double samples_per_second = ray_cast_ms > 0 ? double(runs.last.samples) / (ray_cast_ms * 1e-3) : 0;
+    std::cout << o.out << ": " << o.caster << " caster, " << volume::transfer_function_name(tf.kind) << ", "
+              << cube.dims.inlines << "x" << cube.dims.crosslines << "x" << cube.dims.samples << ", ray cast "
+              << ray_cast_ms << " ms (median of " << o.repeat << "), " << runs.last.samples << " samples, "
+              << samples_per_second / 1e6 << " M samples/s\n";
+    if (o.stats.empty()) return 0;
+
+    nlohmann::json stats;
+    stats["command"] = "volume";
+    stats["input"] = input_json(cube, levels);
+    stats["configuration"] = configuration_json(o, tf, volume::make_view(cube.dims, o.settings), threads);
+    stats["load_ms"] = load_ms;
+    stats["prepare_ms"] = prepare_ms;
+    bool all_valid = true;
+    for (const auto& [name, series] : runs.stages) {
+        stats["stages_ms"][name] = median(series.wall_ms);
+        stats["stages_ms_all"][name] = series.wall_ms;
+        const bool valid = o.caster == "gpu" && series.gl_query_valid;
+        stats["gl_query_ms"][name] = median(series.gl_query_ms);
+        stats["gl_query_valid_by_stage"][name] = valid;
+        all_valid = all_valid && valid;
+    }
+    stats["stages_ms"]["total"] = median(runs.total_ms);
+    stats["gl_query_valid"] = all_valid;
+    stats["samples"] = runs.last.samples;
+    stats["rays"] = runs.last.rays;
+    stats["samples_per_ray"] = runs.last.rays ? double(runs.last.samples) / double(runs.last.rays) : 0.0;
+    stats["samples_per_second"] = samples_per_second;
+    stats["occupied_block_fraction"] = scene.occupied_fraction();
+    stats["gl_renderer"] = runs.gl_renderer;
+    stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["git_revision"] = run_context::git_revision();
+    std::ofstream file(o.stats);
+    file << stats.dump(2) << '\n';
+    if (!file) throw std::runtime_error(o.stats + ": cannot write the stats");
+    return 0;
+}
+
+}  // namespace
+
+CommandAction add_volume_command(CLI::App& app) {
+    auto o = std::make_shared<VolumeOptions>();
+    CLI::App* cmd = app.add_subcommand("volume", "Ray cast a seismic SEG-Y cube (Duan & Li) into a PNG, headless");
+    cmd->add_option("cube", o->cube, "Post-stack SEG-Y cube")->required();
+    cmd->add_option("--out", o->out, "Output PNG")->required();
+    cmd->add_option("--stats", o->stats, "Write times, sample counts and the configuration as JSON");
+    cmd->add_option("--tf", o->tf, "Transfer function: grey, pseudo or layer");
+    cmd->add_option("--opacity", o->opacity, "grey/pseudo: opacity of the top level per voxel step (0..1)");
+    cmd->add_option("--layer", o->layer, "Layer highlight K R ALPHA_V F_V (levels; default 1 60 1 255)")->expected(4);
+    cmd->add_option("--camera", o->camera, "Azimuth, elevation (degrees), distance (voxels, 0 frames the cube)")
+        ->expected(3);
+    cmd->add_option("--size", o->size, "Image width and height (pixels)")->expected(2);
+    cmd->add_option("--caster", o->caster, "gpu (fragment shader) or cpu (reference, std::thread)");
+    cmd->add_option("--threads", o->threads, "CPU caster threads (0: all cores)");
+    cmd->add_option("--step", o->settings.step, "Sample distance along rays (voxels)");
+    cmd->add_option("--time-scale", o->settings.time_scale, "Display length of a time sample (0: automatic)");
+    cmd->add_option("--block-size", o->settings.block_size, "Empty-space block edge (voxels)");
+    cmd->add_option("--early-termination-alpha", o->settings.early_termination_alpha, "Stop rays at this opacity");
+    cmd->add_flag("--no-skip", o->no_skip, "No empty-space skipping");
+    cmd->add_flag("--no-jitter", o->no_jitter, "Start every ray on the entry point");
+    cmd->add_flag("--no-opacity-correction", o->no_opacity_correction, "Use table opacities whatever the step");
+    cmd->add_flag("--no-early-termination", o->no_early_termination, "March every ray to its exit");
+    cmd->add_flag("--no-colour-bar", o->no_colour_bar, "Leave the transfer-function bar out");
+    cmd->add_option("--warmup", o->warmup, "Untimed frames first");
+    cmd->add_option("--repeat", o->repeat, "Timed frames (stats report medians)");
+    cmd->add_option("--null-value", o->read.null_value, "Value for missing traces of irregular surveys");
+    cmd->add_option("--inline-byte", o->read.inline_byte, "Trace header byte of the inline number");
+    cmd->add_option("--crossline-byte", o->read.crossline_byte, "Trace header byte of the crossline number");
+    cmd->add_option("--memory-limit-gb", o->memory_limit_gb, "Refuse cubes needing more memory (GiB)")
+        ->check(CLI::PositiveNumber);
+    return [o] { return run_volume(*o); };
+}
+
+}  // namespace cutaway::app

@@ -1,0 +1,37 @@
+#pragma once
+// Perspective orbit camera around the model's centre (render space, Z up).
+#include <glm/glm.hpp>
+
+#include "cutaway/model_frame.h"
+
+namespace cutaway::pipeline {
+
+struct OrbitPose {
+    float azimuth_deg = 35;    ///< around +Z, 0 = looking along +Y (from the south)
+    float elevation_deg = 30;  ///< above the horizontal
+    float distance = 0;        ///< render units from the centre; 0 frames the whole model
+    glm::vec3 target{0};       ///< orbit centre (pan), render space
+};
+
+struct Camera {
+    glm::mat4 view{1};
+    glm::mat4 projection{1};
+    glm::vec3 eye{0};
+    float near_plane = 0.1f;
+    float far_plane = 1.0f;
+    float fovy_rad = 0;
+    int width = 1;
+    int height = 1;
+
+    glm::mat4 view_projection() const { return projection * view; }
+    /// Focal length in pixels: one eye-space unit at distance 1 spans this many pixels.
+    float focal_px() const;
+};
+
+/// Vertical field of view of every frame (degrees).
+inline constexpr float default_fovy_deg = 30.0f;
+
+/// Camera of `pose` for a `width` x `height` image; near/far planes hug the model's bounding sphere.
+Camera make_orbit_camera(const ModelFrame& frame, const OrbitPose& pose, int width, int height);
+
+}  // namespace cutaway::pipeline

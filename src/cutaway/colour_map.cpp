@@ -1,0 +1,34 @@
+#include "cutaway/colour_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace cutaway::pipeline {
+namespace {
+
+constexpr std::uint8_t viridis[256][3] = {
+#include "cutaway/viridis_table.inc"
+};
+
+}  // namespace
+
+std::array<std::uint8_t, 3> colour_map_rgb(float t) {
+    const float clamped = std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, 1.0f);
+    const auto index = std::size_t(std::lround(clamped * 255.0f));
+    return {viridis[index][0], viridis[index][1], viridis[index][2]};
+}
+
+gl::Texture make_colour_map_texture() {
+    gl::Texture texture(GL_TEXTURE_1D, GL_RGBA8, 256);
+    std::vector<std::uint8_t> texels(256 * 4);
+    for (std::size_t i = 0; i < 256; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) texels[4 * i + c] = viridis[i][c];
+        texels[4 * i + 3] = 255;
+    }
+    glTextureSubImage1D(texture.id(), 0, 0, 256, GL_RGBA, GL_UNSIGNED_BYTE, texels.data());
+    texture.set_filter(GL_LINEAR);
+    return texture;
+}
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,24 @@
+#include "cutaway/cut_surface/cut_surface_registry.h"
+
+#include <stdexcept>
+
+#include "cutaway/cut_surface/frustum_union.h"
+
+namespace cutaway::pipeline {
+
+std::vector<CutSurfaceEntry> cut_surface_strategies() {
+    return {
+        frustum_union_entry(),
+    };
+}
+
+CutSurfaceEntry find_cut_surface(const std::string& name) {
+    std::string known;
+    for (CutSurfaceEntry& entry : cut_surface_strategies()) {
+        if (entry.name == name) return entry;
+        known += (known.empty() ? "" : ", ") + entry.name;
+    }
+    throw std::invalid_argument("cut-surface strategy '" + name + "': expected one of " + known);
+}
+
+}  // namespace cutaway::pipeline

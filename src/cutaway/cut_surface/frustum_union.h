@@ -1,0 +1,9 @@
+#pragma once
+// The paper's stage 1: one frustum per primary cell, united by an inverted depth test.
+#include "cutaway/cut_surface/cut_surface_strategy.h"
+
+namespace cutaway::pipeline {
+
+CutSurfaceEntry frustum_union_entry();
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,206 @@
+#include "cutaway/cutaway_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "cutaway/colour_map.h"
+#include "cutaway/cut_surface/cut_surface_registry.h"
+#include "gl/gl_error.h"
+#include "grid/face_classification.h"
+
+namespace cutaway::pipeline {
+namespace {
+
+GridLayout layout_for(const grid::CornerPointGrid& grid, const ModelFrame& frame) {
+    const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
+    return build_grid_layout(grid, classes, frame);
+}
+
+int checked_side(int side, const char* name) {
+    const int limit = max_image_side();
+    if (side < 1 || side > limit)
+        throw std::invalid_argument(std::string("image ") + name + " " + std::to_string(side) +
+                                    ": expected 1.." + std::to_string(limit) + " (this GL's texture/viewport limit)");
+    return side;
+}
+
+FloatImage read_alpha(const gl::Texture& texture, int width, int height) {
+    std::vector<float> rgba(std::size_t(width) * std::size_t(height) * 4);
+    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+    FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
+    for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + 3];
+    return image;
+}
+
+}  // namespace
+
+int max_image_side() {
+    GLint texture = 0, viewport[2] = {0, 0}, renderbuffer = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    return std::min({texture, viewport[0], viewport[1], renderbuffer});
+}
+
+CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale,
+                                 int width, int height)
+    : shaders_(shaders),
+      width_(checked_side(width, "width")),
+      height_(checked_side(height, "height")),
+      frame_(make_model_frame(grid, z_scale)),
+      layout_(layout_for(grid, frame_)),
+      grid_(grid),
+      buffers_(layout_, grid.dims(), frame_),
+      colour_map_(make_colour_map_texture()),
+      cut_(width, height),
+      filtered_cut_(width, height),
+      scene_(width, height),
+      post_(width, height),
+      secondary_(shaders),
+      primary_(shaders),
+      mean_filter_(shaders),
+      ssao_(shaders),
+      composite_(shaders),
+      colour_bar_(shaders) {
+    set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));
+    set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1});
+}
+
+void CutawayRenderer::set_colouring(const std::vector<float>& values, const ColourBarLabel& label) {
+    if (values.size() != grid_.cell_count())
+        throw std::invalid_argument("colour values: " + std::to_string(values.size()) + ", expected one per cell");
+    std::vector<float> compact(layout_.cells.size());
+    for (std::size_t c = 0; c < compact.size(); ++c) compact[c] = values[layout_.cells[c] & 0x7fffffffu];
+    buffers_.set_values(compact);
+    label_ = label;
+}
+
+void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
+    const FaceLists lists = build_face_lists(grid_, layout_, flags);
+    primary_cells_ = lists.primary_cells.size();
+    buffers_.set_selection(lists);
+    frozen_valid_ = false;
+}
+
+CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
+    for (auto& [known, instance] : strategies_)
+        if (known == name) return *instance;
+    strategies_.emplace_back(name, find_cut_surface(name).make(shaders_));
+    return *strategies_.back().second;
+}
+
+const CutTargets& CutawayRenderer::active_cut(const FrameSettings&) const { return last_filtered_ ? filtered_cut_ : cut_; }
+
+FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
+    if (camera.width != width_ || camera.height != height_)
+        throw std::invalid_argument("camera image size differs from the renderer's");
+    timer_.clear();
+    empty_vertex_array_.bind();
+    glFinish();
+    const auto started = std::chrono::steady_clock::now();
+
+    const Camera& cut_camera = frozen_camera_ ? *frozen_camera_ : camera;
+    const bool draw_primaries = s.only != OnlyLayer::secondaries;
+    const bool cut_needed = s.only != OnlyLayer::primaries;
+    const bool cut_drawn = cut_needed && s.cut_enabled;
+    const bool keep_frozen_cut = frozen_camera_ && frozen_valid_;
+    if (!keep_frozen_cut) {
+        gl::timed_stage(timer_, "cut_surface", [&] {
+            cut_.clear();
+            if (!cut_drawn) return;
+            const float radius = frame_.radius();
+            const float centre_depth = -(cut_camera.view * glm::vec4(0, 0, 0, 1)).z;
+            const CutSurfaceInputs inputs{buffers_, cut_camera, glm::radians(std::clamp(s.aperture_h_deg, 0.0f, 90.0f)),
+                                          glm::radians(std::clamp(s.aperture_v_deg, 0.0f, 90.0f)),
+                                          s.back_margin * radius,
+                                          std::max(centre_depth - radius, cut_camera.near_plane)};
+            strategy(s.strategy).render(inputs, cut_);
+        });
+        last_filtered_ = cut_drawn && s.mean_filter >= 3;
+        if (last_filtered_)
+            gl::timed_stage(timer_, "mean_filter", [&] {
+                mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera);
+            });
+        frozen_valid_ = frozen_camera_.has_value();
+    }
+    empty_vertex_array_.bind();
+    const FaceDrawContext context{buffers_, camera, colour_map_, {label_.min, label_.max}};
+    gl::timed_stage(timer_, "secondary", [&] {
+        scene_.clear();
+        scene_.framebuffer.bind();
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        if (cut_needed) secondary_.draw(context, buffers_.secondary_faces(), s, active_cut(s), cut_camera);
+    });
+    gl::timed_stage(timer_, "primary", [&] {
+        scene_.framebuffer.bind();
+        if (draw_primaries) primary_.draw_primaries(context, buffers_.primary_faces(), s);
+        if (s.contours) primary_.draw_shell_depth(context, scene_);
+    });
+    if (s.ssao)
+        gl::timed_stage(timer_, "ssao", [&] {
+            ssao_.apply(scene_, post_, camera, s.ssao_samples, s.ssao_radius * frame_.radius());
+        });
+    gl::timed_stage(timer_, "post", [&] {
+        composite_.apply(scene_, post_, s, width_, height_);
+        if (s.colour_bar) colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
+        empty_vertex_array_.bind();
+    });
+    glFinish();
+    FrameTimes times;
+    times.stages = timer_.stages();
+    times.total.stage = "total";
+    times.total.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    times.total.gl_query_valid = true;
+    for (const gl::StageTime& stage : times.stages) {
+        times.total.gl_query_ms += stage.gl_query_ms;
+        times.total.gl_query_valid = times.total.gl_query_valid && stage.gl_query_valid;
+    }
+    return times;
+}
+
+gl::StageTime CutawayRenderer::render_baseline(const Camera& camera) {
+    timer_.clear();
+    empty_vertex_array_.bind();
+    FrameSettings plain;
+    plain.border = BorderMode::threshold;
+    const FaceDrawContext context{buffers_, camera, colour_map_, {label_.min, label_.max}};
+    gl::timed_stage(timer_, "baseline", [&] {
+        cut_.clear();
+        scene_.clear();
+        scene_.framebuffer.bind();
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        secondary_.draw(context, buffers_.all_faces(), plain, cut_, camera);
+    });
+    frozen_valid_ = false;
+    return timer_.stages().back();
+}
+
+gl::RgbaImage CutawayRenderer::read_image() const {
+    return gl::read_rgba(post_.final_framebuffer.id(), 0, width_, height_);
+}
+
+IdImage CutawayRenderer::read_ids() const {
+    std::vector<std::uint32_t> pairs(std::size_t(width_) * std::size_t(height_) * 2);
+    glGetTextureImage(scene_.id.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(pairs.size() * 4), pairs.data());
+    IdImage ids{width_, height_, {}, {}};
+    ids.cell.resize(pairs.size() / 2);
+    ids.flags.resize(pairs.size() / 2);
+    for (std::size_t i = 0; i < ids.cell.size(); ++i) {
+        ids.cell[i] = pairs[2 * i];
+        ids.flags[i] = pairs[2 * i + 1];
+    }
+    return ids;
+}
+
+FloatImage CutawayRenderer::read_scene_depth() const { return read_alpha(scene_.normal_depth, width_, height_); }
+
+FloatImage CutawayRenderer::read_cut_depth() const {
+    const CutTargets& cut = last_filtered_ ? filtered_cut_ : cut_;
+    return read_alpha(cut.surface, cut.surface.width(), cut.surface.height());
+}
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,118 @@
+#pragma once
+// One cutaway frame, stage by stage (SPEC.md section 2): cut surface, mean filter, secondaries,
+// primaries and feature lines, SSAO, composite. Every stage is fenced and timed.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cutaway/camera.h"
+#include "cutaway/colour_bar.h"
+#include "cutaway/cut_surface/cut_surface_strategy.h"
+#include "cutaway/frame_settings.h"
+#include "cutaway/frame_targets.h"
+#include "cutaway/grid_buffers.h"
+#include "cutaway/post/composite.h"
+#include "cutaway/post/mean_filter.h"
+#include "cutaway/post/ssao.h"
+#include "cutaway/primary_pass.h"
+#include "cutaway/secondary_pass.h"
+#include "gl/image.h"
+#include "gl/stage_timer.h"
+#include "grid/corner_point_grid.h"
+
+namespace cutaway::pipeline {
+
+/// Stage names in stats.json (stages_ms).
+inline constexpr const char* stage_names[] = {"cut_surface", "mean_filter", "secondary", "primary", "ssao", "post"};
+
+struct FrameTimes {
+    std::vector<gl::StageTime> stages;  ///< in execution order
+    gl::StageTime total;                ///< fenced wall time of the whole frame
+};
+
+/// Per-pixel ids read back: compact cell + 1 (0 = background) and flags (frame_outputs.glsl).
+struct IdImage {
+    int width = 0;
+    int height = 0;
+    std::vector<std::uint32_t> cell;
+    std::vector<std::uint32_t> flags;
+};
+
+/// A float image (rows bottom to top, as GL stores them).
+struct FloatImage {
+    int width = 0;
+    int height = 0;
+    std::vector<float> values;
+};
+
+inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border = 4, flag_edge = 8, flag_shell_cut = 16;
+
+class CutawayRenderer {
+public:
+    /// Uploads the grid. Throws std::invalid_argument for an empty model or a size above the GL
+    /// limit, gl::GlError for GL failures.
+    CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale, int width,
+                    int height);
+
+    const ModelFrame& frame() const { return frame_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    /// Colours cells by `values` (one per Eclipse cell) mapped from `range`.
+    void set_colouring(const std::vector<float>& values, const ColourBarLabel& label);
+    /// Primary flags, one per Eclipse cell.
+    void set_primaries(const std::vector<std::uint8_t>& flags);
+    std::size_t primary_cell_count() const { return primary_cells_; }
+
+    /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until unfreeze().
+    void freeze(const Camera& camera) { frozen_camera_ = camera; frozen_valid_ = false; }
+    void unfreeze() { frozen_camera_.reset(); }
+    bool frozen() const { return frozen_camera_.has_value(); }
+
+    /// Renders one frame with the strategy named in settings.
+    FrameTimes render(const FrameSettings& settings, const Camera& camera);
+    /// The plain shaded frame of the whole model (every face, no cut, no post), timed.
+    gl::StageTime render_baseline(const Camera& camera);
+
+    gl::RgbaImage read_image() const;
+    IdImage read_ids() const;
+    /// Linear depth of the visible surface in the model camera (0 = background).
+    FloatImage read_scene_depth() const;
+    /// The cut surface used by the last frame: depth along the cut camera's axis (0 = no cut).
+    FloatImage read_cut_depth() const;
+
+private:
+    CutSurfaceStrategy& strategy(const std::string& name);
+    const CutTargets& active_cut(const FrameSettings& settings) const;
+
+    const gl::ShaderLibrary& shaders_;
+    int width_, height_;
+    ModelFrame frame_;
+    GridLayout layout_;
+    const grid::CornerPointGrid& grid_;
+    GridBuffers buffers_;
+    gl::Texture colour_map_;
+    ColourBarLabel label_;
+    std::size_t primary_cells_ = 0;
+    CutTargets cut_, filtered_cut_;
+    SceneTargets scene_;
+    PostTargets post_;
+    SecondaryPass secondary_;
+    PrimaryPass primary_;
+    MeanFilter mean_filter_;
+    Ssao ssao_;
+    Composite composite_;
+    ColourBar colour_bar_;
+    gl::VertexArray empty_vertex_array_;
+    std::vector<std::pair<std::string, std::unique_ptr<CutSurfaceStrategy>>> strategies_;
+    std::optional<Camera> frozen_camera_;
+    bool frozen_valid_ = false;
+    bool last_filtered_ = false;
+    gl::StageTimer timer_;
+};
+
+/// Largest image side the current context can render (GL_MAX_TEXTURE_SIZE, GL_MAX_VIEWPORT_DIMS).
+int max_image_side();
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,25 @@
+#include "cutaway/face_drawing.h"
+
+#include "gl/uniforms.h"
+
+namespace cutaway::pipeline {
+
+void prepare_face_program(const gl::Program& p, const FaceDrawContext& context) {
+    const Camera& camera = context.camera;
+    gl::set_uniform(p, "grid_size", context.grid.grid_size());
+    gl::set_uniform(p, "up_sign", float(context.grid.frame().up_sign));
+    gl::set_uniform(p, "z_scale", float(context.grid.frame().z_scale));
+    gl::set_uniform(p, "view_projection", camera.view_projection());
+    gl::set_uniform(p, "model_view", camera.view);
+    gl::set_uniform(p, "eye_position", camera.eye);
+    gl::set_uniform(p, "light_eye", camera.eye);
+    gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
+    gl::set_uniform(p, "value_range", context.value_range);
+    gl::set_uniform(p, "colour_map", 0);
+    context.colour_map.bind(0);
+    context.grid.bind_geometry();
+    glViewport(0, 0, camera.width, camera.height);
+    p.use();
+}
+
+}  // namespace cutaway::pipeline

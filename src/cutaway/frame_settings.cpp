@@ -1,0 +1,15 @@
+#include "cutaway/frame_settings.h"
+
+namespace cutaway::pipeline {
+
+const char* to_string(BorderMode mode) { return mode == BorderMode::raycast ? "raycast" : "threshold"; }
+const char* to_string(MeanFilterKernel kernel) { return kernel == MeanFilterKernel::full ? "full" : "sampled"; }
+const char* to_string(OnlyLayer only) {
+    switch (only) {
+        case OnlyLayer::primaries: return "primaries";
+        case OnlyLayer::secondaries: return "secondaries";
+        default: return "both";
+    }
+}
+
+}  // namespace cutaway::pipeline

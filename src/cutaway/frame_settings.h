@@ -1,0 +1,47 @@
+#pragma once
+// Every switch of one cutaway frame, with the paper's defaults (SPEC.md section 2). A run's
+// stats.json prints all of them (frame_settings_json).
+#include <string>
+
+namespace cutaway::pipeline {
+
+enum class BorderMode { raycast, threshold };
+enum class MeanFilterKernel { full, sampled };
+enum class OnlyLayer { both, primaries, secondaries };
+
+struct FrameSettings {
+    std::string strategy = "frustum";      ///< cut-surface strategy (cut_surface_registry.h)
+    float aperture_h_deg = 30;             ///< wall angle from the view ray, 0..90 (90: flat)
+    float aperture_v_deg = 30;
+    float back_margin = 0.002f;            ///< back-plane margin, fraction of the model radius
+    BorderMode border = BorderMode::raycast;
+    float border_width_px = 2;             ///< w, pixels
+    float line_width_px = 1;               ///< cell edge lines, pixels
+    int mean_filter = 9;                   ///< k x k, 0 or 1 = off
+    MeanFilterKernel mean_filter_kernel = MeanFilterKernel::full;
+    bool ssao = true;
+    int ssao_samples = 16;
+    float ssao_radius = 0.03f;             ///< fraction of the model radius
+    bool saturation = false;
+    float saturation_primary = 1.5f;
+    float saturation_secondary = 0.35f;
+    bool silhouette = false;
+    int silhouette_width_px = 3;
+    bool contours = true;                  ///< shell contour lines (stage 3)
+    bool hide_internal_lines = false;
+    OnlyLayer only = OnlyLayer::both;
+    bool cut_enabled = true;               ///< false: no cut at all (the uncut reference frame)
+    bool colour_bar = true;
+};
+
+/// aperture 180 degrees: both walls flat (the expert request "remove everything in front").
+inline void set_aperture_180(FrameSettings& settings) {
+    settings.aperture_h_deg = 90;
+    settings.aperture_v_deg = 90;
+}
+
+const char* to_string(BorderMode mode);
+const char* to_string(MeanFilterKernel kernel);
+const char* to_string(OnlyLayer only);
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,65 @@
+#include "cutaway/frame_targets.h"
+
+#include <array>
+
+namespace cutaway::pipeline {
+
+CutTargets::CutTargets(int width, int height)
+    : surface(GL_TEXTURE_2D, GL_RGBA32F, width, height),
+      position(GL_TEXTURE_2D, GL_RGBA32F, width, height),
+      depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
+    framebuffer.attach(GL_COLOR_ATTACHMENT0, surface);
+    framebuffer.attach(GL_COLOR_ATTACHMENT1, position);
+    framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+    const std::array<GLenum, 2> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    framebuffer.finish(buffers, "cut surface");
+}
+
+void CutTargets::clear() const {
+    const float zero[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, zero);
+}
+
+SceneTargets::SceneTargets(int width, int height)
+    : colour(GL_TEXTURE_2D, GL_RGBA8, width, height),
+      normal_depth(GL_TEXTURE_2D, GL_RGBA32F, width, height),
+      id(GL_TEXTURE_2D, GL_RG32UI, width, height),
+      depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height),
+      shell_depth(GL_TEXTURE_2D, GL_R32F, width, height),
+      shell_depth_buffer(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
+    framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
+    framebuffer.attach(GL_COLOR_ATTACHMENT1, normal_depth);
+    framebuffer.attach(GL_COLOR_ATTACHMENT2, id);
+    framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+    const std::array<GLenum, 3> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    framebuffer.finish(buffers, "scene");
+    shell_framebuffer.attach(GL_COLOR_ATTACHMENT0, shell_depth);
+    shell_framebuffer.attach(GL_DEPTH_ATTACHMENT, shell_depth_buffer);
+    const std::array<GLenum, 1> shell_buffers{GL_COLOR_ATTACHMENT0};
+    shell_framebuffer.finish(shell_buffers, "shell depth");
+}
+
+void SceneTargets::clear() const {
+    const float zero[4] = {0, 0, 0, 0};
+    const GLuint zero_id[4] = {0, 0, 0, 0};
+    const float far_depth = 1.0f;
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, zero);
+    glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 2, zero_id);
+    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
+    glClearNamedFramebufferfv(shell_framebuffer.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferfv(shell_framebuffer.id(), GL_DEPTH, 0, &far_depth);
+}
+
+PostTargets::PostTargets(int width, int height)
+    : ambient(GL_TEXTURE_2D, GL_R16F, width, height), final_colour(GL_TEXTURE_2D, GL_RGBA8, width, height) {
+    const std::array<GLenum, 1> buffers{GL_COLOR_ATTACHMENT0};
+    ambient_framebuffer.attach(GL_COLOR_ATTACHMENT0, ambient);
+    ambient_framebuffer.finish(buffers, "ambient occlusion");
+    final_framebuffer.attach(GL_COLOR_ATTACHMENT0, final_colour);
+    final_framebuffer.finish(buffers, "final image");
+}
+
+}  // namespace cutaway::pipeline

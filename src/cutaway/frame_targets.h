@@ -1,0 +1,42 @@
+#pragma once
+// Render targets of one frame size.
+#include "gl/gl_objects.h"
+
+namespace cutaway::pipeline {
+
+/// Stage 1 output: RGBA32F normal (world) + depth along the cut camera's axis, RGBA32F world
+/// position, and the depth buffer of the union (cleared to 0, GL_GREATER).
+struct CutTargets {
+    CutTargets(int width, int height);
+    gl::Texture surface;
+    gl::Texture position;
+    gl::Texture depth;
+    gl::Framebuffer framebuffer;
+    /// Clears to "nothing cut" (depth 0 everywhere).
+    void clear() const;
+};
+
+/// Stages 2 and 3: lit colour, eye-space normal + linear depth, cell id + flags, depth.
+struct SceneTargets {
+    SceneTargets(int width, int height);
+    gl::Texture colour;        ///< RGBA8
+    gl::Texture normal_depth;  ///< RGBA32F
+    gl::Texture id;            ///< RG32UI: compact cell + 1 (0 = background), flags
+    gl::Texture depth;         ///< DEPTH32F
+    gl::Framebuffer framebuffer;
+    gl::Texture shell_depth;   ///< R32F linear depth of the uncut shell (contours)
+    gl::Texture shell_depth_buffer;
+    gl::Framebuffer shell_framebuffer;
+    void clear() const;
+};
+
+/// Post-processing: ambient occlusion factor and the final RGBA8 image.
+struct PostTargets {
+    PostTargets(int width, int height);
+    gl::Texture ambient;   ///< R16F
+    gl::Framebuffer ambient_framebuffer;
+    gl::Texture final_colour;  ///< RGBA8
+    gl::Framebuffer final_framebuffer;
+};
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,116 @@
+#include "cutaway/grid_layout.h"
+
+#include <limits>
+#include <stdexcept>
+
+#include "grid/cell_geometry.h"
+
+namespace cutaway::pipeline {
+namespace {
+
+constexpr std::uint32_t no_cell = std::numeric_limits<std::uint32_t>::max();
+
+/// Eclipse index of the neighbour across `side`, or no_cell outside the grid.
+std::uint32_t neighbour(const grid::GridDims& dims, std::size_t cell, grid::FaceSide side) {
+    grid::CellIjk c = grid::cell_ijk(dims, cell);
+    switch (side) {
+        case grid::FaceSide::i_minus: --c.i; break;
+        case grid::FaceSide::i_plus: ++c.i; break;
+        case grid::FaceSide::j_minus: --c.j; break;
+        case grid::FaceSide::j_plus: ++c.j; break;
+        case grid::FaceSide::k_minus: --c.k; break;
+        case grid::FaceSide::k_plus: ++c.k; break;
+    }
+    return dims.contains(c.i, c.j, c.k) ? std::uint32_t(dims.cell_index(c.i, c.j, c.k)) : no_cell;
+}
+
+}  // namespace
+
+GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::FaceClassification& classes,
+                             const ModelFrame& frame) {
+    if (grid.active_count() > max_render_cells)
+        throw std::invalid_argument("model has " + std::to_string(grid.active_count()) +
+                                    " active cells; the renderer's face records hold at most " +
+                                    std::to_string(max_render_cells));
+    const grid::GridDims& dims = grid.dims();
+    GridLayout layout;
+    layout.pillars.reserve(8 * dims.pillar_count());
+    for (int pj = 0; pj <= dims.ny; ++pj)
+        for (int pi = 0; pi <= dims.nx; ++pi) {
+            const grid::Pillar p = grid.pillar(pi, pj);
+            for (const grid::Point3& end : {p.top, p.bottom}) {
+                layout.pillars.push_back(float(end.x - frame.centre.x));
+                layout.pillars.push_back(float(end.y - frame.centre.y));
+                layout.pillars.push_back(float(end.z - frame.centre.z));
+                layout.pillars.push_back(0.0f);
+            }
+        }
+    // The shader's corner orders give outward normals for cells with positive signed volume in
+    // model (x, y, z) space; render space flips z when up_sign < 0 (determinant sign up_sign).
+    const bool render_flips = frame.up_sign < 0;
+    layout.compact_of_cell.assign(grid.cell_count(), no_cell);
+    layout.cells.reserve(grid.active_count());
+    layout.corner_depths.reserve(8 * grid.active_count());
+    layout.face_classes.reserve(6 * grid.active_count());
+    for (std::size_t cell = 0; cell < grid.cell_count(); ++cell) {
+        if (!grid.active(cell)) continue;
+        const grid::CellIjk c = grid::cell_ijk(dims, cell);
+        const grid::CellCorners corners = grid::cell_corners(grid, c.i, c.j, c.k);
+        const bool negative = grid::signed_volume(corners) < 0;
+        layout.compact_of_cell[cell] = std::uint32_t(layout.cells.size());
+        layout.cells.push_back(std::uint32_t(cell) | ((negative != render_flips) ? 0x80000000u : 0u));
+        for (const grid::Point3& p : corners) layout.corner_depths.push_back(float(p.z - frame.centre.z));
+        for (int side = 0; side < 6; ++side) layout.face_classes.push_back(classes.at(cell, grid::FaceSide(side)));
+    }
+    return layout;
+}
+
+FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& layout,
+                           const std::vector<std::uint8_t>& primary_flags) {
+    if (primary_flags.size() != grid.cell_count())
+        throw std::invalid_argument("primary flags: " + std::to_string(primary_flags.size()) +
+                                    " entries, expected one per cell");
+    FaceLists lists;
+    for (std::uint32_t compact = 0; compact < layout.cells.size(); ++compact) {
+        const std::size_t cell = layout.cells[compact] & 0x7fffffffu;
+        const bool primary = primary_flags[cell] != 0;
+        if (primary) lists.primary_cells.push_back(compact);
+        for (int s = 0; s < 6; ++s) {
+            const auto side = grid::FaceSide(s);
+            const grid::FaceClass face_class = layout.face_classes[6 * compact + std::size_t(s)];
+            const std::uint32_t record = pack_face(compact, side, face_class);
+            if (!primary) {
+                lists.secondary.push_back(record);
+                continue;
+            }
+            // A face shared with another primary is hidden inside the primary cluster.
+            const std::uint32_t other = neighbour(grid.dims(), cell, side);
+            const bool shared = face_class == grid::FaceClass::interior && other != no_cell && primary_flags[other] != 0;
+            if (!shared) lists.primary.push_back(record);
+        }
+    }
+    return lists;
+}
+
+namespace {
+template <typename Keep>
+std::vector<std::uint32_t> faces_where(const GridLayout& layout, Keep keep) {
+    std::vector<std::uint32_t> faces;
+    for (std::uint32_t compact = 0; compact < layout.cells.size(); ++compact)
+        for (int s = 0; s < 6; ++s) {
+            const grid::FaceClass face_class = layout.face_classes[6 * compact + std::size_t(s)];
+            if (keep(face_class)) faces.push_back(pack_face(compact, grid::FaceSide(s), face_class));
+        }
+    return faces;
+}
+}  // namespace
+
+std::vector<std::uint32_t> shell_faces(const GridLayout& layout) {
+    return faces_where(layout, [](grid::FaceClass c) { return c == grid::FaceClass::shell; });
+}
+
+std::vector<std::uint32_t> all_faces(const GridLayout& layout) {
+    return faces_where(layout, [](grid::FaceClass) { return true; });
+}
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,56 @@
+#pragma once
+// The grid as the GPU reads it, built on the CPU without expanding to triangles: pillars, the 8
+// corner depths of each active cell, one 32-bit record per active cell and one per face. The
+// vertex shader rebuilds corner positions from pillars and depths (shaders/common/grid.glsl).
+#include <cstdint>
+#include <vector>
+
+#include "cutaway/model_frame.h"
+#include "grid/face_classification.h"
+
+namespace cutaway::pipeline {
+
+/// Face record: bits 0-25 compact (active) cell index, 26-28 FaceSide, 29-30 FaceClass.
+inline constexpr std::uint32_t face_cell_bits = 26;
+inline constexpr std::size_t max_render_cells = std::size_t(1) << face_cell_bits;
+
+inline std::uint32_t pack_face(std::uint32_t compact_cell, grid::FaceSide side, grid::FaceClass face_class) {
+    return compact_cell | (std::uint32_t(side) << 26) | (std::uint32_t(face_class) << 29);
+}
+
+struct GridLayout {
+    /// 2 x vec4 per pillar (top xyz, 0; bottom xyz, 0), centred model units (not flipped).
+    std::vector<float> pillars;
+    /// 8 per active cell, ZCORN order (corner bits: 1 = i+1, 2 = j+1, 4 = bottom), centred depth.
+    std::vector<float> corner_depths;
+    /// Per active cell: Eclipse cell index (bits 0-30) and bit 31 set when the face corner order
+    /// of shaders/common/grid.glsl gives inward normals in render space for this cell.
+    std::vector<std::uint32_t> cells;
+    /// Active cell index -> compact index (or UINT32_MAX for inactive cells).
+    std::vector<std::uint32_t> compact_of_cell;
+    /// Classification of the six faces of every active cell, cell-major by compact index.
+    std::vector<grid::FaceClass> face_classes;
+};
+
+/// Throws std::invalid_argument if the model has more than max_render_cells active cells.
+GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::FaceClassification& classes,
+                             const ModelFrame& frame);
+
+/// Face records for one primary selection.
+struct FaceLists {
+    std::vector<std::uint32_t> secondary;  ///< all six faces of every secondary cell
+    std::vector<std::uint32_t> primary;    ///< faces of primary cells not shared with another primary
+    std::vector<std::uint32_t> primary_cells;  ///< compact indices of the primary cells
+};
+
+/// `primary_flags`: one per Eclipse cell (grid::select_primaries).
+FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& layout,
+                           const std::vector<std::uint8_t>& primary_flags);
+
+/// Shell faces of the whole model (for the contour pass), independent of the selection.
+std::vector<std::uint32_t> shell_faces(const GridLayout& layout);
+
+/// Every face of every active cell (the baseline frame).
+std::vector<std::uint32_t> all_faces(const GridLayout& layout);
+
+}  // namespace cutaway::pipeline

@@ -1,0 +1,20 @@
+#pragma once
+// Screen-space ambient occlusion from the scene's normals and depths.
+#include "cutaway/camera.h"
+#include "cutaway/frame_settings.h"
+#include "cutaway/frame_targets.h"
+#include "gl/program_cache.h"
+
+namespace cutaway::pipeline {
+
+class Ssao {
+public:
+    explicit Ssao(const gl::ShaderLibrary& shaders);
+    /// Writes post.ambient; `radius` in render units.
+    void apply(const SceneTargets& scene, const PostTargets& post, const Camera& camera, int samples, float radius);
+
+private:
+    gl::ProgramCache programs_;
+};
+
+}  // namespace cutaway::pipeline

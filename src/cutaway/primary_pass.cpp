@@ -1,0 +1,26 @@
+#include "cutaway/primary_pass.h"
+
+#include "gl/uniforms.h"
+
+namespace cutaway::pipeline {
+
+PrimaryPass::PrimaryPass(const gl::ShaderLibrary& shaders)
+    : primaries_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "primary/primary.frag"}},
+                               {{"CULL_BACK", ""}})),
+      shell_depth_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "primary/shell_depth.frag"}},
+                                 {{"CULL_BACK", ""}})) {}
+
+void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings) {
+    prepare_face_program(primaries_, context);
+    gl::set_uniform(primaries_, "line_width", settings.line_width_px);
+    gl::set_uniform(primaries_, "primary_edge_colour", glm::vec3(0.85f, 0.85f, 0.85f));
+    GridBuffers::draw_faces(faces);
+}
+
+void PrimaryPass::draw_shell_depth(const FaceDrawContext& context, const SceneTargets& scene) {
+    scene.shell_framebuffer.bind();
+    prepare_face_program(shell_depth_, context);
+    GridBuffers::draw_faces(context.grid.shell_faces());
+}
+
+}  // namespace cutaway::pipeline

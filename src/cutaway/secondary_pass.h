@@ -1,0 +1,21 @@
+#pragma once
+// Stage 2: secondary cells clipped by the cut surface, filled, with wireframe and border lines.
+#include "cutaway/face_drawing.h"
+#include "cutaway/frame_settings.h"
+#include "cutaway/frame_targets.h"
+#include "gl/program_cache.h"
+
+namespace cutaway::pipeline {
+
+class SecondaryPass {
+public:
+    explicit SecondaryPass(const gl::ShaderLibrary& shaders);
+    /// Draws `faces` into the bound scene framebuffer, clipped by `cut` seen from `cut_camera`.
+    void draw(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings,
+              const CutTargets& cut, const Camera& cut_camera);
+
+private:
+    gl::ProgramCache programs_;
+};
+
+}  // namespace cutaway::pipeline

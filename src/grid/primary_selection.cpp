@@ -1,0 +1,79 @@
+#include "grid/primary_selection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace cutaway::grid {
+namespace {
+
+void require_values(const CornerPointGrid& grid, const std::vector<float>& values, const std::string& name) {
+    if (values.size() != grid.cell_count())
+        throw std::invalid_argument("property " + name + ": " + std::to_string(values.size()) +
+                                    " values, expected one per cell (" + std::to_string(grid.cell_count()) + ")");
+}
+
+[[noreturn]] void throw_nan(const CornerPointGrid& grid, const std::string& name, std::size_t cell) {
+    const CellIjk c = cell_ijk(grid.dims(), cell);
+    throw std::invalid_argument("property " + name + ": NaN in active cell (i,j,k) = (" + std::to_string(c.i) + "," +
+                                std::to_string(c.j) + "," + std::to_string(c.k) + "), expected a number");
+}
+
+/// Active cells' values, checked for NaN.
+std::vector<float> active_values(const CornerPointGrid& grid, const std::vector<float>& values, const std::string& name) {
+    require_values(grid, values, name);
+    std::vector<float> out;
+    out.reserve(grid.active_count());
+    for (std::size_t cell = 0; cell < values.size(); ++cell) {
+        if (!grid.active(cell)) continue;
+        if (std::isnan(values[cell])) throw_nan(grid, name, cell);
+        out.push_back(values[cell]);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> select_primaries(const CornerPointGrid& grid, const std::vector<float>& values,
+                                           const std::string& property_name, const PrimaryRange& range,
+                                           const std::optional<IjkBox>& box) {
+    require_values(grid, values, property_name);
+    std::vector<std::uint8_t> flags(grid.cell_count(), 0);
+    for (std::size_t cell = 0; cell < values.size(); ++cell) {
+        if (!grid.active(cell)) continue;
+        const float v = values[cell];
+        if (std::isnan(v)) throw_nan(grid, property_name, cell);
+        if (v < range.min || v > range.max) continue;
+        if (box && !box->contains(cell_ijk(grid.dims(), cell))) continue;
+        flags[cell] = 1;
+    }
+    return flags;
+}
+
+PrimaryRange range_for_fraction(const CornerPointGrid& grid, const std::vector<float>& values,
+                                const std::string& property_name, double fraction) {
+    if (!(fraction > 0 && fraction <= 1))
+        throw std::invalid_argument("primary fraction " + std::to_string(fraction) + ": expected a value in (0, 1]");
+    std::vector<float> active = active_values(grid, values, property_name);
+    if (active.empty()) throw std::invalid_argument("property " + property_name + ": the grid has no active cell");
+    const auto wanted = std::max<std::size_t>(1, std::size_t(std::llround(fraction * double(active.size()))));
+    const auto nth = active.begin() + std::ptrdiff_t(active.size() - wanted);
+    std::nth_element(active.begin(), nth, active.end());
+    const float top = *std::max_element(nth, active.end());
+    return {*nth, top};
+}
+
+PrimaryRange active_value_range(const CornerPointGrid& grid, const std::vector<float>& values,
+                                const std::string& property_name) {
+    const std::vector<float> active = active_values(grid, values, property_name);
+    if (active.empty()) return {0, 0};
+    const auto [lo, hi] = std::minmax_element(active.begin(), active.end());
+    return {*lo, *hi};
+}
+
+std::size_t count_primaries(const std::vector<std::uint8_t>& flags) {
+    return std::size_t(std::count(flags.begin(), flags.end(), std::uint8_t(1)));
+}
+
+}  // namespace cutaway::grid

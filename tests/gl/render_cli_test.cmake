@@ -1,0 +1,50 @@
+# `cutaway render` as a user runs it: a frame with stats.json holding the DESIGN.md keys, and a
+# clear message with the documented exit code for each kind of bad input.
+file(MAKE_DIRECTORY ${OUT})
+set(REEK ${DATA}/grdecl/reek/reek_sim_grid.grdecl ${DATA}/grdecl/reek/reek_sim_poro.grdecl)
+
+execute_process(COMMAND ${CUTAWAY} render ${REEK} --size 320 240 --repeat 1 --baseline
+                        --out ${OUT}/reek.png --stats ${OUT}/reek.json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/reek.png)
+  message(FATAL_ERROR "render failed (${rc}): ${err}")
+endif()
+file(READ ${OUT}/reek.json stats)
+foreach(stage cut_surface secondary primary ssao mean_filter total)
+  string(JSON ms GET "${stats}" stages_ms ${stage})
+  if(NOT ms GREATER 0)
+    message(FATAL_ERROR "stages_ms.${stage} = ${ms}")
+  endif()
+endforeach()
+foreach(key gl_query_ms gl_query_valid gl_renderer lp_num_threads size cells primary_cells primary_exposure
+            context_kept border_line_width baseline_ms git_revision configuration)
+  string(JSON value ERROR_VARIABLE missing GET "${stats}" ${key})
+  if(missing)
+    message(FATAL_ERROR "stats.json has no ${key}")
+  endif()
+endforeach()
+string(JSON primaries GET "${stats}" primary_cells)
+if(NOT primaries EQUAL 358)  # 1% of 35,838 active cells, rounded
+  message(FATAL_ERROR "primary_cells ${primaries}, expected 358")
+endif()
+
+function(expect_failure name code pattern)
+  execute_process(COMMAND ${CUTAWAY} render ${ARGN} --out ${OUT}/${name}.png RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL ${code} OR NOT err MATCHES "${pattern}")
+    message(FATAL_ERROR "${name}: exit ${rc} (expected ${code}), message '${err}'")
+  endif()
+endfunction()
+
+expect_failure(unknown_property 2 "--property SATURATION: not in the model \\(static: PORO" ${REEK} --property SATURATION)
+expect_failure(huge_image 2 "image width 100000: expected 1\\.\\.[0-9]+" ${REEK} --size 100000 100)
+expect_failure(bad_border 2 "--border 'wide': expected raycast\\|threshold" ${REEK} --border wide)
+expect_failure(no_device 4 "OpenGL: EGL platform 'device': no hardware EGL device" ${REEK} --egl-platform device)
+file(WRITE ${OUT}/nan.grdecl "SPECGRID\n 1 1 1 1 F /\nCOORD\n 0 0 0 0 0 1  1 0 0 1 0 1  0 1 0 0 1 1  1 1 0 1 1 1 /\nZCORN\n 4*0 4*1 /\nPORO\n nan /\n")
+expect_failure(nan_property 2 "property PORO: NaN in active cell \\(i,j,k\\) = \\(0,0,0\\)" ${OUT}/nan.grdecl)
+
+# An empty primary set still renders the context, and says so.
+execute_process(COMMAND ${CUTAWAY} render ${REEK} --range 5 6 --size 160 120 --repeat 1 --no-metrics --out ${OUT}/empty.png
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT err MATCHES "no cell of PORO lies in the primary range" OR NOT EXISTS ${OUT}/empty.png)
+  message(FATAL_ERROR "empty selection: exit ${rc}, message '${err}'")
+endif()
