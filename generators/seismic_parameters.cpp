@@ -43,8 +43,10 @@ SeismicParameters find_seismic_preset(const std::string& name) {
 }
 
 void validate(const SeismicParameters& p, std::uint64_t memory_limit_bytes) {
-    require(p.inlines > 0 && p.crosslines > 0 && p.samples > 1, "dims", "inlines, crosslines > 0 and samples > 1",
-            double(p.inlines) * p.crosslines * p.samples);
+    if (!(p.inlines > 0 && p.crosslines > 0 && p.samples > 1))
+        throw std::invalid_argument("seismic generator: dims " + std::to_string(p.inlines) + "x" +
+                                    std::to_string(p.crosslines) + "x" + std::to_string(p.samples) +
+                                    ", expected inlines, crosslines > 0 and samples > 1");
     require(p.samples <= 32767, "samples", "at most 32767 (SEG-Y binary header field is 16-bit)", p.samples);
     require(p.sample_interval_us > 0 && p.sample_interval_us <= 32767, "sample_interval_us", "1..32767 microseconds",
             p.sample_interval_us);

@@ -68,10 +68,12 @@ def main():
                      "configuration": last_stats["configuration"]},
         "context": vx.machine_context(last_stats), "eyes": eyes, "summary": summary, "paper": PAPER})
 
+    renderer = (last_stats["gl_renderer"] or "GPU").split(" (")[0]
     fig, ax = plt.subplots(figsize=(7, 4))
     for caster, marker in (("gpu", "o"), ("cpu", "s")):
         ax.plot(azimuths, [e[caster]["trimmed_mean_ms"] for e in eyes], marker=marker,
-                label=f"{caster.upper()} caster (this machine, mean {summary[caster]['mean_ms']:.1f} ms)")
+                label=f"{caster.upper()} caster ({renderer if caster == 'gpu' else 'C++ threads'}, "
+                      f"mean {summary[caster]['mean_ms']:.1f} ms)")
         ax.axhline(PAPER[f"{caster}_ms"]["mean"], linestyle="--", color="grey", linewidth=0.8)
     ax.set_yscale("log")
     ax.set_xlabel("eye azimuth (degrees, elevation 25)")

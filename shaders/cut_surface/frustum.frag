@@ -1,7 +1,5 @@
 #version 450 core
-// Stage 1, frustum union: the depth test (cleared to 0, GL_GREATER) keeps the rear hull.
-#include "cut_surface/cut_output.glsl"
-
-in float cut_depth;
-
-void main() { write_cut(cut_depth); }
+// Stage 1, frustum union: depth only. The depth test (cleared to 0, GL_GREATER) keeps the rear
+// hull; normals and positions are rebuilt once per pixel afterwards (cut_surface/resolve.frag),
+// so the many overlapping frustum fragments cost a depth test each and nothing more.
+void main() {}

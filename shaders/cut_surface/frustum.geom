@@ -3,8 +3,8 @@
 // pushed back by the margin, widened by one pixel so pixel-centre coverage never misses) stays;
 // the four walls open towards the camera at the horizontal and vertical aperture angles, up to
 // the rim depth (nearest depth of the model: nothing in front of it can be cut). Vertices are
-// emitted with w = 1 and z linear in s, so depth interpolates linearly in screen space in both
-// the depth test and the stored depth.
+// emitted with w = 1 and z linear in s, so the stored depth is (s - near) / (far - near) and
+// interpolates linearly in screen space: the contract of every strategy (cut_surface_strategy.h).
 layout(points) in;
 layout(triangle_strip, max_vertices = 20) out;
 
@@ -21,10 +21,7 @@ uniform float back_margin;       // depth units added behind the box
 uniform vec2 aperture_tangent;   // tan(horizontal), tan(vertical) aperture
 uniform float pixel_uv;          // one pixel in u, v units (1 / focal length in pixels)
 
-out float cut_depth;
-
 void emit(vec2 uv, float s) {
-    cut_depth = s;
     gl_Position = vec4(uv * projection_scale, 2.0 * (s - near_plane) / (far_plane - near_plane) - 1.0, 1.0);
     EmitVertex();
 }

@@ -61,6 +61,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       secondary_(shaders),
       primary_(shaders),
       mean_filter_(shaders),
+      cut_resolve_(shaders),
       ssao_(shaders),
       composite_(shaders),
       colour_bar_(shaders) {
@@ -107,6 +108,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
     const bool cut_drawn = cut_needed && s.cut_enabled;
     const bool keep_frozen_cut = frozen_camera_ && frozen_valid_;
     if (!keep_frozen_cut) {
+        last_filtered_ = cut_drawn && s.mean_filter >= 3;
         gl::timed_stage(timer_, "cut_surface", [&] {
             cut_.clear();
             if (!cut_drawn) return;
@@ -117,11 +119,12 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
                                           s.back_margin * radius,
                                           std::max(centre_depth - radius, cut_camera.near_plane)};
             strategy(s.strategy).render(inputs, cut_);
+            if (!last_filtered_) cut_resolve_.apply(cut_, cut_camera);
         });
-        last_filtered_ = cut_drawn && s.mean_filter >= 3;
         if (last_filtered_)
             gl::timed_stage(timer_, "mean_filter", [&] {
                 mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera);
+                cut_resolve_.apply(filtered_cut_, cut_camera);
             });
         frozen_valid_ = frozen_camera_.has_value();
     }

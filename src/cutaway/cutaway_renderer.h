@@ -8,6 +8,7 @@
 
 #include "cutaway/camera.h"
 #include "cutaway/colour_bar.h"
+#include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
@@ -101,6 +102,7 @@ private:
     SecondaryPass secondary_;
     PrimaryPass primary_;
     MeanFilter mean_filter_;
+    CutResolve cut_resolve_;
     Ssao ssao_;
     Composite composite_;
     ColourBar colour_bar_;

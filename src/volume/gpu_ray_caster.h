@@ -15,7 +15,8 @@ namespace cutaway::volume {
 
 class GpuRayCaster {
 public:
-    /// Uploads the scene's volume (R8 3D texture, trilinear), table and block occupancy.
+    /// Uploads the scene's volume (R8 3D texture, trilinear), table and block occupancy. `scene`
+    /// (and the one given to set_transfer) must outlive the caster; so must `shaders`.
     GpuRayCaster(const gl::ShaderLibrary& shaders, const VolumeScene& scene);
 
     /// Replaces the table and occupancy (same volume, same block size).

@@ -24,16 +24,19 @@ constexpr double kMinPsnrDb = 40;
 
 class VolumeGlCaster : public ::testing::Test {
 protected:
-    static void SetUpTestSuite() {
+    // Built by the first test that runs (an exception there fails that test; a failure in
+    // SetUpTestSuite would only mark the tests skipped) and kept for the rest of the suite.
+    void SetUp() override {
+        if (volume_) return;
         context_ = gl::create_context(gl::ContextOptions{}).release();
-        scratch_ = new ScratchDir("volume-gl");
-        const VolumeCube cube = write_and_load(*scratch_, "synthetic.sgy", synthetic_volume(40, 36, 64));
-        volume_ = new QuantisedVolume(quantise(cube));
+        const ScratchDir scratch = unique_scratch("volume-gl");
+        volume_ = new QuantisedVolume(quantise(write_and_load(scratch, "synthetic.sgy", synthetic_volume(40, 36, 64))));
     }
     static void TearDownTestSuite() {
         delete volume_;
-        delete scratch_;
         delete context_;
+        volume_ = nullptr;
+        context_ = nullptr;
     }
 
     static RayCastSettings small_frame() {
@@ -56,7 +59,6 @@ protected:
     }
 
     static inline gl::GlContext* context_ = nullptr;
-    static inline ScratchDir* scratch_ = nullptr;
     static inline QuantisedVolume* volume_ = nullptr;
 };
 

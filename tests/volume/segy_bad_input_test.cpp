@@ -48,42 +48,42 @@ TEST(SegyBadInput, MissingFile) {
 }
 
 TEST(SegyBadInput, EmptyFileIsShorterThanTheHeaders) {
-    const ScratchDir dir("segy-empty");
+    const ScratchDir dir = unique_scratch("segy-empty");
     expect_mentions(load_error(dir.write("empty.sgy", "")), {"empty.sgy", "not a SEG-Y file", "0 bytes", "3600"});
 }
 
 TEST(SegyBadInput, TextFileIsNotSegy) {
-    const ScratchDir dir("segy-text");
+    const ScratchDir dir = unique_scratch("segy-text");
     const auto path = dir.write("notes.sgy", std::string(5000, 'a'));
     expect_mentions(load_error(path), {"notes.sgy", "not a SEG-Y file", "'format' (bytes 3225-3226)"});
 }
 
 TEST(SegyBadInput, UnsupportedFormatCodeIsNamed) {
-    const ScratchDir dir("segy-format4");
+    const ScratchDir dir = unique_scratch("segy-format4");
     const auto path = edited_cube(dir, "format4.sgy", [](std::string& b) { b[3225] = 4; });
     expect_mentions(load_error(path), {"format4.sgy", "fixed point with gain (4)", "not supported"});
 }
 
 TEST(SegyBadInput, ZeroSamplesPerTrace) {
-    const ScratchDir dir("segy-zero-samples");
+    const ScratchDir dir = unique_scratch("segy-zero-samples");
     const auto path = edited_cube(dir, "zero.sgy", [](std::string& b) { b[3220] = b[3221] = 0; });
     expect_mentions(load_error(path), {"zero.sgy", "'samples' (bytes 3221-3222) is 0"});
 }
 
 TEST(SegyBadInput, TruncatedLastTrace) {
-    const ScratchDir dir("segy-truncated");
+    const ScratchDir dir = unique_scratch("segy-truncated");
     const auto path = edited_cube(dir, "cut.sgy", [](std::string& b) { b.resize(b.size() - 10); });
     expect_mentions(load_error(path), {"cut.sgy", "truncated", "304-byte trace"});
 }
 
 TEST(SegyBadInput, ExtendedHeadersBeyondTheEnd) {
-    const ScratchDir dir("segy-ext-headers");
+    const ScratchDir dir = unique_scratch("segy-ext-headers");
     const auto path = edited_cube(dir, "ext.sgy", [](std::string& b) { b[3504] = 0x7f; });
     expect_mentions(load_error(path), {"ext.sgy", "'ext_headers'"});
 }
 
 TEST(SegyBadInput, CubeOverTheMemoryLimitIsRefusedBeforeAllocating) {
-    const ScratchDir dir("segy-memory");
+    const ScratchDir dir = unique_scratch("segy-memory");
     const auto path = edited_cube(dir, "cube.sgy", [](std::string&) {});
     volume::SegyReadOptions options;
     options.memory_limit_bytes = 500;  // the 3x3x16 cube's samples need 576 bytes as floats
@@ -91,7 +91,7 @@ TEST(SegyBadInput, CubeOverTheMemoryLimitIsRefusedBeforeAllocating) {
 }
 
 TEST(SegyBadInput, TracesWithoutLineNumbers) {
-    const ScratchDir dir("segy-no-numbers");
+    const ScratchDir dir = unique_scratch("segy-no-numbers");
     volume::SegyReadOptions options;
     options.inline_byte = 1 + 200;  // an unassigned (zero) trace header field
     options.crossline_byte = 205;

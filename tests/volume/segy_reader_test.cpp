@@ -93,7 +93,7 @@ TEST(SegyReader, RefusesTruncatedBroken) {
 }
 
 TEST(SegyReader, EveryFormatAndByteOrderRoundTrips) {
-    const ScratchDir dir("segy-formats");
+    const ScratchDir dir = unique_scratch("segy-formats");
     const generators::SeismicVolume volume = synthetic_volume(4, 5, 30);
     float peak = 0;
     for (float a : volume.amplitudes) peak = std::max(peak, std::abs(a));
@@ -122,7 +122,7 @@ TEST(SegyReader, EveryFormatAndByteOrderRoundTrips) {
 }
 
 TEST(SegyReader, CrosslineSortedReadsAsTheSameCube) {
-    const ScratchDir dir("segy-sorting");
+    const ScratchDir dir = unique_scratch("segy-sorting");
     const generators::SeismicVolume volume = synthetic_volume(4, 6, 20);
     generators::SegyWriteOptions crossline;
     crossline.crossline_sorted = true;
@@ -134,7 +134,7 @@ TEST(SegyReader, CrosslineSortedReadsAsTheSameCube) {
 }
 
 TEST(SegyReader, IrregularSurveyFillsMissingTracesWithTheNullValue) {
-    const ScratchDir dir("segy-irregular");
+    const ScratchDir dir = unique_scratch("segy-irregular");
     const generators::SeismicVolume volume = synthetic_volume(5, 4, 10);
     generators::SegyWriteOptions options;
     options.missing_traces = {{1, 2}, {3, 0}};
@@ -155,7 +155,7 @@ TEST(SegyReader, IrregularSurveyFillsMissingTracesWithTheNullValue) {
 }
 
 TEST(SegyReader, RefusesWrittenPreStack) {
-    const ScratchDir dir("segy-prestack");
+    const ScratchDir dir = unique_scratch("segy-prestack");
     generators::SegyWriteOptions options;
     options.offsets = 3;
     const std::string message =

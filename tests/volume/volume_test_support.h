@@ -1,6 +1,9 @@
 #pragma once
 // Shared helpers of the volume tests: the shared SEG-Y files, and small synthetic cubes written
 // through the generator's SEG-Y writer and read back through the reader under test.
+#include <unistd.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -10,6 +13,10 @@
 #include "volume/segy_reader.h"
 
 namespace cutaway::test {
+
+/// A scratch folder whose name carries the process id: ctest -j runs each test in its own process,
+/// and suites with the same folder name must not remove each other's files.
+inline ScratchDir unique_scratch(const std::string& name) { return ScratchDir(name + "-" + std::to_string(::getpid())); }
 
 inline std::filesystem::path segy_file(const std::string& name) { return shared_data() / "segy" / name; }
 

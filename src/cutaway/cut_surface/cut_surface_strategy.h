@@ -26,7 +26,9 @@ struct CutSurfaceInputs {
 class CutSurfaceStrategy {
 public:
     virtual ~CutSurfaceStrategy() = default;
-    /// Renders into `targets`, which the caller cleared to "nothing cut".
+    /// Writes the cut's depth image into targets.depth, which the caller cleared to 0 ("nothing
+    /// cut"): (s - near) / (far - near) of the cut camera, s the depth along its view axis.
+    /// The pipeline then rebuilds normals and positions (cut_resolve.h).
     virtual void render(const CutSurfaceInputs& inputs, const CutTargets& targets) = 0;
 };
 

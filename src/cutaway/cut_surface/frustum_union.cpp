@@ -1,7 +1,7 @@
 // Frustum union (Carvalho et al.): runs on the GPU. Each primary cell is one point; the vertex
 // shader builds its box in the cut camera's perspective-divided space, the geometry shader emits
 // the back face and the four walls, and the depth test (cleared to 0, GL_GREATER) keeps the rear
-// hull of the union. Cost: geometry is tiny, fill grows with primaries x wall area.
+// hull of the union (depth only). Cost: geometry is tiny, fill grows with primaries x wall area.
 #include "cutaway/cut_surface/frustum_union.h"
 
 #include <cmath>
@@ -27,11 +27,9 @@ public:
         gl::set_uniform(p, "up_sign", float(in.grid.frame().up_sign));
         gl::set_uniform(p, "z_scale", float(in.grid.frame().z_scale));
         gl::set_uniform(p, "cut_view", camera.view);
-        gl::set_uniform(p, "inverse_cut_view", glm::inverse(camera.view));
         gl::set_uniform(p, "near_plane", camera.near_plane);
         gl::set_uniform(p, "far_plane", camera.far_plane);
         gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
-        gl::set_uniform(p, "cut_size", glm::vec2(float(camera.width), float(camera.height)));
         gl::set_uniform(p, "rim_depth", in.rim_depth);
         gl::set_uniform(p, "back_margin", in.back_margin);
         gl::set_uniform(p, "pixel_uv", 1.0f / camera.focal_px());

@@ -10,7 +10,7 @@ namespace cutaway::pipeline {
 class MeanFilter {
 public:
     explicit MeanFilter(const gl::ShaderLibrary& shaders);
-    /// Filters `input` into `output` (same size) with an odd kernel `size` >= 3.
+    /// Filters input.depth into output.depth (same size) with an odd kernel `size` >= 3.
     void apply(const CutTargets& input, const CutTargets& output, int size, MeanFilterKernel kernel,
                const Camera& cut_camera);
 

@@ -1,0 +1,23 @@
+#pragma once
+// Turns a strategy's depth image into the cut-surface targets stage 2 reads: world normal +
+// depth (RGBA32F) and world position (RGBA32F), one full-screen pass.
+#include "cutaway/camera.h"
+#include "cutaway/frame_targets.h"
+#include "gl/shader_library.h"
+
+namespace cutaway::pipeline {
+
+class CutResolve {
+public:
+    explicit CutResolve(const gl::ShaderLibrary& shaders);
+    /// Reads targets.depth, writes targets.surface and targets.position.
+    void apply(const CutTargets& targets, const Camera& cut_camera);
+
+private:
+    gl::Program program_;
+};
+
+/// Sets the cut camera uniforms of shaders/cut_surface/cut_output.glsl on `program`.
+void set_cut_output_uniforms(const gl::Program& program, const Camera& cut_camera);
+
+}  // namespace cutaway::pipeline
