@@ -12,15 +12,19 @@ struct CutSample {
     float cut_depth;        // the cut surface's depth at that pixel (0: no cut)
 };
 
-CutSample cut_at(vec3 world) {
-    vec4 eye = cut_view * vec4(world, 1.0);
-    vec4 clip = cut_projection * eye;
+// From the point's clip position and depth in the cut camera (interpolated per fragment).
+CutSample cut_from_clip(vec4 clip, float eye_depth) {
     CutSample s;
-    s.fragment_depth = -eye.z;
+    s.fragment_depth = eye_depth;
     s.texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * cut_size));
     bool inside = clip.w > 0.0 && all(greaterThanEqual(s.texel, ivec2(0))) && all(lessThan(s.texel, ivec2(cut_size)));
     s.cut_depth = inside ? texelFetch(cut_surface, s.texel, 0).a : 0.0;
     return s;
+}
+
+CutSample cut_at(vec3 world) {
+    vec4 eye = cut_view * vec4(world, 1.0);
+    return cut_from_clip(cut_projection * eye, -eye.z);
 }
 
 vec3 cut_normal_at(ivec2 texel) { return texelFetch(cut_surface, texel, 0).rgb; }

@@ -11,6 +11,8 @@ layout(std430, binding = 3) readonly buffer Faces { uint faces[]; };
 uniform mat4 view_projection;
 uniform vec3 eye_position;  // render space
 uniform vec2 viewport_size; // pixels
+uniform mat4 cut_view;             // the cut camera (stage 2 clips against its image)
+uniform mat4 cut_view_projection;
 
 out FaceVaryings {
 #include "common/face_varyings.glsl"
@@ -51,6 +53,8 @@ void main() {
         v_out.compact_cell = 0u;
         v_out.face_info = 0u;
         v_out.edge_distance = vec4(1e6);
+        v_out.cut_clip = vec4(0.0, 0.0, 0.0, 1.0);
+        v_out.cut_eye_depth = 0.0;
         return;
     }
     vec4 clip[4];
@@ -72,4 +76,6 @@ void main() {
     v_out.compact_cell = cell;
     v_out.face_info = face_class | (back_facing ? 4u : 0u);
     v_out.edge_distance = distances;
+    v_out.cut_clip = cut_view_projection * vec4(q[me], 1.0);
+    v_out.cut_eye_depth = -(cut_view * vec4(q[me], 1.0)).z;
 }

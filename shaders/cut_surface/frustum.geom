@@ -5,6 +5,8 @@
 // the rim depth (nearest depth of the model: nothing in front of it can be cut). Vertices are
 // emitted with w = 1 and z linear in s, so the stored depth is (s - near) / (far - near) and
 // interpolates linearly in screen space: the contract of every strategy (cut_surface_strategy.h).
+// With BACK_FACE_ONLY defined only the back face is emitted: the cone-field strategies' seeds
+// (cut_surface/cut_seeds.h), the primaries' rear hull from their cell boxes.
 layout(points) in;
 layout(triangle_strip, max_vertices = 20) out;
 
@@ -39,6 +41,7 @@ void main() {
     // back face
     emit(vec2(lo.x, lo.y), back); emit(vec2(hi.x, lo.y), back); emit(vec2(lo.x, hi.y), back); emit(vec2(hi.x, hi.y), back);
     EndPrimitive();
+#ifndef BACK_FACE_ONLY
     // walls: left, right, bottom, top
     emit(vec2(lo.x, lo.y), back); emit(vec2(lo.x, hi.y), back); emit(vec2(rim_lo.x, rim_lo.y), rim); emit(vec2(rim_lo.x, rim_hi.y), rim);
     EndPrimitive();
@@ -48,4 +51,5 @@ void main() {
     EndPrimitive();
     emit(vec2(lo.x, hi.y), back); emit(vec2(hi.x, hi.y), back); emit(vec2(rim_lo.x, rim_hi.y), rim); emit(vec2(rim_hi.x, rim_hi.y), rim);
     EndPrimitive();
+#endif
 }

@@ -1,9 +1,10 @@
 #version 450 core
-// Mean filter of the cut surface's depth image over a KERNEL x KERNEL window, removing the
-// staircase between frustums. SAMPLED fetches every other texel in each direction (about a
-// quarter of the texels) instead of all of them. Writes the filtered depth (same encoding);
-// normals and positions are then rebuilt from it (cut_surface/resolve.frag).
-uniform sampler2D cut_depth;
+// Mean filter of the cut surface's depth image, one axis per pass (AXIS 0: x, 1: y): two passes
+// of KERNEL taps give exactly the KERNEL x KERNEL mean with 2k instead of k^2 fetches. SAMPLED
+// fetches every other texel along the axis (the sampled kernel: a quarter of the texels of the
+// full window). The second pass writes the filtered depth (same encoding); normals and
+// positions are then rebuilt from it (cut_surface/resolve.frag).
+uniform sampler2D cut_depth;  // pass 0: the cut's depth; pass 1: the first pass's output
 uniform vec2 cut_size;
 
 #ifdef SAMPLED
@@ -12,16 +13,24 @@ const int stride = 2;
 const int stride = 1;
 #endif
 const int radius = KERNEL / 2;
+const ivec2 axis = AXIS == 0 ? ivec2(1, 0) : ivec2(0, 1);
+
+#if AXIS == 0
+layout(location = 0) out float out_depth;
+#endif
 
 void main() {
     ivec2 centre = ivec2(gl_FragCoord.xy);
     ivec2 last = ivec2(cut_size) - 1;
     float sum = 0.0;
     float count = 0.0;
-    for (int dy = -radius; dy <= radius; dy += stride)
-        for (int dx = -radius; dx <= radius; dx += stride) {
-            sum += texelFetch(cut_depth, clamp(centre + ivec2(dx, dy), ivec2(0), last), 0).r;
-            count += 1.0;
-        }
+    for (int d = -radius; d <= radius; d += stride) {
+        sum += texelFetch(cut_depth, clamp(centre + d * axis, ivec2(0), last), 0).r;
+        count += 1.0;
+    }
+#if AXIS == 0
+    out_depth = sum / count;
+#else
     gl_FragDepth = sum / count;
+#endif
 }

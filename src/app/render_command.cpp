@@ -1,6 +1,7 @@
 // `cutaway render MODEL [options] --out IMG.png [--stats STATS.json]`: one headless cutaway frame
 // with per-stage fenced times and image metrics (DESIGN.md contract).
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iostream>
@@ -17,6 +18,7 @@
 #include "cutaway/frame_metrics.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
+#include "metrics/cut_error.h"
 #include "grid/primary_selection.h"
 
 namespace cutaway::app {
@@ -58,6 +60,23 @@ json stage_statistics(const std::vector<pipeline::FrameTimes>& runs) {
             {"total_ms_per_run", all_runs}};
 }
 
+/// The last frame's cut against the exact cone field from the same seeds (SPEC section 2).
+json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
+                 const pipeline::Camera& camera) {
+    const cone_field::FloatImage cut = renderer.read_strategy_cut(camera);
+    const auto started = std::chrono::steady_clock::now();
+    const cone_field::FloatImage exact = renderer.exact_cut(settings, camera);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const metrics::CutErrorOptions compare_options;
+    const metrics::CutError error = metrics::compare_cut(cut, exact, compare_options);
+    return {{"wrong_fraction", error.wrong_fraction}, {"tolerance", error.tolerance},
+            {"relative_tolerance", compare_options.relative_tolerance}, {"mean_abs_error", error.mean_abs_error},
+            {"max_abs_error", error.max_abs_error}, {"max_signed_error", error.max_signed_error},
+            {"min_signed_error", error.min_signed_error}, {"pixels_compared", error.pixels_compared},
+            {"pixels_wrong", error.pixels_wrong}, {"units", "depth along the cut camera's axis, render units"},
+            {"exact_seconds", seconds}};
+}
+
 int run_render(const RenderOptions& options) {
     const LoadedModel model = load_model(options.model, options.memory_limit_bytes());
     const grid::CornerPointGrid& grid = model.grid;
@@ -86,6 +105,7 @@ int run_render(const RenderOptions& options) {
     gl::write_png(renderer.read_image(), options.out);
 
     json stats = stage_statistics(runs);
+    if (options.exact_check) stats["cut_vs_exact"] = exact_check(renderer, settings, camera);
     if (options.baseline) {
         std::vector<double> baseline;
         for (int i = 0; i < std::max(1, options.repeat); ++i) baseline.push_back(renderer.render_baseline(camera).wall_ms);

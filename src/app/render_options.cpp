@@ -71,7 +71,7 @@ nlohmann::json RenderOptions::describe() const {
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
             {"hide_internal_lines", s.hide_internal_lines}, {"only", pipeline::to_string(s.only)},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
-            {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}};
+            {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
 }
 
 void add_render_options(CLI::App& c, RenderOptions& o) {
@@ -106,6 +106,9 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--stats", o.stats, "write stage times, metrics and configuration as JSON");
     c.add_flag("--baseline", o.baseline, "also time a plain shaded frame of the whole model (baseline_ms)");
     c.add_flag("!--no-metrics", o.metrics, "skip the image metrics (3 extra untimed frames)");
+    c.add_flag("--exact-check", o.exact_check,
+               "compare the strategy's cut (before the mean filter) with the exact cone field from the same seeds "
+               "(stats.json cut_vs_exact)");
     c.add_option("--warmup", o.warmup, "untimed frames first")->check(CLI::Range(0, 100));
     c.add_option("--repeat", o.repeat, "timed frames; stats hold medians")->check(CLI::Range(1, 1000));
     c.add_option("--egl-platform", o.egl_platform, "auto|surfaceless|device");

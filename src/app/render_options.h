@@ -40,6 +40,7 @@ struct RenderOptions {
     std::string stats;
     bool baseline = false;
     bool metrics = true;
+    bool exact_check = false;         ///< compare the cut with the exact cone field (cut_vs_exact)
     int warmup = 1;
     int repeat = 3;
     std::string egl_platform = "auto";

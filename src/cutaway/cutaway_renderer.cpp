@@ -6,6 +6,9 @@
 #include <stdexcept>
 
 #include "cutaway/colour_map.h"
+#include "cutaway/cut_surface/cone_field_strategy.h"
+#include "cutaway/cut_surface/cut_depth_image.h"
+#include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "gl/gl_error.h"
 #include "grid/face_classification.h"
@@ -32,6 +35,18 @@ FloatImage read_alpha(const gl::Texture& texture, int width, int height) {
     FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
     for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + 3];
     return image;
+}
+
+/// Depth (along the view axis) of the nearest corner of the model's box: nothing lies in front
+/// of it, so frustum walls stop there (and never nearer than the near plane).
+float nearest_model_depth(const ModelFrame& frame, const Camera& camera) {
+    float nearest = camera.far_plane;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 corner{c & 1 ? frame.render_max.x : frame.render_min.x, c & 2 ? frame.render_max.y : frame.render_min.y,
+                               c & 4 ? frame.render_max.z : frame.render_min.z, 1.0f};
+        nearest = std::min(nearest, -(camera.view * corner).z);
+    }
+    return std::max(nearest, camera.near_plane);
 }
 
 }  // namespace
@@ -92,6 +107,12 @@ CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
     return *strategies_.back().second;
 }
 
+CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camera& cut_camera) const {
+    return {buffers_, cut_camera, glm::radians(std::clamp(s.aperture_h_deg, 0.0f, 90.0f)),
+            glm::radians(std::clamp(s.aperture_v_deg, 0.0f, 90.0f)), s.back_margin * frame_.radius(),
+            nearest_model_depth(frame_, cut_camera)};
+}
+
 const CutTargets& CutawayRenderer::active_cut(const FrameSettings&) const { return last_filtered_ ? filtered_cut_ : cut_; }
 
 FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
@@ -102,7 +123,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
     glFinish();
     const auto started = std::chrono::steady_clock::now();
 
-    const Camera& cut_camera = frozen_camera_ ? *frozen_camera_ : camera;
+    const Camera& cut_camera = cut_camera_for(camera);
     const bool draw_primaries = s.only != OnlyLayer::secondaries;
     const bool cut_needed = s.only != OnlyLayer::primaries;
     const bool cut_drawn = cut_needed && s.cut_enabled;
@@ -112,13 +133,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         gl::timed_stage(timer_, "cut_surface", [&] {
             cut_.clear();
             if (!cut_drawn) return;
-            const float radius = frame_.radius();
-            const float centre_depth = -(cut_camera.view * glm::vec4(0, 0, 0, 1)).z;
-            const CutSurfaceInputs inputs{buffers_, cut_camera, glm::radians(std::clamp(s.aperture_h_deg, 0.0f, 90.0f)),
-                                          glm::radians(std::clamp(s.aperture_v_deg, 0.0f, 90.0f)),
-                                          s.back_margin * radius,
-                                          std::max(centre_depth - radius, cut_camera.near_plane)};
-            strategy(s.strategy).render(inputs, cut_);
+            strategy(s.strategy).render(cut_inputs(s, cut_camera), cut_);
             if (!last_filtered_) cut_resolve_.apply(cut_, cut_camera);
         });
         if (last_filtered_)
@@ -135,7 +150,9 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         scene_.framebuffer.bind();
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
-        if (cut_needed) secondary_.draw(context, buffers_.secondary_faces(), s, active_cut(s), cut_camera);
+        if (!cut_needed) return;
+        secondary_.draw(context, buffers_.secondary_faces(), s, active_cut(s), cut_camera);
+        if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, active_cut(s), cut_camera);
     });
     gl::timed_stage(timer_, "primary", [&] {
         scene_.framebuffer.bind();
@@ -204,6 +221,17 @@ FloatImage CutawayRenderer::read_scene_depth() const { return read_alpha(scene_.
 FloatImage CutawayRenderer::read_cut_depth() const {
     const CutTargets& cut = last_filtered_ ? filtered_cut_ : cut_;
     return read_alpha(cut.surface, cut.surface.width(), cut.surface.height());
+}
+
+cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) const {
+    return read_cut_depth_texture(cut_.depth, cut_camera_for(camera));
+}
+
+cone_field::FloatImage CutawayRenderer::exact_cut(const FrameSettings& settings, const Camera& camera) {
+    const CutSurfaceInputs inputs = cut_inputs(settings, cut_camera_for(camera));
+    CutSeedPass seed_pass(shaders_);
+    empty_vertex_array_.bind();
+    return cone_field_cut_for(inputs, seed_pass.render(inputs), exact_cone_cut);
 }
 
 }  // namespace cutaway::pipeline

@@ -8,6 +8,7 @@
 
 #include "cutaway/camera.h"
 #include "cutaway/colour_bar.h"
+#include "cutaway/cone_field/cone_image.h"
 #include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "cutaway/frame_settings.h"
@@ -82,8 +83,16 @@ public:
     FloatImage read_scene_depth() const;
     /// The cut surface used by the last frame: depth along the cut camera's axis (0 = no cut).
     FloatImage read_cut_depth() const;
+    /// The strategy's cut of the last frame, before any mean filter: depth s along the cut
+    /// camera's axis, rows top to bottom, 0 = nothing cut. `camera`: the frame's camera.
+    cone_field::FloatImage read_strategy_cut(const Camera& camera) const;
+    /// The exact cone-field cut for `settings` and `camera` from the seeds and slope every
+    /// cone-field strategy uses (cone_field_strategy.h), in read_strategy_cut's units.
+    cone_field::FloatImage exact_cut(const FrameSettings& settings, const Camera& camera);
 
 private:
+    CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
+    const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut(const FrameSettings& settings) const;
 

@@ -26,14 +26,17 @@ SceneTargets::SceneTargets(int width, int height)
     : colour(GL_TEXTURE_2D, GL_RGBA8, width, height),
       normal_depth(GL_TEXTURE_2D, GL_RGBA32F, width, height),
       id(GL_TEXTURE_2D, GL_RG32UI, width, height),
+      face_plane(GL_TEXTURE_2D, GL_RGBA32F, width, height),
       depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height),
       shell_depth(GL_TEXTURE_2D, GL_R32F, width, height),
       shell_depth_buffer(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
     framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
     framebuffer.attach(GL_COLOR_ATTACHMENT1, normal_depth);
     framebuffer.attach(GL_COLOR_ATTACHMENT2, id);
+    framebuffer.attach(GL_COLOR_ATTACHMENT3, face_plane);
     framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
-    const std::array<GLenum, 3> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+    const std::array<GLenum, 4> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
+                                        GL_COLOR_ATTACHMENT3};
     framebuffer.finish(buffers, "scene");
     shell_framebuffer.attach(GL_COLOR_ATTACHMENT0, shell_depth);
     shell_framebuffer.attach(GL_DEPTH_ATTACHMENT, shell_depth_buffer);
@@ -48,6 +51,7 @@ void SceneTargets::clear() const {
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, zero);
     glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 2, zero_id);
+    glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 3, zero);
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_DEPTH, 0, &far_depth);

@@ -22,6 +22,7 @@ struct SceneTargets {
     gl::Texture colour;        ///< RGBA8
     gl::Texture normal_depth;  ///< RGBA32F
     gl::Texture id;            ///< RG32UI: compact cell + 1 (0 = background), flags
+    gl::Texture face_plane;    ///< RGBA32F: world normal of the visible secondary face, w = 1 (0 elsewhere)
     gl::Texture depth;         ///< DEPTH32F
     gl::Framebuffer framebuffer;
     gl::Texture shell_depth;   ///< R32F linear depth of the uncut shell (contours)

@@ -1,11 +1,52 @@
 #include "cutaway/secondary_pass.h"
 
+#include "cutaway/post/fullscreen_pass.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 
 SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
-    : programs_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/secondary.frag"}}) {}
+    : programs_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/secondary.frag"}}),
+      borders_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"},
+                              {GL_FRAGMENT_SHADER, "secondary/raycast_borders.frag"}})) {}
+
+namespace {
+void set_cut_lookup(const gl::Program& p, const CutTargets& cut, const Camera& cut_camera) {
+    gl::set_uniform(p, "cut_surface", 1);
+    cut.surface.bind(1);
+    gl::set_uniform(p, "cut_view", cut_camera.view);
+    gl::set_uniform(p, "cut_projection", cut_camera.projection);
+    gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
+    gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
+}
+const glm::vec3 border_colour(0.0f, 0.0f, 0.0f);
+const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
+}  // namespace
+
+void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
+                                          const CutTargets& cut, const Camera& cut_camera) {
+    const gl::Program& p = borders_;
+    set_cut_lookup(p, cut, cut_camera);
+    gl::set_uniform(p, "inverse_view_projection", glm::inverse(camera.view_projection()));
+    gl::set_uniform(p, "inverse_view", glm::inverse(camera.view));
+    gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
+    gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
+    gl::set_uniform(p, "border_width", settings.border_width_px);
+    gl::set_uniform(p, "border_colour", border_colour);
+    gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
+    gl::set_uniform(p, "face_plane", 2);
+    gl::set_uniform(p, "normal_depth", 3);
+    scene.face_plane.bind(2);
+    scene.normal_depth.bind(3);
+    gl::set_uniform(p, "scene_colour", 0);
+    gl::set_uniform(p, "scene_id", 1);
+    glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
+    glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
+    glNamedFramebufferParameteri(no_attachments_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, camera.width);
+    glNamedFramebufferParameteri(no_attachments_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, camera.height);
+    draw_fullscreen(p, no_attachments_, camera.width, camera.height);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
 
 void SecondaryPass::draw(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings,
                          const CutTargets& cut, const Camera& cut_camera) {
@@ -14,18 +55,13 @@ void SecondaryPass::draw(const FaceDrawContext& context, const FaceBuffer& faces
     if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
     const gl::Program& p = programs_.get(defines);
     prepare_face_program(p, context);
-    gl::set_uniform(p, "cut_surface", 1);
-    cut.surface.bind(1);
-    gl::set_uniform(p, "cut_view", cut_camera.view);
-    gl::set_uniform(p, "cut_projection", cut_camera.projection);
-    gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
-    gl::set_uniform(p, "inverse_view_projection", glm::inverse(context.camera.view_projection()));
+    set_cut_lookup(p, cut, cut_camera);
     gl::set_uniform(p, "focal_px", context.camera.focal_px());
     gl::set_uniform(p, "line_width", settings.line_width_px);
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "edge_colour", glm::vec3(0.12f, 0.12f, 0.12f));
-    gl::set_uniform(p, "border_colour", glm::vec3(0.0f, 0.0f, 0.0f));
-    gl::set_uniform(p, "shell_cut_colour", glm::vec3(0.85f, 0.1f, 0.1f));
+    gl::set_uniform(p, "border_colour", border_colour);
+    gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
     GridBuffers::draw_faces(faces);
 }
 

@@ -13,9 +13,14 @@ public:
     /// Draws `faces` into the bound scene framebuffer, clipped by `cut` seen from `cut_camera`.
     void draw(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings,
               const CutTargets& cut, const Camera& cut_camera);
+    /// Ray-cast borders over the visible secondary pixels of `scene` (after draw, ray-cast mode).
+    void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
+                               const CutTargets& cut, const Camera& cut_camera);
 
 private:
     gl::ProgramCache programs_;
+    gl::Program borders_;
+    gl::Framebuffer no_attachments_;  ///< sized by default width/height for the image-store pass
 };
 
 }  // namespace cutaway::pipeline

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/frustum_union.h"
 
 namespace cutaway::pipeline {
@@ -9,6 +10,15 @@ namespace cutaway::pipeline {
 std::vector<CutSurfaceEntry> cut_surface_strategies() {
     return {
         frustum_union_entry(),
+        chamfer_3x3_entry(),
+        chamfer_34_entry(),
+        chamfer_5x5_entry(),
+        jfa_entry(),
+        jfa_plus_1_entry(),
+        jfa_plus_2_entry(),
+        one_plus_jfa_entry(),
+        jfa_squared_entry(),
+        exact_entry(),
     };
 }
 

@@ -1,5 +1,8 @@
 #include "cutaway/post/mean_filter.h"
 
+#include <array>
+
+#include "cutaway/post/fullscreen_pass.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
@@ -7,22 +10,37 @@ namespace cutaway::pipeline {
 MeanFilter::MeanFilter(const gl::ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "post/mean_filter.frag"}}) {}
 
-void MeanFilter::apply(const CutTargets& input, const CutTargets& output, int size, MeanFilterKernel kernel,
-                       const Camera& cut_camera) {
-    gl::ShaderDefines defines{{"KERNEL", std::to_string(size)}};
+const gl::Program& MeanFilter::program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera) {
+    gl::ShaderDefines defines{{"KERNEL", std::to_string(size)}, {"AXIS", std::to_string(axis)}};
     if (kernel == MeanFilterKernel::sampled) defines.emplace_back("SAMPLED", "");
     const gl::Program& p = programs_.get(defines);
     gl::set_uniform(p, "cut_depth", 0);
-    input.depth.bind(0);
     gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
-    // Writes gl_FragDepth into output.depth: depth testing on with GL_ALWAYS, colour untouched.
+    return p;
+}
+
+void MeanFilter::apply(const CutTargets& input, const CutTargets& output, int size, MeanFilterKernel kernel,
+                       const Camera& cut_camera) {
+    if (rows_.width() != cut_camera.width || rows_.height() != cut_camera.height) {
+        rows_ = gl::Texture(GL_TEXTURE_2D, GL_R32F, cut_camera.width, cut_camera.height);
+        rows_framebuffer_ = gl::Framebuffer();
+        rows_framebuffer_.attach(GL_COLOR_ATTACHMENT0, rows_);
+        const std::array<GLenum, 1> buffers{GL_COLOR_ATTACHMENT0};
+        rows_framebuffer_.finish(buffers, "mean filter rows");
+    }
+    // Pass 1: along x into rows_.
+    input.depth.bind(0);
+    draw_fullscreen(program(size, kernel, 0, cut_camera), rows_framebuffer_, cut_camera.width, cut_camera.height);
+    // Pass 2: along y, written as gl_FragDepth into output.depth (depth test on, GL_ALWAYS).
+    const gl::Program& columns = program(size, kernel, 1, cut_camera);
+    rows_.bind(0);
     output.framebuffer.bind();
     glViewport(0, 0, cut_camera.width, cut_camera.height);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
     glDepthMask(GL_TRUE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    p.use();
+    columns.use();
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthFunc(GL_LESS);

@@ -1,5 +1,5 @@
 #pragma once
-// Mean filter of the cut surface (k x k, full or sampled kernel).
+// Mean filter of the cut surface (k x k, full or sampled kernel), as two 1D passes.
 #include "cutaway/camera.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
@@ -15,7 +15,10 @@ public:
                const Camera& cut_camera);
 
 private:
+    const gl::Program& program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera);
     gl::ProgramCache programs_;
+    gl::Texture rows_;               ///< R32F: the first (row) pass
+    gl::Framebuffer rows_framebuffer_;
 };
 
 }  // namespace cutaway::pipeline

@@ -1,0 +1,256 @@
+// Cutaway frame times over the paper's camera path (SPEC.md section 3), one GL context per process.
+//   BM_cutaway/pose/mean_filter/border/strategy/fraction_bp/preset (preset varies slowest: one model load each)
+//     preset: index into --presets; fraction_bp: primary fraction in basis points (100 = 1%);
+//     strategy: index into the cut-surface registry (filtered by --strategies); border: 0 raycast,
+//     1 threshold; mean_filter: k (0 = off); pose: -1 = the whole path, else one pose (--per_pose).
+//     Each iteration renders one pose of the path (warm-up passes first); the manual time is the
+//     fenced wall time of the whole frame. Counters: mean fenced ms per stage, baseline_ms (plain
+//     shaded frame of the same poses), gl_query_valid (1 only if every GL query agreed).
+//   BM_baseline/preset: the plain shaded frame over the same path.
+// Each benchmark checks its own output: at least one primary cell and visible primary pixels.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/model_source.h"
+#include "app/render_options.h"
+#include "app/run_context.h"
+#include "bench_cutaway_options.h"
+#include "camera_path.h"
+#include "cutaway/cut_surface/cut_surface_registry.h"
+#include "cutaway/cutaway_renderer.h"
+#include "gl/gl_context.h"
+#include "gl/shader_library.h"
+
+namespace {
+
+using namespace cutaway;
+
+/// One loaded preset with its renderer; the bench keeps only the latest (1920x1080 targets are large).
+struct Scene {
+    std::unique_ptr<app::LoadedModel> model;
+    app::PropertyChoice property;
+    std::unique_ptr<pipeline::CutawayRenderer> renderer;
+};
+
+class SceneCache {
+public:
+    SceneCache(const gl::ShaderLibrary& shaders, int width, int height) : shaders_(shaders), width_(width), height_(height) {}
+
+    Scene& scene(const std::string& preset) {
+        if (preset != preset_) {
+            scene_.renderer.reset();  // holds a reference to the old grid
+            scene_.model = std::make_unique<app::LoadedModel>(app::load_model({"preset:" + preset}, memory_limit));
+            scene_.property = app::choose_property(scene_.model->grid, app::RenderOptions{});
+            scene_.renderer = std::make_unique<pipeline::CutawayRenderer>(shaders_, scene_.model->grid, 0.0, width_, height_);
+            const app::PropertyChoice& p = scene_.property;
+            scene_.renderer->set_colouring(p.values(), {p.label, p.colour_range.min, p.colour_range.max});
+            preset_ = preset;
+        }
+        return scene_;
+    }
+
+private:
+    static constexpr std::size_t memory_limit = std::size_t(16) << 30;
+    const gl::ShaderLibrary& shaders_;
+    int width_, height_;
+    std::string preset_;
+    Scene scene_;
+};
+
+/// Selects the top `fraction` of the scene's property as primaries; returns their count.
+std::size_t select_fraction(Scene& scene, double fraction) {
+    app::RenderOptions options;
+    options.primary_fraction = fraction;
+    const std::vector<std::uint8_t> flags = app::select_primary_cells(scene.model->grid, scene.property, options);
+    scene.renderer->set_primaries(flags);
+    return scene.renderer->primary_cell_count();
+}
+
+std::size_t visible_primary_pixels(const pipeline::CutawayRenderer& renderer) {
+    const pipeline::IdImage ids = renderer.read_ids();
+    return std::size_t(std::count_if(ids.flags.begin(), ids.flags.end(),
+                                     [](std::uint32_t f) { return (f & pipeline::flag_primary) != 0; }));
+}
+
+std::vector<pipeline::Camera> path_cameras(const pipeline::CutawayRenderer& renderer,
+                                           const std::vector<bench::PathPose>& path) {
+    std::vector<pipeline::Camera> cameras;
+    for (const bench::PathPose& pose : path)
+        cameras.push_back(pipeline::make_orbit_camera(renderer.frame(), pose.orbit, renderer.width(), renderer.height()));
+    return cameras;
+}
+
+/// The poses one benchmark renders: the whole path, or only pose `index` (>= 0).
+std::vector<bench::PathPose> poses_for(const bench::CutawayBenchOptions& options, std::int64_t index) {
+    std::vector<bench::PathPose> path = bench::camera_path(options.poses);
+    if (index >= 0) path = {path.at(std::size_t(index))};
+    return path;
+}
+
+struct BenchSetup {
+    const bench::CutawayBenchOptions& options;
+    const std::vector<std::string>& strategies;
+    SceneCache& cache;
+};
+
+void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
+    const bench::CutawayBenchOptions& options = setup.options;
+    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(5))));
+    const std::size_t primaries = select_fraction(scene, double(state.range(4)) / 10000.0);
+    if (primaries == 0) {
+        state.SkipWithError("no primary cells selected");
+        return;
+    }
+    pipeline::CutawayRenderer& renderer = *scene.renderer;
+    pipeline::FrameSettings settings;
+    settings.strategy = setup.strategies.at(std::size_t(state.range(3)));
+    settings.border = state.range(2) ? pipeline::BorderMode::threshold : pipeline::BorderMode::raycast;
+    settings.mean_filter = int(state.range(1));
+    settings.line_width_px = 1;
+    settings.ssao = true;
+    const std::vector<bench::PathPose> path = poses_for(options, state.range(0));
+    const std::vector<pipeline::Camera> cameras = path_cameras(renderer, path);
+    auto frame = [&](std::size_t k) {
+        settings.aperture_h_deg = settings.aperture_v_deg = path[k].aperture_deg;
+        return renderer.render(settings, cameras[k]);
+    };
+
+    for (int w = 0; w < options.warmup; ++w)
+        for (std::size_t k = 0; k < path.size(); ++k) frame(k);
+    std::map<std::string, double> stage_sums;
+    bool queries_valid = true;
+    std::size_t k = 0;
+    for (auto _ : state) {
+        const pipeline::FrameTimes times = frame(k++ % path.size());
+        state.SetIterationTime(times.total.wall_ms / 1000.0);
+        for (const gl::StageTime& stage : times.stages) {
+            stage_sums[stage.stage] += stage.wall_ms;
+            queries_valid = queries_valid && stage.gl_query_valid;
+        }
+        stage_sums["total"] += times.total.wall_ms;
+    }
+    const std::size_t primary_pixels = visible_primary_pixels(renderer);
+    if (primary_pixels == 0) state.SkipWithError("no primary pixel visible in the last frame");
+
+    double baseline_sum = 0;
+    for (const pipeline::Camera& camera : cameras) baseline_sum += renderer.render_baseline(camera).wall_ms;
+    const double baseline_ms = baseline_sum / double(cameras.size());
+    for (const char* name : pipeline::stage_names) stage_sums.try_emplace(name, 0.0);
+    for (const auto& [name, sum] : stage_sums)
+        state.counters[name] = benchmark::Counter(sum, benchmark::Counter::kAvgIterations);
+    state.counters["baseline"] = baseline_ms;
+    state.counters["total_over_baseline"] =
+        benchmark::Counter(stage_sums["total"] / baseline_ms, benchmark::Counter::kAvgIterations);
+    state.counters["gl_query_valid"] = queries_valid ? 1 : 0;
+    state.counters["primary_cells"] = double(primaries);
+    state.counters["primary_pixels"] = double(primary_pixels);
+    state.counters["cells"] = double(scene.model->grid.active_count());
+    if (path.size() == 1) state.counters["aperture_deg"] = path.front().aperture_deg;
+    state.SetLabel(options.presets.at(std::size_t(state.range(5))) + " " + settings.strategy + " " +
+                   pipeline::to_string(settings.border) + " mean_filter " + std::to_string(settings.mean_filter));
+}
+
+void bm_baseline(benchmark::State& state, const BenchSetup& setup) {
+    Scene& scene = setup.cache.scene(setup.options.presets.at(std::size_t(state.range(0))));
+    const std::vector<pipeline::Camera> cameras = path_cameras(*scene.renderer, poses_for(setup.options, -1));
+    for (int w = 0; w < setup.options.warmup; ++w)
+        for (const pipeline::Camera& camera : cameras) scene.renderer->render_baseline(camera);
+    std::size_t k = 0;
+    for (auto _ : state) state.SetIterationTime(scene.renderer->render_baseline(cameras[k++ % cameras.size()]).wall_ms / 1000.0);
+    state.counters["cells"] = double(scene.model->grid.active_count());
+    state.SetLabel(setup.options.presets.at(std::size_t(state.range(0))));
+}
+
+std::vector<std::string> chosen_strategies(const std::vector<std::string>& requested) {
+    std::vector<std::string> names;
+    for (const std::string& name : requested) {
+        if (name == "all")
+            for (const pipeline::CutSurfaceEntry& entry : pipeline::cut_surface_strategies()) names.push_back(entry.name);
+        else
+            names.push_back(pipeline::find_cut_surface(name).name);  // throws for unknown names
+    }
+    return names;
+}
+
+template <class T>
+std::vector<std::int64_t> indices(const std::vector<T>& items) {
+    std::vector<std::int64_t> out(items.size());
+    for (std::size_t i = 0; i < items.size(); ++i) out[i] = std::int64_t(i);
+    return out;
+}
+
+void register_benchmarks(const BenchSetup& setup) {
+    const bench::CutawayBenchOptions& o = setup.options;
+    std::vector<std::int64_t> fractions_bp, borders, mean_filters(o.mean_filters.begin(), o.mean_filters.end());
+    for (double f : o.fractions) fractions_bp.push_back(std::llround(f * 10000.0));
+    for (const std::string& b : o.borders) borders.push_back(b == "threshold" ? 1 : 0);
+    std::vector<std::int64_t> poses{-1};
+    if (o.per_pose) poses = indices(bench::camera_path(o.poses));
+    const std::int64_t iterations = std::int64_t(o.repeat) * (o.per_pose ? 1 : o.poses);
+    benchmark::RegisterBenchmark("BM_cutaway", [&setup](benchmark::State& s) { bm_cutaway(s, setup); })
+        ->ArgNames({"pose", "mean_filter", "border", "strategy", "fraction_bp", "preset"})  // first varies fastest
+        ->ArgsProduct({poses, mean_filters, borders, indices(setup.strategies), fractions_bp, indices(o.presets)})
+        ->Iterations(iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("BM_baseline", [&setup](benchmark::State& s) { bm_baseline(s, setup); })
+        ->ArgNames({"preset"})->ArgsProduct({indices(o.presets)})
+        ->Iterations(std::int64_t(o.repeat) * o.poses)->UseManualTime()->Unit(benchmark::kMillisecond);
+}
+
+void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::string>& strategies, const gl::GlContext& context) {
+    auto join = [](const std::vector<std::string>& items) {
+        std::string text;
+        for (const std::string& item : items) text += (text.empty() ? "" : ",") + item;
+        return text;
+    };
+    benchmark::AddCustomContext("gl_renderer", gl::gl_renderer());
+    benchmark::AddCustomContext("gl_version", gl::gl_version());
+    benchmark::AddCustomContext("gl_platform", context.platform());
+    benchmark::AddCustomContext("LP_NUM_THREADS", run_context::lp_num_threads());
+    benchmark::AddCustomContext("git_revision", run_context::git_revision());
+    benchmark::AddCustomContext("uname", run_context::uname_text());
+    benchmark::AddCustomContext("cutaway_build_type", CUTAWAY_BUILD_TYPE);
+    benchmark::AddCustomContext("resolution", std::to_string(o.width) + "x" + std::to_string(o.height));
+    benchmark::AddCustomContext("presets", join(o.presets));
+    benchmark::AddCustomContext("strategies", join(strategies));
+    std::string path;
+    for (const bench::PathPose& p : bench::camera_path(o.poses))
+        path += (path.empty() ? "" : "; ") + std::to_string(int(p.orbit.azimuth_deg)) + "/" +
+                std::to_string(int(p.orbit.elevation_deg)) + "/" + std::to_string(int(p.aperture_deg));
+    benchmark::AddCustomContext("camera_path_az_el_aperture_deg", path);
+    benchmark::AddCustomContext("warmup_passes", std::to_string(o.warmup));
+    benchmark::AddCustomContext("timed_passes", std::to_string(o.repeat));
+    benchmark::AddCustomContext("frame_settings", "line width 1 px, SSAO on, border width 2 px, distance framing the model");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        const bench::CutawayBenchOptions options = bench::take_bench_options(argc, argv);
+        const std::vector<std::string> strategies = chosen_strategies(options.strategies);
+        const std::unique_ptr<gl::GlContext> context = gl::create_context(gl::ContextOptions{});
+        const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
+        SceneCache cache(shaders, options.width, options.height);
+        const BenchSetup setup{options, strategies, cache};
+        add_context(options, strategies, *context);
+        register_benchmarks(setup);
+        benchmark::Initialize(&argc, argv);
+        if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
+            std::cerr << bench::usage_text();
+            return 1;
+        }
+        benchmark::RunSpecifiedBenchmarks();
+        benchmark::Shutdown();
+    } catch (const std::exception& error) {
+        std::cerr << "bench_cutaway: " << error.what() << "\n" << bench::usage_text();
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,130 @@
+"""Shared plumbing of the cutaway experiments (table1, stage_over_path, figures): the command line,
+where outputs go, running `cutaway render` and `bench_cutaway`, machine context, and one plot style.
+
+Every experiment script accepts:
+  --quick        small images, few poses (the whole run_all --quick stays under 5 minutes)
+  --force        recompute even when the outputs already exist (otherwise it skips)
+  --build DIR    build folder holding bin/cutaway and bin/bench_cutaway (default: <repo>/build)
+Full runs write results/<experiment>/ and paper_figures/; --quick runs write results/quick/<experiment>/
+and paper_figures/quick/ so a smoke test never overwrites the reference results.
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
+import volume_experiment as vx  # noqa: E402  (matplotlib import, git revision, JSON writing)
+
+REPO = vx.REPO
+PRESETS = ("zaphirus", "petra", "opharine", "sapphire")
+STAGES = ("cut_surface", "secondary", "primary", "ssao", "mean_filter", "post")
+STAGE_LABELS = {"cut_surface": "stage 1: cut surface", "secondary": "stage 2: secondaries",
+                "primary": "stage 3: primaries", "ssao": "SSAO", "mean_filter": "mean filter",
+                "post": "composite (post)", "total": "total"}
+write_json = vx.write_json
+
+
+class Experiment:
+    """Paths and tools of one experiment run: `results` (folder for JSON/markdown), `figures`
+    (folder for PNGs), `quick`, `force`, and the two executables."""
+
+    def __init__(self, name, doc, outputs):
+        parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+        parser.add_argument("--quick", action="store_true", help="small images, few poses (smoke test)")
+        parser.add_argument("--force", action="store_true", help="recompute even if the outputs exist")
+        parser.add_argument("--build", default=os.path.join(REPO, "build"), help="build folder with bin/")
+        args = parser.parse_args()
+        self.name, self.quick, self.force = name, args.quick, args.force
+        self.cutaway = os.path.join(args.build, "bin", "cutaway")
+        self.bench = os.path.join(args.build, "bin", "bench_cutaway")
+        base = os.path.join(REPO, "results", "quick") if self.quick else os.path.join(REPO, "results")
+        self.results = os.path.join(base, name)
+        self.figures = os.path.join(REPO, "paper_figures", "quick") if self.quick else os.path.join(REPO, "paper_figures")
+        self.outputs = [self.path(o) for o in outputs]
+        # llvmpipe's thread count is part of every timing: set it explicitly and record it.
+        os.environ.setdefault("LP_NUM_THREADS", str(os.cpu_count() or 1))
+
+    def path(self, output):
+        """results/<name>/FILE for .json/.md/.csv outputs, paper_figures/FILE for images."""
+        return os.path.join(self.figures if output.endswith(".png") else self.results, output)
+
+    def up_to_date(self):
+        if not self.force and all(os.path.exists(p) for p in self.outputs):
+            print("up to date (use --force to recompute):", ", ".join(os.path.relpath(p, REPO) for p in self.outputs))
+            return True
+        for tool in (self.cutaway, self.bench):
+            if not os.access(tool, os.X_OK):
+                raise SystemExit(f"{tool}: not built (cmake --build BUILD --target cutaway bench_cutaway)")
+        os.makedirs(self.results, exist_ok=True)
+        os.makedirs(self.figures, exist_ok=True)
+        return False
+
+    def render(self, model, *options, image=None, metrics=False):
+        """`cutaway render MODEL OPTIONS`; returns its stats object. `image`: keep the PNG there."""
+        with tempfile.TemporaryDirectory(prefix="cutaway-exp-") as scratch:
+            stats_path = os.path.join(scratch, "stats.json")
+            command = [self.cutaway, "render", model, *map(str, options), "--out", image or os.path.join(scratch, "frame.png"),
+                       "--stats", stats_path] + ([] if metrics else ["--no-metrics"])
+            subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+            with open(stats_path) as f:
+                return json.load(f)
+
+    def benchmark(self, *flags):
+        """`bench_cutaway FLAGS` with JSON output; returns the parsed document (context + benchmarks)."""
+        with tempfile.TemporaryDirectory(prefix="cutaway-bench-") as scratch:
+            out = os.path.join(scratch, "bench.json")
+            subprocess.run([self.bench, *map(str, flags), "--benchmark_out=" + out, "--benchmark_out_format=json"],
+                           check=True, stdout=subprocess.DEVNULL)
+            with open(out) as f:
+                return json.load(f)
+
+    def context(self, stats=None):
+        """Where and how the run was measured (from a render's stats or a benchmark's context)."""
+        stats = stats or {}
+        return {"gl_renderer": stats.get("gl_renderer"), "lp_num_threads": os.environ.get("LP_NUM_THREADS", "unset"),
+                "git_revision": vx.git_revision(), "cpu_count": os.cpu_count(), "uname": " ".join(os.uname()),
+                "quick": self.quick}
+
+
+def benchmark_context(document):
+    """The benchmark JSON's context, reduced to what results record."""
+    keep = ("gl_renderer", "gl_version", "LP_NUM_THREADS", "git_revision", "uname", "resolution", "host_name",
+            "num_cpus", "mhz_per_cpu", "camera_path_az_el_aperture_deg", "warmup_passes", "timed_passes",
+            "frame_settings", "cutaway_build_type", "date", "strategies")
+    return {k: v for k, v in document["context"].items() if k in keep}
+
+
+def cutaway_runs(document):
+    """BM_cutaway rows of a benchmark document as dicts: preset, pose (-1 = path), stage ms, counters."""
+    presets = document["context"]["presets"].split(",")
+    rows = []
+    for bench in document["benchmarks"]:
+        if not bench["name"].startswith("BM_cutaway/") or bench.get("error_occurred"):
+            continue
+        args = dict(part.split(":") for part in bench["name"].split("/")[1:] if ":" in part)
+        row = {"preset": presets[int(args["preset"])], "pose": int(args["pose"]), "label": bench.get("label"),
+               "stages_ms": {s: bench[s] for s in STAGES + ("total",)}}
+        for key in ("baseline", "total_over_baseline", "gl_query_valid", "primary_cells", "primary_pixels", "cells",
+                    "aperture_deg"):
+            if key in bench:
+                row[key] = bench[key]
+        rows.append(row)
+    return rows
+
+
+def pyplot():
+    """matplotlib.pyplot (Agg) with the experiments' one style."""
+    plt = vx.require_matplotlib()
+    plt.rcParams.update({"figure.figsize": (7, 4), "figure.dpi": 120, "axes.grid": True, "grid.alpha": 0.3,
+                         "axes.spines.top": False, "axes.spines.right": False, "font.size": 9,
+                         "legend.fontsize": 8, "axes.titlesize": 9, "lines.markersize": 4})
+    return plt
+
+
+def save_figure(fig, path):
+    fig.tight_layout()
+    fig.savefig(path)
+    print("wrote", os.path.relpath(path, REPO))

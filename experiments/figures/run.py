@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Images like the paper's figures 7-15, plus frame time vs aperture angle and vs primary fraction.
+
+Interface (for experiments/run_all):
+  experiments/figures/run.py [--quick] [--force] [--build DIR]
+Writes paper_figures/fig07_borders.png ... fig15_only_layers.png, time_vs_aperture.png,
+time_vs_primary_fraction.png, and results/figures/figures.json (per panel: options, fenced stage ms,
+primary cells, image metrics such as fig. 7's two border_line_width values and fig. 8's primary
+exposure; the sweeps; machine context). Skips when all exist unless --force. --quick: zaphirus at
+320x180, fewer sweep points (results/quick/figures/, paper_figures/quick/).
+
+Protocol: preset:petra (32,760 cells), 1280x720, camera azimuth 35 / elevation 30, 1% primaries of
+PORO, the paper's defaults otherwise; one warm-up and three timed frames per panel (median).
+Sweeps on preset:opharine: apertures 0..90 degrees at 1% primaries; fractions 0.1%..10% at 30 degrees.
+"""
+import os
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import cutaway_experiment as cx  # noqa: E402
+import figure_specs  # noqa: E402
+import sweeps  # noqa: E402
+
+FIGURES = ("fig07_borders", "fig08_mean_filter", "fig09_ssao_saturation", "fig10_freeze_view", "fig11_aperture180_steps",
+           "fig12_hidden_lines", "fig13_silhouette", "fig14_models", "fig15_only_layers")
+PANEL_NUMBERS = ("stages_ms", "primary_cells", "primary_exposure", "context_kept", "border_line_width", "total_over_baseline")
+
+
+def render_figure(exp, spec, model, size, scratch):
+    """Renders every panel, composes them side by side into paper_figures/<name>.png; returns the numbers."""
+    plt = cx.pyplot()
+    panels = []
+    for index, panel in enumerate(spec["panels"]):
+        caption, options = panel[0], panel[1]
+        panel_model = panel[2] if len(panel) > 2 else model
+        image = os.path.join(scratch, f"{spec['name']}_{index}.png")
+        camera = () if "--camera" in options else figure_specs.CAMERA  # fig. 10 sets its own
+        stats = exp.render(panel_model, *camera, *options, "--size", *size, image=image,
+                           metrics=spec.get("metrics", False))
+        panels.append({"caption": caption, "model": panel_model, "options": [str(o) for o in options], "image": image,
+                       **{k: stats[k] for k in PANEL_NUMBERS if k in stats}})
+        print(f"  {spec['name']}: {caption}: total {stats['stages_ms']['total']:.1f} ms")
+    fig, axes = plt.subplots(1, len(panels), figsize=(3.6 * len(panels), 3.6 * size[1] / size[0] + 0.6), squeeze=False)
+    for ax, panel in zip(axes[0], panels):
+        ax.imshow(plt.imread(panel.pop("image")))
+        caption = panel["caption"]
+        if "border_line_width" in panel:
+            caption += f"\nborder width {panel['border_line_width']['mean_px']:.2f} +- {panel['border_line_width']['stddev_px']:.2f} px"
+        ax.set_title(caption)
+        ax.axis("off")
+    fig.suptitle(spec["title"])
+    cx.save_figure(fig, exp.path(spec["name"] + ".png"))
+    plt.close(fig)
+    return {"title": spec["title"], "panels": panels}
+
+
+def main():
+    outputs = [f + ".png" for f in FIGURES] + ["time_vs_aperture.png", "time_vs_primary_fraction.png", "figures.json"]
+    exp = cx.Experiment("figures", __doc__, outputs)
+    if exp.up_to_date():
+        return
+    quick = exp.quick
+    model, size = ("preset:zaphirus", (320, 180)) if quick else ("preset:petra", (1280, 720))
+    sweep_model = "preset:zaphirus" if quick else "preset:opharine"
+    steps = (0, 2) if quick else (0, 1, 2, 3)
+    specs = figure_specs.figure_specs(model, steps) + [figure_specs.models_figure(cx.PRESETS)]
+    numbers = {}
+    with tempfile.TemporaryDirectory(prefix="cutaway-figures-") as scratch:
+        for spec in sorted(specs, key=lambda s: s["name"]):
+            numbers[spec["name"]] = render_figure(exp, spec, model, size, scratch)
+
+    apertures = (0, 30, 60, 90) if quick else (0, 15, 30, 45, 60, 75, 90)
+    fractions = (0.003, 0.03) if quick else (0.001, 0.003, 0.01, 0.03, 0.1)
+    repeat = 1 if quick else 3
+    aperture_rows, stats = sweeps.sweep(exp, sweep_model, size, [(a, ["--aperture", a, a]) for a in apertures],
+                                        figure_specs.CAMERA, repeat)
+    fraction_rows, _ = sweeps.sweep(exp, sweep_model, size, [(f, ["--primary-fraction", f]) for f in fractions],
+                                    figure_specs.CAMERA, repeat)
+    label = f"{sweep_model}, {size[0]}x{size[1]}"
+    sweeps.plot_sweep(exp, aperture_rows, "aperture angle (degrees, horizontal = vertical)",
+                      f"Frame time vs aperture ({label}, 1% primaries)", exp.path("time_vs_aperture.png"))
+    sweeps.plot_sweep(exp, fraction_rows, "primary fraction (of active cells, log scale)",
+                      f"Frame time vs primary fraction ({label}, aperture 30 degrees)",
+                      exp.path("time_vs_primary_fraction.png"), log_x=True)
+    cx.write_json(exp.path("figures.json"), {
+        "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),
+        "context": exp.context(stats), "configuration": stats["configuration"], "figures": numbers,
+        "time_vs_aperture": {"model": sweep_model, "repeat": repeat, "rows": aperture_rows},
+        "time_vs_primary_fraction": {"model": sweep_model, "repeat": repeat, "rows": fraction_rows}})
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,58 @@
+#!/usr/bin/python3
+"""Table 1 of the paper: per-stage frame times of the four models over the camera path.
+
+Interface (for experiments/run_all):
+  experiments/table1/run.py [--quick] [--force] [--build DIR]
+Writes results/table1/table1.json (our ms per stage and model, the paper's, shares, the observations
+decided from the data, machine context) and results/table1/table1.md. Skips when both exist unless
+--force. --quick: 480x270 pixels, 2 poses (results/quick/table1/).
+
+Protocol (SPEC.md section 3): 1920x1080, 9x9 mean filter, the top 1% of PORO as primaries, line
+width 1 px, SSAO on, frustum-union cut (the paper's), ray-cast borders; bench_cutaway renders each
+model over its 8-pose camera path (azimuth steps of 45 degrees, aperture 15..60 degrees) after one
+untimed pass; times are fenced wall clock (glFinish) means over the path.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import cutaway_experiment as cx  # noqa: E402
+import table1_report  # noqa: E402
+
+PAPER_MS = {  # SPEC.md section 3 (GeForce GTX 660, 1920x1080)
+    "zaphirus": {"cells": 7500, "cut_surface": 1.13, "secondary": 6.5, "primary": 0.15, "ssao": 4.8, "mean_filter": 3.0, "total": 15.8},
+    "petra": {"cells": 32760, "cut_surface": 1.9, "secondary": 11.1, "primary": 0.38, "ssao": 5.2, "mean_filter": 4.6, "total": 23.2},
+    "opharine": {"cells": 76000, "cut_surface": 2.0, "secondary": 26, "primary": 0.7, "ssao": 4.6, "mean_filter": 4.7, "total": 38},
+    "sapphire": {"cells": 208320, "cut_surface": 2.35, "secondary": 39.7, "primary": 1.78, "ssao": 5.33, "mean_filter": 4.6, "total": 53.9},
+}
+
+
+def main():
+    exp = cx.Experiment("table1", __doc__, ["table1.json", "table1.md"])
+    if exp.up_to_date():
+        return
+    size = "480x270" if exp.quick else "1920x1080"
+    poses = 2 if exp.quick else 8
+    document = exp.benchmark("--presets=" + ",".join(cx.PRESETS), "--size=" + size, "--poses=" + str(poses),
+                             "--fractions=0.01", "--mean_filters=9", "--borders=raycast", "--strategies=frustum",
+                             "--warmup=1", "--repeat=1", "--benchmark_filter=BM_cutaway")
+    ours = {row["preset"]: row for row in cx.cutaway_runs(document)}
+    missing = [p for p in cx.PRESETS if p not in ours]
+    if missing:
+        raise SystemExit(f"bench_cutaway gave no result for {missing}")
+    table = table1_report.build_table(ours, PAPER_MS)
+    observations = table1_report.observations(table)
+    cx.write_json(exp.path("table1.json"), {
+        "experiment": "table1", "quick": exp.quick,
+        "protocol": {"size": size, "poses": poses, "mean_filter": 9, "primary_fraction": 0.01, "line_width_px": 1,
+                     "ssao": True, "strategy": "frustum", "border": "raycast", "statistic": "mean over the camera path",
+                     "time": "fenced wall clock per stage (glFinish before and after), ms"},
+        "context": {**exp.context(), **cx.benchmark_context(document)},
+        "models": table, "observations": observations})
+    with open(exp.path("table1.md"), "w") as f:
+        f.write(table1_report.markdown(table, observations, cx.benchmark_context(document), size, poses))
+    print("wrote", os.path.relpath(exp.path("table1.md"), cx.REPO))
+
+
+if __name__ == "__main__":
+    main()

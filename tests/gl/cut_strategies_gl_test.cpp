@@ -1,0 +1,75 @@
+// Every cut-surface strategy of the registry against the SPEC section 2 invariants on EGL
+// llvmpipe: each keeps every primary pixel visible with the mean filter off, and jump flooding
+// stays within its error bounds against the exact cone field from the same seeds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <string>
+#include <utility>
+
+#include "cutaway/cut_surface/cut_surface_registry.h"
+#include "cutaway/frame_metrics.h"
+#include "gl_test_support.h"
+#include "metrics/cut_error.h"
+
+namespace cutaway::test {
+namespace {
+
+using pipeline::Camera;
+using pipeline::make_orbit_camera;
+
+TEST(CutStrategies, EveryStrategyKeepsEveryPrimaryPixelVisible) {
+    // By construction for the cone fields: the seeds cover each primary's widened footprint at
+    // its far depth plus the margin, and every cut is >= its seed at a seed pixel.
+    constexpr int width = 320, height = 240;
+    auto renderer = make_renderer(petra(), width, height);
+    for (const pipeline::CutSurfaceEntry& entry : pipeline::cut_surface_strategies()) {
+        SCOPED_TRACE("strategy " + entry.name);
+        EXPECT_TRUE(entry.device == "gpu" || entry.device == "cpu") << entry.device;
+        EXPECT_FALSE(entry.why.empty());
+        std::mt19937 random(23);  // the same scenes for every strategy
+        for (int trial = 0; trial < 3; ++trial) {
+            SCOPED_TRACE("trial " + std::to_string(trial));
+            renderer->set_primaries(random_primaries(petra(), random));
+            const Camera camera = make_orbit_camera(renderer->frame(), random_pose(random), width, height);
+            pipeline::FrameSettings settings = invariant_settings(random);
+            settings.strategy = entry.name;
+            const pipeline::FrameMetrics m = pipeline::measure_frame(*renderer, settings, camera);
+            EXPECT_GT(m.exposure.primary_pixels, 0u);
+            EXPECT_EQ(m.exposure.fraction, 1.0) << m.exposure.visible << " of " << m.exposure.primary_pixels;
+            EXPECT_EQ(m.secondary_in_front, 0u);
+        }
+    }
+}
+
+TEST(CutStrategies, JumpFloodingWithinItsErrorBoundsAgainstExactAt512) {
+    // SPEC: plain JFA at most 0.5% wrong pixels, JFA^2 at most 0.05%; errors one-sided (the cut
+    // is the height of a real seed's cone, never above the exact maximum). A pixel is wrong when
+    // off by more than compare_cut's default tolerance (1e-3 of the exact depth range).
+    constexpr int side = 512;
+    const std::pair<const char*, double> bounds[] = {{"jfa", 0.005}, {"jfa2", 0.0005}};
+    auto renderer = make_renderer(petra(), side, side);
+    std::mt19937 random(41);
+    for (int trial = 0; trial < 3; ++trial) {
+        SCOPED_TRACE("trial " + std::to_string(trial));
+        renderer->set_primaries(random_primaries(petra(), random));
+        const Camera camera = make_orbit_camera(renderer->frame(), random_pose(random), side, side);
+        pipeline::FrameSettings settings = invariant_settings(random);
+        const cone_field::FloatImage exact = renderer->exact_cut(settings, camera);
+        ASSERT_TRUE(std::any_of(exact.pixels.begin(), exact.pixels.end(), [](float d) { return d > 0; }))
+            << "no cut at all: the comparison would be vacuous";
+        for (const auto& [name, bound] : bounds) {
+            SCOPED_TRACE(name);
+            settings.strategy = name;
+            renderer->render(settings, camera);
+            const metrics::CutError error = metrics::compare_cut(renderer->read_strategy_cut(camera), exact);
+            EXPECT_LE(error.wrong_fraction, bound) << error.pixels_wrong << " of " << error.pixels_compared;
+            EXPECT_LE(error.max_signed_error, error.tolerance);
+            RecordProperty(std::string(name) + "_wrong_fraction_trial_" + std::to_string(trial), std::to_string(error.wrong_fraction));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace cutaway::test
