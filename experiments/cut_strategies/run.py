@@ -26,7 +26,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
 import volume_experiment as vx  # noqa: E402
 
-RESULTS = os.path.join(vx.REPO, "results", "cut_strategies")
+RESULTS = os.path.join(vx.REPO, "results", "quick" if vx.QUICK else "", "cut_strategies")
 NOT_DISTANCE_TRANSFORMS = {"frustum", "exact"}
 
 

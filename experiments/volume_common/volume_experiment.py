@@ -16,8 +16,11 @@ import sys
 import tempfile
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
-RESULTS = os.path.join(REPO, "results", "volume")
-FIGURES = os.path.join(REPO, "paper_figures")
+# --quick is a smoke test: its outputs go to results/quick/ and paper_figures/quick/ so it never
+# overwrites the reference results (decided before the paths are used, hence from sys.argv).
+QUICK = "--quick" in sys.argv[1:]
+RESULTS = os.path.join(REPO, "results", "quick", "volume") if QUICK else os.path.join(REPO, "results", "volume")
+FIGURES = os.path.join(REPO, "paper_figures", "quick") if QUICK else os.path.join(REPO, "paper_figures")
 
 
 def require_matplotlib():
