@@ -46,6 +46,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
     s.contours = parse_choice<bool>("--contours", contours, {{"on", true}, {"off", false}});
     s.only = parse_choice<OnlyLayer>("--only", only, {{"both", OnlyLayer::both}, {"primaries", OnlyLayer::primaries},
                                                       {"secondaries", OnlyLayer::secondaries}});
+    s.seeds = parse_choice<SeedSource>("--seeds", seeds, {{"boxes", SeedSource::boxes}, {"geometry", SeedSource::geometry}});
     for (float a : aperture)
         if (!(a >= 0 && a <= 90)) throw std::invalid_argument("--aperture " + std::to_string(a) + ": expected 0..90 degrees");
     s.aperture_h_deg = aperture[0];
@@ -62,7 +63,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
     return {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
-            {"step", step}, {"ijk_box", ijk_box}, {"strategy", s.strategy},
+            {"step", step}, {"ijk_box", ijk_box}, {"strategy", s.strategy}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
@@ -82,6 +83,7 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--step", o.step, "time step of a dynamic property (0-based)");
     c.add_option("--ijk-box", o.ijk_box, "restrict primaries to I0 J0 K0 I1 J1 K1 (0-based, inclusive)")->expected(6);
     c.add_option("--strategy", o.settings.strategy, "cut-surface strategy");
+    c.add_option("--seeds", o.seeds, "seeds of the distance-transform strategies: boxes|geometry");
     c.add_option("--border", o.border, "border lines: raycast|threshold");
     c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels");
     c.add_option("--line-width", o.settings.line_width_px, "cell edge line width, pixels (0: none)");

@@ -28,6 +28,7 @@ struct RenderOptions {
     std::string ssao = "on";
     std::string contours = "on";
     std::string only = "both";
+    std::string seeds = "boxes";
     std::vector<float> aperture{30, 30};
     bool aperture_180 = false;
     std::vector<float> camera{35, 30, 0};

@@ -110,7 +110,7 @@ CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
 CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camera& cut_camera) const {
     return {buffers_, cut_camera, glm::radians(std::clamp(s.aperture_h_deg, 0.0f, 90.0f)),
             glm::radians(std::clamp(s.aperture_v_deg, 0.0f, 90.0f)), s.back_margin * frame_.radius(),
-            nearest_model_depth(frame_, cut_camera)};
+            nearest_model_depth(frame_, cut_camera), s.seeds};
 }
 
 const CutTargets& CutawayRenderer::active_cut(const FrameSettings&) const { return last_filtered_ ? filtered_cut_ : cut_; }
@@ -144,7 +144,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         frozen_valid_ = frozen_camera_.has_value();
     }
     empty_vertex_array_.bind();
-    const FaceDrawContext context{buffers_, camera, colour_map_, {label_.min, label_.max}};
+    const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "secondary", [&] {
         scene_.clear();
         scene_.framebuffer.bind();
@@ -186,7 +186,7 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera) {
     empty_vertex_array_.bind();
     FrameSettings plain;
     plain.border = BorderMode::threshold;
-    const FaceDrawContext context{buffers_, camera, colour_map_, {label_.min, label_.max}};
+    const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "baseline", [&] {
         cut_.clear();
         scene_.clear();

@@ -9,7 +9,7 @@ namespace cutaway::pipeline {
 struct FaceDrawContext {
     const GridBuffers& grid;
     const Camera& camera;            ///< the model camera
-    const gl::Texture& colour_map;
+    const gl::Texture* colour_map = nullptr;  ///< null for passes that only write depth
     glm::vec2 value_range{0, 1};     ///< property values at the ends of the colour map
 };
 

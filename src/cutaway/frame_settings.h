@@ -8,9 +8,13 @@ namespace cutaway::pipeline {
 enum class BorderMode { raycast, threshold };
 enum class MeanFilterKernel { full, sampled };
 enum class OnlyLayer { both, primaries, secondaries };
+/// Seeds of the cone-field strategies: each primary's box back face (widened by a pixel) or the
+/// primaries' own faces (the exact rear hull of the cells).
+enum class SeedSource { boxes, geometry };
 
 struct FrameSettings {
     std::string strategy = "frustum";      ///< cut-surface strategy (cut_surface_registry.h)
+    SeedSource seeds = SeedSource::boxes;  ///< seeds of the distance-transform strategies
     float aperture_h_deg = 30;             ///< wall angle from the view ray, 0..90 (90: flat)
     float aperture_v_deg = 30;
     float back_margin = 0.002f;            ///< back-plane margin, fraction of the model radius
@@ -43,5 +47,6 @@ inline void set_aperture_180(FrameSettings& settings) {
 const char* to_string(BorderMode mode);
 const char* to_string(MeanFilterKernel kernel);
 const char* to_string(OnlyLayer only);
+const char* to_string(SeedSource seeds);
 
 }  // namespace cutaway::pipeline

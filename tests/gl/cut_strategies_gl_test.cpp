@@ -35,10 +35,16 @@ TEST(CutStrategies, EveryStrategyKeepsEveryPrimaryPixelVisible) {
             const Camera camera = make_orbit_camera(renderer->frame(), random_pose(random), width, height);
             pipeline::FrameSettings settings = invariant_settings(random);
             settings.strategy = entry.name;
-            const pipeline::FrameMetrics m = pipeline::measure_frame(*renderer, settings, camera);
-            EXPECT_GT(m.exposure.primary_pixels, 0u);
-            EXPECT_EQ(m.exposure.fraction, 1.0) << m.exposure.visible << " of " << m.exposure.primary_pixels;
-            EXPECT_EQ(m.secondary_in_front, 0u);
+            // Both seed sources: boxes (back face widened by a pixel) and the cells' own faces.
+            for (pipeline::SeedSource seeds : {pipeline::SeedSource::boxes, pipeline::SeedSource::geometry}) {
+                if (seeds == pipeline::SeedSource::geometry && entry.name == "frustum") continue;  // no seeds
+                settings.seeds = seeds;
+                SCOPED_TRACE(std::string("seeds ") + pipeline::to_string(seeds));
+                const pipeline::FrameMetrics m = pipeline::measure_frame(*renderer, settings, camera);
+                EXPECT_GT(m.exposure.primary_pixels, 0u);
+                EXPECT_EQ(m.exposure.fraction, 1.0) << m.exposure.visible << " of " << m.exposure.primary_pixels;
+                EXPECT_EQ(m.secondary_in_front, 0u);
+            }
         }
     }
 }

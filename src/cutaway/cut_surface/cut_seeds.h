@@ -1,6 +1,8 @@
 #pragma once
 // Seeds of the cone-field cut strategies (SPEC section 2): the primaries' rear hull, "from cell
-// boxes". Runs on the GPU: each primary cell's box back face (the frustum without its walls: the
+// boxes" or "from cell geometry" (inputs.seeds). Geometry: the primaries' own faces, drawn with
+// the same inverted depth test, so each covered pixel holds the depth of the cluster's rear face
+// there, which is behind every primary fragment of that pixel. Boxes: Runs on the GPU: each primary cell's box back face (the frustum without its walls: the
 // largest depth s of the box, pushed back by the margin, over its (u, v) footprint widened by one
 // pixel) is rasterised with an inverted depth test, then read back. Every pixel a primary covers
 // thus holds a seed at least as deep as that primary, so any cut d(p) >= seed(p) keeps every
@@ -20,7 +22,8 @@ public:
     cone_field::SeedImage render(const CutSurfaceInputs& inputs);
 
 private:
-    gl::Program program_;
+    gl::Program program_;           ///< box back faces
+    gl::Program geometry_program_;  ///< the primaries' faces
     gl::Texture depth_;          ///< resized with the camera
     gl::Framebuffer framebuffer_;
 };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cutaway/camera.h"
+#include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/grid_buffers.h"
 #include "gl/shader_library.h"
@@ -21,6 +22,7 @@ struct CutSurfaceInputs {
     float aperture_v_rad = 0;
     float back_margin = 0;     ///< render units behind each primary's far side
     float rim_depth = 0;       ///< depth (along the view axis) where nothing lies in front: walls stop
+    SeedSource seeds = SeedSource::boxes;  ///< for the strategies that start from seeds
 };
 
 class CutSurfaceStrategy {
