@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/parameter_options.h"
 #include "generators/generator.h"
 #include "generators/presets.h"
 #include "generators/write_progress.h"
@@ -16,9 +17,6 @@ namespace {
 
 using generators::GeneratorParameters;
 
-/// Applies one given option onto the parameters (options left out keep the preset's value).
-using Override = std::function<void(GeneratorParameters&)>;
-
 struct GenerateOptions {
     std::string preset;
     std::vector<int> dims;
@@ -27,19 +25,8 @@ struct GenerateOptions {
     double memory_limit_gb = double(generators::kDefaultGeneratorMemoryLimit) / double(1 << 30);
     bool quiet = false;
     bool list_presets = false;
-    std::vector<Override> overrides;
+    ParameterOverrides<GeneratorParameters> overrides;
 };
-
-/// Registers `--name VALUE` bound to one parameter field.
-template <typename T>
-void add_parameter(CLI::App* cmd, GenerateOptions& options, const std::string& name, T GeneratorParameters::*field,
-                   const std::string& help) {
-    auto value = std::make_shared<T>();
-    CLI::Option* option = cmd->add_option(name, *value, help);
-    options.overrides.push_back([option, value, field](GeneratorParameters& p) {
-        if (option->count() > 0) p.*field = *value;
-    });
-}
 
 GeneratorParameters effective_parameters(const GenerateOptions& options) {
     if (options.preset.empty() && options.dims.empty())
@@ -52,7 +39,7 @@ GeneratorParameters effective_parameters(const GenerateOptions& options) {
         p.length_y = options.extent[1];
         p.thickness = options.extent[2];
     }
-    for (const Override& apply : options.overrides) apply(p);
+    apply_overrides(p, options.overrides);
     return p;
 }
 
@@ -104,27 +91,27 @@ CommandAction add_generate_command(CLI::App& app) {
     cmd->add_flag("--quiet", options->quiet, "No progress lines or report");
     cmd->add_flag("--list-presets", options->list_presets, "Print the presets and exit");
     GenerateOptions& o = *options;
-    add_parameter(cmd, o, "--seed", &GeneratorParameters::seed, "Random seed (same seed, same file)");
-    add_parameter(cmd, o, "--top-depth", &GeneratorParameters::top_depth, "Mean top depth (metres, z down)");
-    add_parameter(cmd, o, "--faults", &GeneratorParameters::fault_count, "Number of fault planes (0..64)");
-    add_parameter(cmd, o, "--throw", &GeneratorParameters::throw_range, "Fault throw range MIN MAX (metres)");
-    add_parameter(cmd, o, "--dip", &GeneratorParameters::fault_dip_deg, "Fault dip from horizontal (30..90 degrees)");
-    add_parameter(cmd, o, "--azimuth", &GeneratorParameters::fault_azimuth_deg, "Mean fault strike (degrees from north)");
-    add_parameter(cmd, o, "--azimuth-spread", &GeneratorParameters::fault_azimuth_spread_deg,
+    add_parameter_option(cmd, o.overrides, "--seed", &GeneratorParameters::seed, "Random seed (same seed, same file)");
+    add_parameter_option(cmd, o.overrides, "--top-depth", &GeneratorParameters::top_depth, "Mean top depth (metres, z down)");
+    add_parameter_option(cmd, o.overrides, "--faults", &GeneratorParameters::fault_count, "Number of fault planes (0..64)");
+    add_parameter_option(cmd, o.overrides, "--throw", &GeneratorParameters::throw_range, "Fault throw range MIN MAX (metres)");
+    add_parameter_option(cmd, o.overrides, "--dip", &GeneratorParameters::fault_dip_deg, "Fault dip from horizontal (30..90 degrees)");
+    add_parameter_option(cmd, o.overrides, "--azimuth", &GeneratorParameters::fault_azimuth_deg, "Mean fault strike (degrees from north)");
+    add_parameter_option(cmd, o.overrides, "--azimuth-spread", &GeneratorParameters::fault_azimuth_spread_deg,
                   "Strike spread around the mean (degrees)");
-    add_parameter(cmd, o, "--lean-spread", &GeneratorParameters::lean_spread_pillars,
+    add_parameter_option(cmd, o.overrides, "--lean-spread", &GeneratorParameters::lean_spread_pillars,
                   "Pillars beside a fault that share its lean");
-    add_parameter(cmd, o, "--roughness", &GeneratorParameters::horizon_roughness, "Horizon relief std (metres)");
-    add_parameter(cmd, o, "--pinch-fraction", &GeneratorParameters::pinch_out_fraction,
+    add_parameter_option(cmd, o.overrides, "--roughness", &GeneratorParameters::horizon_roughness, "Horizon relief std (metres)");
+    add_parameter_option(cmd, o.overrides, "--pinch-fraction", &GeneratorParameters::pinch_out_fraction,
                   "Share of cells pinched out (0..1)");
-    add_parameter(cmd, o, "--inactive-fraction", &GeneratorParameters::inactive_fraction,
+    add_parameter_option(cmd, o.overrides, "--inactive-fraction", &GeneratorParameters::inactive_fraction,
                   "Share of cells made inactive in clusters (0..1)");
-    add_parameter(cmd, o, "--poro-mean", &GeneratorParameters::poro_mean, "Porosity mean (fraction)");
-    add_parameter(cmd, o, "--poro-std", &GeneratorParameters::poro_std, "Porosity standard deviation (fraction)");
-    add_parameter(cmd, o, "--poro-correlation", &GeneratorParameters::poro_correlation_length,
+    add_parameter_option(cmd, o.overrides, "--poro-mean", &GeneratorParameters::poro_mean, "Porosity mean (fraction)");
+    add_parameter_option(cmd, o.overrides, "--poro-std", &GeneratorParameters::poro_std, "Porosity standard deviation (fraction)");
+    add_parameter_option(cmd, o.overrides, "--poro-correlation", &GeneratorParameters::poro_correlation_length,
                   "Porosity lateral correlation length (metres)");
-    add_parameter(cmd, o, "--time-steps", &GeneratorParameters::time_steps, "SWAT time steps (0: none)");
-    add_parameter(cmd, o, "--injectors", &GeneratorParameters::injector_count, "Injector columns of the water front");
+    add_parameter_option(cmd, o.overrides, "--time-steps", &GeneratorParameters::time_steps, "SWAT time steps (0: none)");
+    add_parameter_option(cmd, o.overrides, "--injectors", &GeneratorParameters::injector_count, "Injector columns of the water front");
     return [options] { return run_generate(*options); };
 }
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/parameter_options.h"
 #include "generators/seismic_model.h"
 #include "generators/seismic_segy_writer.h"
 
@@ -22,7 +23,7 @@ struct GenerateSeismicOptions {
     bool list_presets = false;
     double memory_limit_gb = double(generators::kDefaultSeismicMemoryLimit) / double(1 << 30);
     std::string out;
-    std::vector<std::function<void(SeismicParameters&)>> overrides;
+    ParameterOverrides<SeismicParameters> overrides;
 };
 
 int format_code(const std::string& name) {
@@ -31,17 +32,6 @@ int format_code(const std::string& name) {
     if (it == codes.end())
         throw std::invalid_argument("generate-seismic: --format " + name + ": expected ibm, ieee, int32, int16 or int8");
     return it->second;
-}
-
-/// Registers `--name VALUE` bound to one parameter field (applied over the preset if given).
-template <typename T>
-void add_parameter(CLI::App* cmd, GenerateSeismicOptions& options, const std::string& name,
-                   T SeismicParameters::*field, const std::string& help) {
-    auto value = std::make_shared<T>();
-    CLI::Option* option = cmd->add_option(name, *value, help);
-    options.overrides.push_back([option, value, field](SeismicParameters& p) {
-        if (option->count() > 0) p.*field = *value;
-    });
 }
 
 int run_generate_seismic(const GenerateSeismicOptions& options) {
@@ -59,7 +49,7 @@ int run_generate_seismic(const GenerateSeismicOptions& options) {
         p.crosslines = options.dims[1];
         p.samples = options.dims[2];
     }
-    for (const auto& apply : options.overrides) apply(p);
+    apply_overrides(p, options.overrides);
 
     generators::SegyWriteOptions write;
     write.format = format_code(options.format);
@@ -90,15 +80,15 @@ CommandAction add_generate_seismic_command(CLI::App& app) {
     cmd->add_flag("--list-presets", options->list_presets, "Print the presets and exit");
     cmd->add_option("--out", options->out, "Output SEG-Y file");
     GenerateSeismicOptions& o = *options;
-    add_parameter(cmd, o, "--seed", &SeismicParameters::seed, "Random seed (same seed, same file)");
-    add_parameter(cmd, o, "--horizons", &SeismicParameters::horizons, "Reflecting layer boundaries");
-    add_parameter(cmd, o, "--faults", &SeismicParameters::faults, "Normal faults (0..16)");
-    add_parameter(cmd, o, "--max-throw", &SeismicParameters::max_throw_samples, "Largest fault throw (samples)");
-    add_parameter(cmd, o, "--dip", &SeismicParameters::fault_dip_deg, "Fault dip (30..90 degrees)");
-    add_parameter(cmd, o, "--relief", &SeismicParameters::horizon_relief_samples, "Horizon undulation (samples)");
-    add_parameter(cmd, o, "--ricker-hz", &SeismicParameters::ricker_peak_hz, "Ricker wavelet peak frequency (Hz)");
-    add_parameter(cmd, o, "--noise", &SeismicParameters::noise_fraction, "Noise std relative to the signal RMS");
-    add_parameter(cmd, o, "--sample-interval-us", &SeismicParameters::sample_interval_us,
+    add_parameter_option(cmd, o.overrides, "--seed", &SeismicParameters::seed, "Random seed (same seed, same file)");
+    add_parameter_option(cmd, o.overrides, "--horizons", &SeismicParameters::horizons, "Reflecting layer boundaries");
+    add_parameter_option(cmd, o.overrides, "--faults", &SeismicParameters::faults, "Normal faults (0..16)");
+    add_parameter_option(cmd, o.overrides, "--max-throw", &SeismicParameters::max_throw_samples, "Largest fault throw (samples)");
+    add_parameter_option(cmd, o.overrides, "--dip", &SeismicParameters::fault_dip_deg, "Fault dip (30..90 degrees)");
+    add_parameter_option(cmd, o.overrides, "--relief", &SeismicParameters::horizon_relief_samples, "Horizon undulation (samples)");
+    add_parameter_option(cmd, o.overrides, "--ricker-hz", &SeismicParameters::ricker_peak_hz, "Ricker wavelet peak frequency (Hz)");
+    add_parameter_option(cmd, o.overrides, "--noise", &SeismicParameters::noise_fraction, "Noise std relative to the signal RMS");
+    add_parameter_option(cmd, o.overrides, "--sample-interval-us", &SeismicParameters::sample_interval_us,
                   "Time between samples (microseconds)");
     return [options] { return run_generate_seismic(*options); };
 }

@@ -13,12 +13,6 @@ constexpr std::uint8_t viridis[256][3] = {
 
 }  // namespace
 
-std::array<std::uint8_t, 3> colour_map_rgb(float t) {
-    const float clamped = std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, 1.0f);
-    const auto index = std::size_t(std::lround(clamped * 255.0f));
-    return {viridis[index][0], viridis[index][1], viridis[index][2]};
-}
-
 gl::Texture make_colour_map_texture() {
     gl::Texture texture(GL_TEXTURE_1D, GL_RGBA8, 256);
     std::vector<std::uint8_t> texels(256 * 4);

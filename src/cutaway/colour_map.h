@@ -7,9 +7,6 @@
 
 namespace cutaway::pipeline {
 
-/// RGB bytes of the map at t in [0, 1] (clamped), nearest of 256 entries.
-std::array<std::uint8_t, 3> colour_map_rgb(float t);
-
 /// RGBA8 1D texture, linear filtering.
 gl::Texture make_colour_map_texture();
 

@@ -113,7 +113,7 @@ CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camer
             nearest_model_depth(frame_, cut_camera), s.seeds};
 }
 
-const CutTargets& CutawayRenderer::active_cut(const FrameSettings&) const { return last_filtered_ ? filtered_cut_ : cut_; }
+const CutTargets& CutawayRenderer::active_cut() const { return last_filtered_ ? filtered_cut_ : cut_; }
 
 FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
     if (camera.width != width_ || camera.height != height_)
@@ -151,8 +151,8 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         if (!cut_needed) return;
-        secondary_.draw(context, buffers_.secondary_faces(), s, active_cut(s), cut_camera);
-        if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, active_cut(s), cut_camera);
+        secondary_.draw(context, buffers_.secondary_faces(), s, active_cut(), cut_camera);
+        if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, active_cut(), cut_camera);
     });
     gl::timed_stage(timer_, "primary", [&] {
         scene_.framebuffer.bind();
@@ -219,7 +219,7 @@ IdImage CutawayRenderer::read_ids() const {
 FloatImage CutawayRenderer::read_scene_depth() const { return read_alpha(scene_.normal_depth, width_, height_); }
 
 FloatImage CutawayRenderer::read_cut_depth() const {
-    const CutTargets& cut = last_filtered_ ? filtered_cut_ : cut_;
+    const CutTargets& cut = active_cut();
     return read_alpha(cut.surface, cut.surface.width(), cut.surface.height());
 }
 

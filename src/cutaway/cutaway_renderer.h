@@ -94,7 +94,7 @@ private:
     CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
-    const CutTargets& active_cut(const FrameSettings& settings) const;
+    const CutTargets& active_cut() const;
 
     const gl::ShaderLibrary& shaders_;
     int width_, height_;

@@ -8,7 +8,11 @@ metrics::PixelIds view(const IdImage& ids) { return {ids.width, ids.height, ids.
 }  // namespace
 
 std::size_t secondary_pixels_in_front_of_cut(const CutawayRenderer& renderer, double relative_tolerance) {
-    const IdImage ids = renderer.read_ids();
+    return secondary_pixels_in_front_of_cut(renderer, renderer.read_ids(), relative_tolerance);
+}
+
+std::size_t secondary_pixels_in_front_of_cut(const CutawayRenderer& renderer, const IdImage& ids,
+                                             double relative_tolerance) {
     const FloatImage scene = renderer.read_scene_depth();
     const FloatImage cut = renderer.read_cut_depth();
     std::size_t count = 0;
@@ -29,7 +33,7 @@ FrameMetrics measure_frame(CutawayRenderer& renderer, const FrameSettings& setti
     result.border_width = metrics::line_width(view(cutaway), flag_border);
     // Depth is compared in float32 on both sides; 1e-5 relative covers the rounding of
     // reconstructing eye depth from the interpolated world position (a few ulps).
-    if (!renderer.frozen()) result.secondary_in_front = secondary_pixels_in_front_of_cut(renderer, 1e-5);
+    if (!renderer.frozen()) result.secondary_in_front = secondary_pixels_in_front_of_cut(renderer, cutaway, 1e-5);
     const std::size_t kept = metrics::context_pixels(view(cutaway));
 
     FrameSettings primaries_only = plain;

@@ -20,5 +20,8 @@ FrameMetrics measure_frame(CutawayRenderer& renderer, const FrameSettings& setti
 /// Secondary pixels of the renderer's last frame whose depth lies in front of the cut by more
 /// than `relative_tolerance` x depth. Only meaningful when the cut camera is the model camera.
 std::size_t secondary_pixels_in_front_of_cut(const CutawayRenderer& renderer, double relative_tolerance);
+/// The same, with the last frame's ids already read back.
+std::size_t secondary_pixels_in_front_of_cut(const CutawayRenderer& renderer, const IdImage& ids,
+                                             double relative_tolerance);
 
 }  // namespace cutaway::pipeline

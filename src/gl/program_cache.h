@@ -21,7 +21,6 @@ public:
         if (found == programs_.end()) found = programs_.emplace(key, shaders_->build(stages_, defines)).first;
         return found->second;
     }
-    void clear() { programs_.clear(); }
 
 private:
     const ShaderLibrary* shaders_;

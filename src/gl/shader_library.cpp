@@ -77,7 +77,6 @@ ExpandedSource ShaderLibrary::expand(const std::string& file, const ShaderDefine
         if (int(stack.size()) >= max_include_depth)
             throw GlError("shader file " + path.string() + ": includes nested deeper than 16");
         stack.push_back(path);
-        if (std::find(read_files_.begin(), read_files_.end(), path) == read_files_.end()) read_files_.push_back(path);
         const std::size_t number = out.files.size();
         out.files.push_back(path);
         std::istringstream lines(read_text(path));
@@ -138,16 +137,6 @@ Program ShaderLibrary::build(const std::vector<ShaderStage>& stages, const Shade
     if (!ok) throw GlError("shader program " + names + " does not link:\n" + info_log(program.id(), true));
     for (const Shader& shader : shaders) glDetachShader(program.id(), shader.id());
     return program;
-}
-
-std::filesystem::file_time_type ShaderLibrary::newest_source_time() const {
-    std::filesystem::file_time_type newest{};
-    for (const auto& path : read_files_) {
-        std::error_code error;
-        const auto time = std::filesystem::last_write_time(path, error);
-        if (!error) newest = std::max(newest, time);
-    }
-    return newest;
 }
 
 }  // namespace cutaway::gl

@@ -44,12 +44,8 @@ public:
     /// Compiles and links the stages; throws GlError with the info log and file names on failure.
     Program build(const std::vector<ShaderStage>& stages, const ShaderDefines& defines = {}) const;
 
-    /// Latest modification time over every file the library has read (for hot reload).
-    std::filesystem::file_time_type newest_source_time() const;
-
 private:
     std::filesystem::path root_;
-    mutable std::vector<std::filesystem::path> read_files_;
 };
 
 }  // namespace cutaway::gl

@@ -1,0 +1,33 @@
+#pragma once
+// Command-line options bound to fields of a generator's parameter struct: an option given on the
+// command line overrides the preset's value, one left out keeps it.
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace cutaway::app {
+
+template <typename Parameters>
+using ParameterOverrides = std::vector<std::function<void(Parameters&)>>;
+
+/// Registers `--name VALUE` on `command`, bound to `field`.
+template <typename Parameters, typename T>
+void add_parameter_option(CLI::App* command, ParameterOverrides<Parameters>& overrides, const std::string& name,
+                          T Parameters::*field, const std::string& help) {
+    auto value = std::make_shared<T>();
+    CLI::Option* option = command->add_option(name, *value, help);
+    overrides.push_back([option, value, field](Parameters& p) {
+        if (option->count() > 0) p.*field = *value;
+    });
+}
+
+/// Applies the options that were given.
+template <typename Parameters>
+void apply_overrides(Parameters& parameters, const ParameterOverrides<Parameters>& overrides) {
+    for (const auto& apply : overrides) apply(parameters);
+}
+
+}  // namespace cutaway::app
