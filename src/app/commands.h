@@ -14,5 +14,6 @@ CommandAction add_generate_command(CLI::App& app);
 CommandAction add_render_command(CLI::App& app);
 CommandAction add_volume_command(CLI::App& app);
 CommandAction add_generate_seismic_command(CLI::App& app);
+CommandAction add_view_command(CLI::App& app);
 
 }  // namespace cutaway::app

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     const cutaway::app::CommandAction render = cutaway::app::add_render_command(app);
     const cutaway::app::CommandAction volume = cutaway::app::add_volume_command(app);
     const cutaway::app::CommandAction generate_seismic = cutaway::app::add_generate_seismic_command(app);
+    const cutaway::app::CommandAction view = cutaway::app::add_view_command(app);
 
     try {
         app.parse(argc, argv);
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("render")) return render();
         if (app.got_subcommand("volume")) return volume();
         if (app.got_subcommand("generate-seismic")) return generate_seismic();
+        if (app.got_subcommand("view")) return view();
     } catch (const cutaway::grid::GrdeclError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;

@@ -75,13 +75,15 @@ nlohmann::json RenderOptions::describe() const {
             {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
 }
 
-void add_render_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")->required();
+void add_selection_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)");
     c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2);
     c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)");
     c.add_option("--step", o.step, "time step of a dynamic property (0-based)");
     c.add_option("--ijk-box", o.ijk_box, "restrict primaries to I0 J0 K0 I1 J1 K1 (0-based, inclusive)")->expected(6);
+}
+
+void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--strategy", o.settings.strategy, "cut-surface strategy");
     c.add_option("--seeds", o.seeds, "seeds of the distance-transform strategies: boxes|geometry");
     c.add_option("--border", o.border, "border lines: raycast|threshold");
@@ -93,10 +95,6 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--aperture", o.aperture, "horizontal and vertical aperture H V, degrees 0..90")->expected(2);
     c.add_flag("--aperture-180", o.aperture_180, "remove everything between the primaries and the camera");
     c.add_option("--back-margin", o.settings.back_margin, "back-plane margin, fraction of the model radius");
-    c.add_option("--camera", o.camera, "AZ EL DIST: degrees around the model centre; DIST 0 frames the model")->expected(3);
-    c.add_option("--freeze-camera", o.freeze_camera, "freeze view: the cut is made from this AZ EL DIST")->expected(3);
-    c.add_option("--size", o.size, "image W H, pixels")->expected(2);
-    c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)");
     c.add_flag("--saturation", o.settings.saturation, "saturation contrast between primaries and secondaries");
     c.add_flag("--silhouette", o.settings.silhouette, "silhouette of the primary cluster");
     c.add_option("--silhouette-width", o.settings.silhouette_width_px, "silhouette width, pixels");
@@ -104,6 +102,27 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--contours", o.contours, "shell contour lines: on|off");
     c.add_option("--only", o.only, "both|primaries|secondaries");
     c.add_flag("!--no-colour-bar", o.settings.colour_bar, "leave out the colour bar");
+}
+
+void add_scene_options(CLI::App& c, RenderOptions& o) {
+    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")->required();
+    add_selection_options(c, o);
+    add_frame_options(c, o);
+    c.add_option("--camera", o.camera, "AZ EL DIST: degrees around the model centre; DIST 0 frames the model")->expected(3);
+    c.add_option("--freeze-camera", o.freeze_camera, "freeze view: the cut is made from this AZ EL DIST")->expected(3);
+    c.add_option("--size", o.size, "image W H, pixels")->expected(2);
+    c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)");
+    c.add_option("--memory-limit-gb", o.memory_limit_gb, "refuse models needing more memory than this");
+    c.callback([&o] {
+        o.width = o.size[0];
+        o.height = o.size[1];
+        if (o.freeze_camera.size() == 3)
+            o.freeze_pose = pipeline::OrbitPose{o.freeze_camera[0], o.freeze_camera[1], o.freeze_camera[2], glm::vec3(0)};
+    });
+}
+
+void add_render_options(CLI::App& c, RenderOptions& o) {
+    add_scene_options(c, o);
     c.add_option("--out", o.out, "output PNG")->required();
     c.add_option("--stats", o.stats, "write stage times, metrics and configuration as JSON");
     c.add_flag("--baseline", o.baseline, "also time a plain shaded frame of the whole model (baseline_ms)");
@@ -114,13 +133,6 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--warmup", o.warmup, "untimed frames first")->check(CLI::Range(0, 100));
     c.add_option("--repeat", o.repeat, "timed frames; stats hold medians")->check(CLI::Range(1, 1000));
     c.add_option("--egl-platform", o.egl_platform, "auto|surfaceless|device");
-    c.add_option("--memory-limit-gb", o.memory_limit_gb, "refuse models needing more memory than this");
-    c.callback([&o] {
-        o.width = o.size[0];
-        o.height = o.size[1];
-        if (o.freeze_camera.size() == 3)
-            o.freeze_pose = pipeline::OrbitPose{o.freeze_camera[0], o.freeze_camera[1], o.freeze_camera[2], glm::vec3(0)};
-    });
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options) {

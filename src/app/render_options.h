@@ -57,7 +57,14 @@ struct RenderOptions {
     nlohmann::json describe() const;
 };
 
-/// Registers the options on `command`; parsed values land in `options` (finalised by a callback).
+/// Which cells are primaries: --property, --range, --primary-fraction, --step, --ijk-box.
+void add_selection_options(CLI::App& command, RenderOptions& options);
+/// Every switch of the frame (FrameSettings): --strategy, --border, --mean-filter, --ssao, ...
+void add_frame_options(CLI::App& command, RenderOptions& options);
+/// The model, selection and frame options plus camera, size, z-scale and memory limit: what
+/// `cutaway render` and `cutaway view` share. Parsed values land in `options` (finalised by a callback).
+void add_scene_options(CLI::App& command, RenderOptions& options);
+/// add_scene_options plus the headless run's outputs and repetitions (`cutaway render`).
 void add_render_options(CLI::App& command, RenderOptions& options);
 
 /// The property cells are coloured and selected by.

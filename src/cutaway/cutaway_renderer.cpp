@@ -199,6 +199,12 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera) {
     return timer_.stages().back();
 }
 
+void CutawayRenderer::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {
+    const bool same_size = x1 - x0 == width_ && y1 - y0 == height_;
+    glBlitNamedFramebuffer(post_.final_framebuffer.id(), framebuffer, 0, 0, width_, height_, x0, y0, x1, y1,
+                           GL_COLOR_BUFFER_BIT, same_size ? GL_NEAREST : GL_LINEAR);
+}
+
 gl::RgbaImage CutawayRenderer::read_image() const {
     return gl::read_rgba(post_.final_framebuffer.id(), 0, width_, height_);
 }

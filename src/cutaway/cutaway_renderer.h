@@ -78,6 +78,9 @@ public:
     gl::StageTime render_baseline(const Camera& camera);
 
     gl::RgbaImage read_image() const;
+    /// Copies the last frame onto `framebuffer` (0: a window's) over the rectangle (x0, y0)-(x1, y1),
+    /// scaled with linear filtering when the sizes differ.
+    void present(unsigned framebuffer, int x0, int y0, int x1, int y1) const;
     IdImage read_ids() const;
     /// Linear depth of the visible surface in the model camera (0 = background).
     FloatImage read_scene_depth() const;

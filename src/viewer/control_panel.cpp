@@ -1,0 +1,162 @@
+#include "viewer/control_panel.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <imgui.h>
+
+#include "cutaway/cut_surface/cut_surface_registry.h"
+
+namespace cutaway::viewer {
+namespace {
+
+/// A combo over `choices` editing a string option; true when it changed.
+bool choice_combo(const char* label, std::string& value, const std::vector<std::string>& choices) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, value.c_str())) {
+        for (const std::string& choice : choices) {
+            const bool selected = choice == value;
+            if (ImGui::Selectable(choice.c_str(), selected) && !selected) {
+                value = choice;
+                changed = true;
+            }
+        }
+        ImGui::EndCombo();
+    }
+    return changed;
+}
+
+/// A checkbox over an "on"/"off" option.
+bool on_off_checkbox(const char* label, std::string& value) {
+    bool on = value == "on";
+    if (!ImGui::Checkbox(label, &on)) return false;
+    value = on ? "on" : "off";
+    return true;
+}
+
+std::vector<std::string> property_names(const grid::CornerPointGrid& grid) {
+    std::vector<std::string> names = grid.property_names();
+    for (const std::string& name : grid.dynamic_property_names()) names.push_back(name);
+    return names;
+}
+
+unsigned property_section(ViewerState& state, const ViewerScene& scene) {
+    app::RenderOptions& o = state.options;
+    const app::PropertyChoice& property = scene.property();
+    unsigned changes = change_none;
+    std::string name = property.name;
+    const std::vector<std::string> names = property_names(scene.grid());
+    if (!names.empty() && choice_combo("property", name, names)) {
+        o.property = name;
+        o.step = scene.grid().step_count(name) > 0 ? 0 : -1;
+        o.range.clear();
+        o.primary_fraction = 0;
+        changes |= change_selection;
+    }
+    const PropertyHistogram& histogram = scene.histogram();
+    ImGui::PlotHistogram("##histogram", histogram.counts.data(), int(histogram.counts.size()), 0,
+                         "active cells", 0.0f, FLT_MAX, ImVec2(0, 60));
+    float low = property.primary_range.min, high = property.primary_range.max;
+    const float lo_limit = property.colour_range.min, hi_limit = property.colour_range.max;
+    bool range_changed = ImGui::SliderFloat("primary min", &low, lo_limit, hi_limit, "%.4g");
+    range_changed |= ImGui::SliderFloat("primary max", &high, lo_limit, hi_limit, "%.4g");
+    if (range_changed) {
+        o.range = {std::min(low, high), std::max(low, high)};
+        o.primary_fraction = 0;
+        changes |= change_selection;
+    }
+    ImGui::Text("%zu primary cells of %zu active", scene.primary_count(), scene.grid().active_count());
+    if (const std::size_t steps = scene.step_count(); steps > 0) {
+        int step = std::max(o.step, 0);
+        if (ImGui::SliderInt("time step", &step, 0, int(steps) - 1)) {
+            o.step = step;
+            changes |= change_selection;
+        }
+        ImGui::Checkbox("play", &state.playing);
+        ImGui::SameLine();
+        ImGui::SliderInt("frames/step", &state.play_every_frames, 1, 60);
+    }
+    return changes;
+}
+
+unsigned cut_section(ViewerState& state) {
+    app::RenderOptions& o = state.options;
+    std::vector<std::string> strategies;
+    for (const pipeline::CutSurfaceEntry& entry : pipeline::cut_surface_strategies()) strategies.push_back(entry.name);
+    bool changed = choice_combo("strategy", o.settings.strategy, strategies);
+    changed |= choice_combo("seeds", o.seeds, {"boxes", "geometry"});
+    changed |= ImGui::SliderFloat("aperture H", &o.aperture[0], 0, 90, "%.1f deg");
+    changed |= ImGui::SliderFloat("aperture V", &o.aperture[1], 0, 90, "%.1f deg");
+    changed |= ImGui::Checkbox("aperture 180 (remove all in front)", &o.aperture_180);
+    bool frozen = state.frozen_pose.has_value();
+    if (ImGui::Checkbox("freeze view [F]", &frozen)) {
+        if (frozen) state.frozen_pose = state.pose;
+        else state.frozen_pose.reset();
+        changed = true;
+    }
+    return changed ? change_frame : change_none;
+}
+
+unsigned lines_and_post_section(ViewerState& state) {
+    app::RenderOptions& o = state.options;
+    pipeline::FrameSettings& s = o.settings;
+    bool changed = choice_combo("border", o.border, {"raycast", "threshold"});
+    changed |= ImGui::SliderFloat("border width", &s.border_width_px, 1, 8, "%.1f px");
+    changed |= ImGui::SliderFloat("line width", &s.line_width_px, 0, 4, "%.1f px");
+    changed |= ImGui::Checkbox("hide internal lines", &s.hide_internal_lines);
+    changed |= on_off_checkbox("shell contours", o.contours);
+    changed |= ImGui::Checkbox("silhouette", &s.silhouette);
+    int half = s.mean_filter > 1 ? (s.mean_filter - 1) / 2 : 0;
+    char format[32];
+    std::snprintf(format, sizeof format, half ? "k = %d" : "off", 2 * half + 1);
+    if (ImGui::SliderInt("mean filter", &half, 0, 16, format)) {
+        s.mean_filter = half ? 2 * half + 1 : 0;
+        changed = true;
+    }
+    changed |= choice_combo("kernel", o.kernel, {"full", "sampled"});
+    changed |= on_off_checkbox("SSAO", o.ssao);
+    changed |= ImGui::Checkbox("saturation contrast", &s.saturation);
+    changed |= choice_combo("show", o.only, {"both", "primaries", "secondaries"});
+    changed |= ImGui::Checkbox("colour bar", &s.colour_bar);
+    return changed ? change_frame : change_none;
+}
+
+unsigned view_section(ViewerState& state, const PanelInfo& info, PanelRequests& requests) {
+    unsigned changes = change_none;
+    const char* scales[] = {"100%", "75%", "50%", "25%"};
+    const float values[] = {1.0f, 0.75f, 0.5f, 0.25f};
+    int current = int(std::find(std::begin(values), std::end(values), state.render_scale) - std::begin(values));
+    if (ImGui::Combo("render scale", &current, scales, IM_ARRAYSIZE(scales)) && current < IM_ARRAYSIZE(values)) {
+        state.render_scale = values[current];
+        changes |= change_size;
+    }
+    ImGui::Text("render %d x %d", info.render_width, info.render_height);
+    ImGui::Text("camera az %.1f el %.1f dist %.4g", state.pose.azimuth_deg, state.pose.elevation_deg, state.pose.distance);
+    if (ImGui::Button("reset camera [R]")) requests.reset_camera = true;
+    ImGui::SameLine();
+    if (ImGui::Button("screenshot [F12]")) requests.screenshot = true;
+    ImGui::TextDisabled("drag: orbit, right drag: pan, wheel: zoom, H: hide panel");
+    return changes;
+}
+
+}  // namespace
+
+unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const PanelInfo& info,
+                            PanelRequests& requests) {
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+    unsigned changes = change_none;
+    if (ImGui::Begin("cutaway")) {
+        ImGui::TextWrapped("%s", scene.description().c_str());
+        ImGui::TextDisabled("%s", info.gl_renderer.c_str());
+        if (!info.message.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%s", info.message.c_str());
+        if (ImGui::CollapsingHeader("property and primaries", ImGuiTreeNodeFlags_DefaultOpen))
+            changes |= property_section(state, scene);
+        if (ImGui::CollapsingHeader("cut", ImGuiTreeNodeFlags_DefaultOpen)) changes |= cut_section(state);
+        if (ImGui::CollapsingHeader("lines and post-processing")) changes |= lines_and_post_section(state);
+        if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen)) changes |= view_section(state, info, requests);
+    }
+    ImGui::End();
+    return changes;
+}
+
+}  // namespace cutaway::viewer

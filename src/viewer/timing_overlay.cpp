@@ -1,0 +1,42 @@
+#include "viewer/timing_overlay.h"
+
+#include <imgui.h>
+
+namespace cutaway::viewer {
+
+void draw_timing_overlay(const FrameTimings& timings) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 8, viewport->WorkPos.y + 8),
+                            ImGuiCond_Always, ImVec2(1, 0));
+    ImGui::SetNextWindowBgAlpha(0.6f);
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
+    if (ImGui::Begin("timing", nullptr, flags)) {
+        const double frame_ms = timings.last_loop_ms();
+        ImGui::Text("frame %.1f ms (%.1f fps)", frame_ms, frame_ms > 0 ? 1000.0 / frame_ms : 0.0);
+        ImGui::Text("median frame: %.1f ms rendering, %.1f ms idle", timings.loop_ms_rendering(), timings.loop_ms_idle());
+        ImGui::Separator();
+        ImGui::Text("stage medians of the last %zu frames (fenced)", timings.window());
+        if (ImGui::BeginTable("stages", 3, ImGuiTableFlags_SizingFixedFit)) {
+            ImGui::TableSetupColumn("stage");
+            ImGui::TableSetupColumn("wall ms");
+            ImGui::TableSetupColumn("GL query ms");
+            ImGui::TableHeadersRow();
+            for (const std::string& name : timings.stage_order()) {
+                const StageMedian stage = timings.stage(name);
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextUnformatted(name.c_str());
+                ImGui::TableNextColumn();
+                ImGui::Text("%8.2f", stage.wall_ms);
+                ImGui::TableNextColumn();
+                if (stage.gl_query_valid) ImGui::Text("%8.2f", stage.gl_query_ms);
+                else ImGui::TextDisabled("%8.2f invalid", stage.gl_query_ms);
+            }
+            ImGui::EndTable();
+        }
+    }
+    ImGui::End();
+}
+
+}  // namespace cutaway::viewer

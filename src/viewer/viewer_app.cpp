@@ -1,0 +1,321 @@
+#include "viewer/viewer_app.h"
+
+#include <epoxy/gl.h>
+// epoxy first: GLFW must not pull in the system GL header.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <stdexcept>
+
+#include "app/run_context.h"
+#include "gl/gl_error.h"
+#include "gl/image.h"
+#include "viewer/camera_controller.h"
+#include "viewer/option_tokens.h"
+#include "viewer/timing_overlay.h"
+
+namespace cutaway::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double milliseconds_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+/// The viewer's key names (the script's `key NAME`) of the GLFW keys it binds.
+std::string key_name(int key) {
+    switch (key) {
+        case GLFW_KEY_F: return "F";
+        case GLFW_KEY_H: return "H";
+        case GLFW_KEY_R: return "R";
+        case GLFW_KEY_SPACE: return "SPACE";
+        case GLFW_KEY_F12: return "F12";
+        case GLFW_KEY_ESCAPE: return "ESCAPE";
+        default: return "";
+    }
+}
+
+/// Queues pressed keys on `keys` (through the window's user pointer) before ImGui installs its
+/// own callbacks, which chain to this one.
+gl::GlfwWindow& install_key_queue(gl::GlfwWindow& window, std::deque<int>& keys) {
+    glfwSetWindowUserPointer(window.handle(), &keys);
+    glfwSetKeyCallback(window.handle(), [](GLFWwindow* handle, int key, int, int action, int) {
+        if (action == GLFW_PRESS) static_cast<std::deque<int>*>(glfwGetWindowUserPointer(handle))->push_back(key);
+    });
+    return window;
+}
+
+gl::WindowOptions window_options(const ViewerOptions& options) {
+    gl::WindowOptions window;
+    window.width = options.render.width;
+    window.height = options.render.height;
+    window.title = "cutaway view: " + (options.render.model.empty() ? std::string() : options.render.model.front());
+#ifndef NDEBUG
+    window.debug_output = true;
+#endif
+    return window;
+}
+
+bool on_off(const std::string& value) { return value == "on"; }
+
+}  // namespace
+
+ViewerApp::ViewerApp(ViewerOptions options)
+    : options_(std::move(options)),
+      window_(window_options(options_)),
+      imgui_(install_key_queue(window_, pressed_keys_)),
+      shaders_(gl::ShaderLibrary::default_root()),
+      shader_watcher_(shaders_.root()),
+      timings_(std::size_t(options_.timing_window)) {
+    if (!options_.script.empty()) script_.emplace(parse_viewer_script(options_.script));
+    state_.options = options_.render;
+    state_.pose = options_.render.camera_pose();
+    initial_pose_ = state_.pose;
+    state_.frozen_pose = options_.render.freeze_pose;
+    state_.ui_visible = !options_.no_ui;
+    state_.render_scale = options_.render_scale;
+    settings_ = state_.options.frame_settings();
+    info_.gl_renderer = gl::gl_renderer() + " (" + window_.platform() + ")";
+    window_fb_width_ = window_.framebuffer_width();
+    window_fb_height_ = window_.framebuffer_height();
+    scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.memory_limit_bytes()),
+                                           shaders_, state_.options, render_width(), render_height());
+    if (scene_->primary_count() == 0)
+        info_.message = "no cell lies in the primary range; showing the context only";
+}
+
+int ViewerApp::render_width() const { return std::max(1, int(std::lround(window_fb_width_ * state_.render_scale))); }
+int ViewerApp::render_height() const { return std::max(1, int(std::lround(window_fb_height_ * state_.render_scale))); }
+
+pipeline::Camera ViewerApp::camera_for(const pipeline::OrbitPose& pose) const {
+    return pipeline::make_orbit_camera(scene_->renderer().frame(), pose, render_width(), render_height());
+}
+
+int ViewerApp::run() {
+    std::cout << "cutaway view: " << scene_->description() << ", " << scene_->primary_count() << " primary cells, "
+              << info_.gl_renderer << '\n' << std::flush;
+    bool running = true;
+    while (running) {
+        const bool last_frame_due = options_.frames > 0 && frame_index_ + 1 >= options_.frames;
+        running = frame(last_frame_due) && !last_frame_due;
+    }
+    if (!options_.stats.empty()) write_stats();
+    return 0;
+}
+
+bool ViewerApp::frame(bool last_frame_due) {
+    const bool waiting_is_fine = !script_ && options_.frames == 0 && !needs_render_ && !state_.playing;
+    if (waiting_is_fine) glfwWaitEventsTimeout(0.25);  // idle: no busy loop, still polls shader edits
+    else glfwPollEvents();
+    const Clock::time_point started = Clock::now();
+
+    reload_shaders_if_edited();
+    unsigned changes = change_none;
+    if (script_ && frame_index_ > 0)  // the script starts once the first frame is on screen
+        script_->run_frame([&](const ScriptStep& step) { return run_step(step, changes); });
+    imgui_.begin_frame();
+    changes |= handle_keys() | mouse_camera() | advance_play();
+    PanelRequests requests;
+    if (state_.ui_visible) {
+        changes |= draw_control_panel(state_, *scene_, info_, requests);
+        draw_timing_overlay(timings_);
+    }
+    if (requests.reset_camera) changes |= press_key("R");
+    if (requests.screenshot) changes |= press_key("F12");
+    if (window_.framebuffer_width() != window_fb_width_ || window_.framebuffer_height() != window_fb_height_) {
+        window_fb_width_ = window_.framebuffer_width();
+        window_fb_height_ = window_.framebuffer_height();
+        changes |= change_size;
+    }
+    apply(changes);
+
+    bool rendered = false;
+    if (needs_render_ && window_fb_width_ > 0 && window_fb_height_ > 0) {
+        sync_freeze();
+        timings_.add_render(scene_->renderer().render(settings_, camera_for(state_.pose)));
+        needs_render_ = false;
+        rendered = true;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, window_fb_width_, window_fb_height_);
+    glClearColor(0, 0, 0, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    scene_->renderer().present(0, 0, 0, window_fb_width_, window_fb_height_);
+    imgui_.end_frame(state_.ui_visible);
+
+    const bool stopping = quit_ || window_.close_requested() || last_frame_due;
+    if (!screenshot_due_.empty()) write_screenshot(std::exchange(screenshot_due_, {}));
+    if (stopping && !options_.screenshot.empty()) write_screenshot(options_.screenshot);
+    window_.swap_buffers();
+    timings_.add_loop(milliseconds_since(started), rendered);
+    if (frame_index_ == 0) std::cout << "cutaway view: ready (first frame drawn)\n" << std::flush;
+    ++frame_index_;
+    return !stopping;
+}
+
+unsigned ViewerApp::handle_keys() {
+    unsigned changes = change_none;
+    const bool typing = ImGui::GetIO().WantCaptureKeyboard;
+    while (!pressed_keys_.empty()) {
+        const std::string name = key_name(pressed_keys_.front());
+        pressed_keys_.pop_front();
+        if (!name.empty() && !typing) changes |= press_key(name);
+    }
+    return changes;
+}
+
+unsigned ViewerApp::press_key(const std::string& name) {
+    if (name == "F") {
+        if (state_.frozen_pose) state_.frozen_pose.reset();
+        else state_.frozen_pose = state_.pose;
+        return change_frame;
+    }
+    if (name == "H") state_.ui_visible = !state_.ui_visible;
+    if (name == "R") {
+        state_.pose = initial_pose_;
+        return change_frame;
+    }
+    if (name == "SPACE") state_.playing = !state_.playing;
+    if (name == "F12") screenshot_due_ = next_screenshot_name();
+    if (name == "ESCAPE") quit_ = true;
+    return change_none;
+}
+
+unsigned ViewerApp::mouse_camera() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse || window_fb_height_ <= 0) return change_none;
+    const float height = float(window_fb_height_);
+    const pipeline::Camera camera = camera_for(state_.pose);
+    unsigned changes = change_none;
+    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+        orbit(state_.pose, -drag_degrees(io.MouseDelta.x, window_fb_height_), drag_degrees(io.MouseDelta.y, window_fb_height_));
+        changes = change_frame;
+    }
+    const bool panning = ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0);
+    if (panning && (io.MouseDelta.x != 0 || io.MouseDelta.y != 0)) {
+        pan(state_.pose, camera, io.MouseDelta.x / height, -io.MouseDelta.y / height);
+        changes = change_frame;
+    }
+    if (io.MouseWheel != 0) {
+        zoom(state_.pose, camera, std::pow(0.9f, io.MouseWheel));
+        changes = change_frame;
+    }
+    return changes;
+}
+
+bool ViewerApp::run_step(const ScriptStep& step, unsigned& changes) {
+    std::cout << "cutaway view: " << describe(script_->script(), step) << '\n' << std::flush;
+    const auto number = [&](std::size_t i) { return std::stof(step.args.at(i)); };
+    const pipeline::Camera camera = camera_for(state_.pose);
+    if (step.action == "orbit") orbit(state_.pose, number(0), number(1));
+    else if (step.action == "pan") pan(state_.pose, camera, number(0), number(1));
+    else if (step.action == "zoom") zoom(state_.pose, camera, number(0));
+    else if (step.action == "camera") state_.pose = {number(0), number(1), number(2), glm::vec3(0)};
+    else if (step.action == "set") changes |= apply_option_tokens(state_.options, step.args);
+    else if (step.action == "key") changes |= press_key(step.args.at(0));
+    else if (step.action == "freeze") {
+        if (on_off(step.args.at(0)) != state_.frozen_pose.has_value()) changes |= press_key("F");
+    } else if (step.action == "play") state_.playing = on_off(step.args.at(0));
+    else if (step.action == "ui") state_.ui_visible = on_off(step.args.at(0));
+    else if (step.action == "screenshot") {
+        screenshot_due_ = step.args.at(0);
+        changes |= change_frame;
+        return true;
+    } else if (step.action == "quit") {
+        quit_ = true;
+        return true;
+    } else {
+        throw std::invalid_argument("action '" + step.action + "' is not handled by the viewer");
+    }
+    changes |= change_frame;
+    return false;
+}
+
+unsigned ViewerApp::advance_play() {
+    const std::size_t steps = scene_->step_count();
+    if (!state_.playing || steps == 0 || frame_index_ % std::max(1, state_.play_every_frames) != 0) return change_none;
+    state_.options.step = int((std::size_t(std::max(state_.options.step, 0)) + 1) % steps);
+    return change_selection;
+}
+
+void ViewerApp::apply(unsigned changes) {
+    if (changes == change_none) return;
+    settings_ = state_.options.frame_settings();
+    if (changes & change_selection) {
+        try {
+            scene_->select(state_.options);
+            info_.message.clear();
+        } catch (const std::invalid_argument& error) {
+            if (script_) throw;
+            info_.message = error.what();  // the panel shows it; the previous selection stays
+        }
+    }
+    if (changes & change_size) rebuild_renderer();
+    needs_render_ = true;
+}
+
+void ViewerApp::rebuild_renderer() {
+    if (window_fb_width_ <= 0 || window_fb_height_ <= 0) return;  // minimised: keep the old one
+    scene_->rebuild_renderer(render_width(), render_height(), settings_);
+    info_.render_width = render_width();
+    info_.render_height = render_height();
+}
+
+void ViewerApp::reload_shaders_if_edited() {
+    if (!shader_watcher_.poll()) return;
+    try {
+        scene_->rebuild_renderer(render_width(), render_height(), settings_);
+        info_.message = "shaders reloaded";
+        std::cout << "cutaway view: shaders reloaded from " << shaders_.root().string() << '\n' << std::flush;
+    } catch (const gl::GlError& error) {
+        info_.message = std::string("shader edit not applied: ") + error.what();
+        std::cerr << "cutaway view: " << info_.message << '\n';
+    }
+    needs_render_ = true;
+}
+
+void ViewerApp::sync_freeze() {
+    pipeline::CutawayRenderer& renderer = scene_->renderer();
+    if (state_.frozen_pose && !renderer.frozen()) renderer.freeze(camera_for(*state_.frozen_pose));
+    if (!state_.frozen_pose && renderer.frozen()) renderer.unfreeze();
+}
+
+void ViewerApp::write_screenshot(const std::string& path) const {
+    gl::write_png(gl::read_rgba(0, 0, window_fb_width_, window_fb_height_), path);
+    std::cout << "cutaway view: screenshot " << path << '\n' << std::flush;
+}
+
+std::string ViewerApp::next_screenshot_name() {
+    char name[64];
+    std::snprintf(name, sizeof name, "cutaway-view-%03d.png", ++screenshots_taken_);
+    return name;
+}
+
+void ViewerApp::write_stats() const {
+    nlohmann::json stats = timings_.to_json();
+    stats["configuration"] = state_.options.describe();
+    stats["camera_final"] = {state_.pose.azimuth_deg, state_.pose.elevation_deg, state_.pose.distance};
+    stats["window_size"] = {window_fb_width_, window_fb_height_};
+    stats["render_size"] = {render_width(), render_height()};
+    stats["render_scale"] = state_.render_scale;
+    stats["model"] = scene_->description();
+    stats["primary_cells"] = scene_->primary_count();
+    stats["script"] = options_.script;
+    stats["gl_renderer"] = gl::gl_renderer();
+    stats["gl_version"] = gl::gl_version();
+    stats["gl_platform"] = window_.platform();
+    stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["git_revision"] = run_context::git_revision();
+    stats["timing"] = "loop_ms: wall clock of one viewer loop pass (events, script, panel, render when something "
+                      "changed, blit, swap); stages_ms: fenced wall-clock stage times of the cutaway frame";
+    std::ofstream file(options_.stats);
+    if (!file) throw std::runtime_error(options_.stats + ": cannot open for writing");
+    file << stats.dump(2) << '\n';
+}
+
+}  // namespace cutaway::viewer

@@ -1,0 +1,71 @@
+#pragma once
+// `cutaway view`: a window showing the cutaway of a model, driven by mouse, keys, the control
+// panel or a script. Each frame is drawn by the same CutawayRenderer as `cutaway render`; the
+// viewer only decides when to draw (something changed) and blits the result to the window.
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gl/glfw_window.h"
+#include "gl/shader_library.h"
+#include "viewer/control_panel.h"
+#include "viewer/frame_timings.h"
+#include "viewer/imgui_session.h"
+#include "viewer/script_runner.h"
+#include "viewer/shader_watcher.h"
+#include "viewer/viewer_options.h"
+#include "viewer/viewer_scene.h"
+#include "viewer/viewer_state.h"
+
+namespace cutaway::viewer {
+
+class ViewerApp {
+public:
+    /// Opens the window (gl::GlError when there is no display or GL 4.5), parses the script and
+    /// loads the model (std::invalid_argument / GrdeclError for bad ones).
+    explicit ViewerApp(ViewerOptions options);
+    /// Runs until the window closes, the script quits or --frames are drawn; returns the exit code.
+    int run();
+
+private:
+    /// One pass of the loop; false when the viewer should stop after it.
+    bool frame(bool last_frame_due);
+    unsigned handle_keys();
+    unsigned press_key(const std::string& name);
+    unsigned mouse_camera();
+    bool run_step(const ScriptStep& step, unsigned& changes);
+    unsigned advance_play();
+    void apply(unsigned changes);
+    void rebuild_renderer();
+    void reload_shaders_if_edited();
+    pipeline::Camera camera_for(const pipeline::OrbitPose& pose) const;
+    void sync_freeze();
+    void write_screenshot(const std::string& path) const;
+    std::string next_screenshot_name();
+    void write_stats() const;
+    int render_width() const;
+    int render_height() const;
+
+    ViewerOptions options_;
+    ViewerState state_;
+    pipeline::OrbitPose initial_pose_;
+    std::optional<ScriptRunner> script_;
+    gl::GlfwWindow window_;
+    std::deque<int> pressed_keys_;  ///< GLFW key codes queued by the key callback
+    ImGuiSession imgui_;
+    gl::ShaderLibrary shaders_;
+    ShaderWatcher shader_watcher_;
+    std::unique_ptr<ViewerScene> scene_;
+    pipeline::FrameSettings settings_;
+    FrameTimings timings_;
+    PanelInfo info_;
+    bool needs_render_ = true;
+    bool quit_ = false;
+    std::string screenshot_due_;    ///< path to write once this frame is drawn
+    int window_fb_width_ = 0, window_fb_height_ = 0;
+    long frame_index_ = 0;
+    int screenshots_taken_ = 0;
+};
+
+}  // namespace cutaway::viewer

@@ -1,0 +1,42 @@
+#include "viewer/viewer_scene.h"
+
+#include "cutaway/camera.h"
+#include "grid/primary_selection.h"
+
+namespace cutaway::viewer {
+
+ViewerScene::ViewerScene(app::LoadedModel model, const gl::ShaderLibrary& shaders, const app::RenderOptions& options,
+                         int width, int height)
+    : model_(std::move(model)), shaders_(shaders), z_scale_(options.z_scale) {
+    select(options);
+    rebuild_renderer(width, height, options.frame_settings());
+}
+
+void ViewerScene::select(const app::RenderOptions& options) {
+    app::PropertyChoice property = app::choose_property(model_.grid, options);
+    std::vector<std::uint8_t> primaries = app::select_primary_cells(model_.grid, property, options);
+    histogram_ = active_histogram(model_.grid, property.values(), histogram_bins);
+    property_ = std::move(property);
+    primaries_ = std::move(primaries);
+    primary_count_ = grid::count_primaries(primaries_);
+    if (renderer_) apply_selection(*renderer_);
+}
+
+void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings) {
+    auto renderer = std::make_unique<pipeline::CutawayRenderer>(shaders_, model_.grid, z_scale_, width, height);
+    apply_selection(*renderer);
+    // One frame compiles every program the settings use, so a broken shader fails here and the
+    // previous renderer stays.
+    renderer->render(settings, pipeline::make_orbit_camera(renderer->frame(), {}, width, height));
+    renderer_ = std::move(renderer);
+}
+
+void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
+    renderer.set_colouring(property_.values(),
+                           {property_.label, property_.colour_range.min, property_.colour_range.max});
+    renderer.set_primaries(primaries_);
+}
+
+std::size_t ViewerScene::step_count() const { return model_.grid.step_count(property_.name); }
+
+}  // namespace cutaway::viewer

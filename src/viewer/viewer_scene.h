@@ -1,0 +1,54 @@
+#pragma once
+// The model on screen: grid, chosen property, primary cells and the cutaway renderer drawing
+// them. The renderer is rebuilt for a new size or edited shaders; the selection survives.
+#include <memory>
+
+#include "app/model_source.h"
+#include "app/render_options.h"
+#include "cutaway/cutaway_renderer.h"
+#include "gl/shader_library.h"
+#include "viewer/property_histogram.h"
+
+namespace cutaway::viewer {
+
+class ViewerScene {
+public:
+    /// Chooses the property and primaries of `options` and builds a renderer of `width` x `height`.
+    /// Throws like `cutaway render` does for bad options (std::invalid_argument) or GL failures.
+    ViewerScene(app::LoadedModel model, const gl::ShaderLibrary& shaders, const app::RenderOptions& options,
+                int width, int height);
+
+    /// Re-chooses property, step and primaries from `options` (throws std::invalid_argument and
+    /// keeps the previous selection for a bad one).
+    void select(const app::RenderOptions& options);
+    /// A new renderer of `width` x `height` with the current selection. Reads the shader files
+    /// again and compiles the programs the frame uses, so it also reloads edited shaders. Throws
+    /// gl::GlError (and keeps the previous renderer) when a shader does not compile.
+    void rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings);
+
+    pipeline::CutawayRenderer& renderer() { return *renderer_; }
+    const grid::CornerPointGrid& grid() const { return model_.grid; }
+    const std::string& description() const { return model_.description; }
+    const app::PropertyChoice& property() const { return property_; }
+    std::size_t primary_count() const { return primary_count_; }
+    const PropertyHistogram& histogram() const { return histogram_; }
+    /// Time steps of the property shown (0 for a static one).
+    std::size_t step_count() const;
+
+private:
+    void apply_selection(pipeline::CutawayRenderer& renderer) const;
+
+    app::LoadedModel model_;
+    const gl::ShaderLibrary& shaders_;
+    double z_scale_;
+    app::PropertyChoice property_;
+    std::vector<std::uint8_t> primaries_;
+    std::size_t primary_count_ = 0;
+    PropertyHistogram histogram_;
+    std::unique_ptr<pipeline::CutawayRenderer> renderer_;
+};
+
+/// Bins of the histogram drawn under the range sliders.
+inline constexpr int histogram_bins = 64;
+
+}  // namespace cutaway::viewer

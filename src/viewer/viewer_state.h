@@ -1,0 +1,29 @@
+#pragma once
+// Everything the viewer's controls change. Selection and frame switches are the very options
+// `cutaway render` takes (RenderOptions), so a view can be reproduced headless with the same flags.
+#include <optional>
+
+#include "app/render_options.h"
+#include "cutaway/camera.h"
+
+namespace cutaway::viewer {
+
+struct ViewerState {
+    app::RenderOptions options;                    ///< selection and frame switches, window size
+    pipeline::OrbitPose pose;                      ///< the model camera
+    std::optional<pipeline::OrbitPose> frozen_pose;  ///< freeze view: the cut camera's pose
+    bool playing = false;                          ///< advance the time step of a dynamic property
+    int play_every_frames = 1;                     ///< frames per time step while playing
+    bool ui_visible = true;                        ///< control panel and timing overlay
+    float render_scale = 1;                        ///< render size / window framebuffer size
+};
+
+/// What a change to the state invalidates, from cheapest to dearest.
+enum Change : unsigned {
+    change_none = 0,
+    change_frame = 1,      ///< re-render with the new settings or camera
+    change_selection = 2,  ///< property, step or range: new colouring and primaries
+    change_size = 4,       ///< render size: a new renderer
+};
+
+}  // namespace cutaway::viewer
