@@ -67,12 +67,12 @@ bool on_off(const std::string& value) { return value == "on"; }
 
 ViewerApp::ViewerApp(ViewerOptions options)
     : options_(std::move(options)),
+      script_(options_.script.empty() ? std::nullopt : std::optional<ScriptRunner>(parse_viewer_script(options_.script))),
       window_(window_options(options_)),
       imgui_(install_key_queue(window_, pressed_keys_)),
       shaders_(gl::ShaderLibrary::default_root()),
       shader_watcher_(shaders_.root()),
       timings_(std::size_t(options_.timing_window)) {
-    if (!options_.script.empty()) script_.emplace(parse_viewer_script(options_.script));
     state_.options = options_.render;
     state_.pose = options_.render.camera_pose();
     initial_pose_ = state_.pose;

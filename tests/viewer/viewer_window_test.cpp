@@ -1,0 +1,218 @@
+// `cutaway view` in a real window under Xvfb (xvfb-run), driven by --script and --screenshot, as a
+// user would run it. Every frame comes from the same CutawayRenderer as `cutaway render`, on the
+// same Mesa llvmpipe driver, so the viewer's picture of a camera is compared with render's.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <thread>
+
+#include "cpu/test_files.h"
+#include "gl/image.h"
+
+namespace cutaway::test {
+namespace {
+
+struct CommandResult {
+    int exit_code = -1;
+    std::string output;  ///< stdout and stderr
+};
+
+/// Runs `command` through the shell, calling `on_line` with each output line as it arrives.
+template <typename OnLine>
+CommandResult run_command(const std::string& command, OnLine on_line) {
+    CommandResult result;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) return result;
+    std::array<char, 4096> line{};
+    while (std::fgets(line.data(), int(line.size()), pipe) != nullptr) {
+        result.output += line.data();
+        on_line(std::string(line.data()));
+    }
+    const int status = pclose(pipe);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+CommandResult run_command(const std::string& command) {
+    return run_command(command, [](const std::string&) {});
+}
+
+const std::string cutaway_binary = CUTAWAY_BINARY;
+/// A 24-bit screen: the GLX visuals of Xvfb's default 8-bit screen have no OpenGL 4.5 config.
+const std::string xvfb = std::string(XVFB_RUN) + " -a -s '-screen 0 1280x1024x24' ";
+/// The camera and frame both programs draw (small, so each run takes about a second).
+const std::string scene = " preset:petra --size 320 180 --camera 35 30 0 --no-colour-bar ";
+
+std::string view_command(const std::string& arguments) { return xvfb + cutaway_binary + " view" + scene + arguments; }
+std::string render_command(const std::string& arguments) {
+    return cutaway_binary + " render" + scene + "--no-metrics --warmup 0 --repeat 1 " + arguments;
+}
+
+/// Share of pixels whose largest channel difference exceeds `levels`.
+double differing_fraction(const gl::RgbaImage& a, const gl::RgbaImage& b, int levels) {
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    if (a.width != b.width || a.height != b.height) return 1;
+    std::size_t differing = 0;
+    for (int y = 0; y < a.height; ++y)
+        for (int x = 0; x < a.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(int(a.at(x, y)[c]) - int(b.at(x, y)[c])) > levels) {
+                    ++differing;
+                    break;
+                }
+    return double(differing) / (double(a.width) * a.height);
+}
+
+/// Pixels that are not the background colour (the top-left pixel of a frame with nothing there).
+std::vector<bool> foreground(const gl::RgbaImage& image) {
+    const std::uint8_t* background = image.at(0, 0);
+    std::vector<bool> mask(std::size_t(image.width) * image.height);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            mask[std::size_t(y) * image.width + x] = !std::equal(background, background + 3, image.at(x, y));
+    return mask;
+}
+
+std::size_t count(const std::vector<bool>& mask) { return std::size_t(std::count(mask.begin(), mask.end(), true)); }
+
+class ViewerWindowTest : public ::testing::Test {
+protected:
+    ScratchDir dir_{"viewer-window-" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name())};
+    std::string path(const std::string& name) const { return (dir_.path() / name).string(); }
+};
+
+TEST_F(ViewerWindowTest, ScreenshotEqualsRenderForTheSameCamera) {
+    const CommandResult view = run_command(view_command("--no-ui --frames 2 --screenshot " + path("view.png")));
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    const CommandResult render = run_command(render_command("--out " + path("render.png")));
+    ASSERT_EQ(render.exit_code, 0) << render.output;
+    const gl::RgbaImage viewed = gl::read_png(path("view.png")), rendered = gl::read_png(path("render.png"));
+    // Not empty: the model covers a good part of the default framing.
+    EXPECT_GT(double(count(foreground(viewed))) / (viewed.width * viewed.height), 0.2);
+    // Same renderer, shaders and driver: measured bit-identical. 0.1% of pixels may move by more
+    // than 2 levels so a driver that schedules its rasteriser threads differently still passes.
+    EXPECT_LE(differing_fraction(viewed, rendered, 2), 0.001);
+}
+
+TEST_F(ViewerWindowTest, PrimariesAppearWhereRenderPutsThem) {
+    std::ofstream(path("only.txt")) << "set --only primaries\nscreenshot " << path("view.png") << "\nquit\n";
+    const CommandResult view = run_command(view_command("--no-ui --script " + path("only.txt")));
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    const CommandResult render = run_command(render_command("--only primaries --out " + path("render.png")));
+    ASSERT_EQ(render.exit_code, 0) << render.output;
+    const std::vector<bool> viewed = foreground(gl::read_png(path("view.png")));
+    const std::vector<bool> rendered = foreground(gl::read_png(path("render.png")));
+    std::size_t both = 0, either = 0;
+    for (std::size_t i = 0; i < viewed.size() && i < rendered.size(); ++i) {
+        both += viewed[i] && rendered[i];
+        either += viewed[i] || rendered[i];
+    }
+    ASSERT_GT(count(rendered), 200u) << "the 1% PORO primaries of petra cover a few hundred pixels at 320x180";
+    // The same pixels, up to the rounding allowance of the test above.
+    EXPECT_GE(double(both) / double(either), 0.999);
+}
+
+TEST_F(ViewerWindowTest, PanelAndTimingOverlayAreDrawnOverTheFrame) {
+    ASSERT_EQ(run_command(view_command("--no-ui --frames 2 --screenshot " + path("plain.png"))).exit_code, 0);
+    const CommandResult view = run_command(view_command("--frames 3 --screenshot " + path("ui.png")));
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    const gl::RgbaImage plain = gl::read_png(path("plain.png")), ui = gl::read_png(path("ui.png"));
+    // The panel covers the top-left corner and the overlay the top-right one: most of a 60x40
+    // patch in each changes (text leaves some background showing through).
+    auto changed_share = [&](int x0, int y0) {
+        int changed = 0;
+        for (int y = y0; y < y0 + 40; ++y)
+            for (int x = x0; x < x0 + 60; ++x)
+                changed += !std::equal(plain.at(x, y), plain.at(x, y) + 3, ui.at(x, y));
+        return changed / 2400.0;
+    };
+    EXPECT_GT(changed_share(10, 10), 0.5);
+    EXPECT_GT(changed_share(ui.width - 70, 10), 0.5);
+}
+
+TEST_F(ViewerWindowTest, ScriptDrivesCameraAndEveryControl) {
+    std::ofstream(path("tour.txt")) << "# every control the panel has, through the script\n"
+                                       "screenshot " << path("start.png") << "\n"
+                                       "orbit 40 10\nzoom 0.8\npan 0.05 -0.02\n"
+                                       "screenshot " << path("moved.png") << "\n"
+                                       "camera 35 30 0\n"
+                                       "set --strategy chamfer-34 --border threshold --mean-filter 5 --ssao off\n"
+                                       "set --saturation --silhouette --hide-internal-lines --aperture 45 20\n"
+                                       "screenshot " << path("settings.png") << "\n"
+                                       "key F\norbit 60 0\n"
+                                       "screenshot " << path("frozen.png") << "\n"
+                                       "freeze off\n"
+                                       "screenshot " << path("unfrozen.png") << "\n"
+                                       "set --property SWAT --range 0.5 1\nplay on\nwait 3\nplay off\n"
+                                       "screenshot " << path("played.png") << "\n"
+                                       "key R\nui on\nkey H\nwait 1\nquit\n";
+    const CommandResult view = run_command(view_command("--no-ui --script " + path("tour.txt") + " --stats " + path("stats.json")));
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    for (const char* step : {"tour.txt:3: orbit 40 10", "tour.txt:8: set --strategy chamfer-34", "tour.txt:11: key F",
+                             "tour.txt:16: set --property SWAT --range 0.5 1", "tour.txt:25: quit"})
+        EXPECT_NE(view.output.find(step), std::string::npos) << step << "\n" << view.output;
+    const auto image = [&](const char* name) { return gl::read_png(path(name)); };
+    // Each group of actions changes the picture (a no-op action would leave it bit-identical).
+    EXPECT_GT(differing_fraction(image("start.png"), image("moved.png"), 0), 0.05);
+    EXPECT_GT(differing_fraction(image("moved.png"), image("settings.png"), 0), 0.05);
+    // Frozen: the cut stays where the first camera put it while the model turns, so releasing it
+    // changes the frame of the same camera.
+    EXPECT_GT(differing_fraction(image("frozen.png"), image("unfrozen.png"), 0), 0.01);
+    EXPECT_GT(differing_fraction(image("unfrozen.png"), image("played.png"), 0), 0.05);
+
+    std::ifstream stats_file(path("stats.json"));
+    const nlohmann::json stats = nlohmann::json::parse(stats_file);
+    EXPECT_GE(stats["rendered_frames"].get<int>(), 6);
+    EXPECT_EQ(stats["configuration"]["strategy"], "chamfer-34");
+    EXPECT_EQ(stats["configuration"]["property"], "SWAT");
+    EXPECT_GT(stats["configuration"]["step"].get<int>(), 0) << "play advanced the SWAT time step";
+    EXPECT_GT(stats["median_stages_ms"]["total"].get<double>(), 0);
+}
+
+TEST_F(ViewerWindowTest, EditedShadersAreReloadedAndBrokenOnesReported) {
+    const std::filesystem::path shaders = dir_.path() / "shaders";
+    std::filesystem::copy(CUTAWAY_SOURCE_DIR "/shaders", shaders, std::filesystem::copy_options::recursive);
+    const std::filesystem::path composite = shaders / "post" / "composite.frag";
+    std::ofstream(path("wait.txt")) << "sleep 6\nquit\n";
+    // After the first frame: an edit that compiles, then (a second later) one that does not.
+    bool edited = false;
+    const CommandResult view = run_command(
+        "CUTAWAY_SHADER_DIR=" + shaders.string() + " " + view_command("--no-ui --script " + path("wait.txt")),
+        [&](const std::string& line) {
+            if (edited || line.find("ready") == std::string::npos) return;
+            edited = true;
+            std::ofstream(composite, std::ios::app) << "\n// an edit that compiles\n";
+            std::thread([composite] {
+                std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+                std::ofstream(composite, std::ios::app) << "\nthis does not compile\n";
+            }).detach();
+        });
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    EXPECT_NE(view.output.find("shaders reloaded"), std::string::npos) << view.output;
+    EXPECT_NE(view.output.find("shader edit not applied"), std::string::npos) << view.output;
+    EXPECT_NE(view.output.find("composite.frag"), std::string::npos) << "the compile error names the file\n" << view.output;
+}
+
+TEST_F(ViewerWindowTest, BadScriptIsRefusedBeforeAWindowOpens) {
+    std::ofstream(path("bad.txt")) << "orbit 10 0\nspin 90\n";
+    // No xvfb-run: the script is checked before the window is opened.
+    const CommandResult view = run_command(cutaway_binary + " view" + scene + "--script " + path("bad.txt"));
+    EXPECT_EQ(view.exit_code, 2) << view.output;
+    EXPECT_NE(view.output.find("bad.txt:2: unknown action 'spin'"), std::string::npos) << view.output;
+}
+
+TEST_F(ViewerWindowTest, NoDisplayIsAClearErrorWithExitCodeFour) {
+    const CommandResult view = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + cutaway_binary + " view" + scene + "--frames 1");
+    EXPECT_EQ(view.exit_code, 4) << view.output;
+    EXPECT_NE(view.output.find("DISPLAY"), std::string::npos) << view.output;
+    EXPECT_NE(view.output.find("xvfb-run"), std::string::npos) << view.output;
+}
+
+}  // namespace
+}  // namespace cutaway::test
