@@ -130,7 +130,10 @@ unsigned view_section(ViewerState& state, const PanelInfo& info, PanelRequests& 
         changes |= change_size;
     }
     ImGui::Text("render %d x %d", info.render_width, info.render_height);
-    ImGui::Text("camera az %.1f el %.1f dist %.4g", state.pose.azimuth_deg, state.pose.elevation_deg, state.pose.distance);
+    if (state.pose.distance > 0)
+        ImGui::Text("camera az %.1f el %.1f dist %.4g", state.pose.azimuth_deg, state.pose.elevation_deg, state.pose.distance);
+    else
+        ImGui::Text("camera az %.1f el %.1f (framed)", state.pose.azimuth_deg, state.pose.elevation_deg);
     if (ImGui::Button("reset camera [R]")) requests.reset_camera = true;
     ImGui::SameLine();
     if (ImGui::Button("screenshot [F12]")) requests.screenshot = true;

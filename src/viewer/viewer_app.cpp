@@ -85,6 +85,8 @@ ViewerApp::ViewerApp(ViewerOptions options)
     window_fb_height_ = window_.framebuffer_height();
     scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.memory_limit_bytes()),
                                            shaders_, state_.options, render_width(), render_height());
+    info_.render_width = render_width();
+    info_.render_height = render_height();
     if (scene_->primary_count() == 0)
         info_.message = "no cell lies in the primary range; showing the context only";
 }
