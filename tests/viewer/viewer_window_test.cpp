@@ -214,5 +214,12 @@ TEST_F(ViewerWindowTest, NoDisplayIsAClearErrorWithExitCodeFour) {
     EXPECT_NE(view.output.find("xvfb-run"), std::string::npos) << view.output;
 }
 
+TEST_F(ViewerWindowTest, NoOpenGl45IsAClearErrorWithExitCodeFour) {
+    // Mesa caps the versions it offers at 3.3 here, as an old driver would.
+    const CommandResult view = run_command("MESA_GL_VERSION_OVERRIDE=3.3 " + view_command("--frames 1"));
+    EXPECT_EQ(view.exit_code, 4) << view.output;
+    EXPECT_NE(view.output.find("OpenGL 4.5 core"), std::string::npos) << view.output;
+}
+
 }  // namespace
 }  // namespace cutaway::test
