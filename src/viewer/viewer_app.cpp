@@ -85,8 +85,6 @@ ViewerApp::ViewerApp(ViewerOptions options)
     window_fb_height_ = window_.framebuffer_height();
     scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.memory_limit_bytes()),
                                            shaders_, state_.options, render_width(), render_height());
-    info_.render_width = render_width();
-    info_.render_height = render_height();
     if (scene_->primary_count() == 0)
         info_.message = "no cell lies in the primary range; showing the context only";
 }
@@ -124,6 +122,8 @@ bool ViewerApp::frame(bool last_frame_due) {
     changes |= handle_keys() | mouse_camera() | advance_play();
     PanelRequests requests;
     if (state_.ui_visible) {
+        info_.render_width = render_width();
+        info_.render_height = render_height();
         changes |= draw_control_panel(state_, *scene_, info_, requests);
         draw_timing_overlay(timings_);
     }
@@ -264,11 +264,13 @@ void ViewerApp::apply(unsigned changes) {
 void ViewerApp::rebuild_renderer() {
     if (window_fb_width_ <= 0 || window_fb_height_ <= 0) return;  // minimised: keep the old one
     scene_->rebuild_renderer(render_width(), render_height(), settings_);
-    info_.render_width = render_width();
-    info_.render_height = render_height();
 }
 
 void ViewerApp::reload_shaders_if_edited() {
+    // A few scans a second notice an editor's save at once without statting every file each frame.
+    const Clock::time_point now = Clock::now();
+    if (now - last_shader_scan_ < std::chrono::milliseconds(250)) return;
+    last_shader_scan_ = now;
     if (!shader_watcher_.poll()) return;
     try {
         scene_->rebuild_renderer(render_width(), render_height(), settings_);

@@ -2,6 +2,7 @@
 // `cutaway view`: a window showing the cutaway of a model, driven by mouse, keys, the control
 // panel or a script. Each frame is drawn by the same CutawayRenderer as `cutaway render`; the
 // viewer only decides when to draw (something changed) and blits the result to the window.
+#include <chrono>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -56,6 +57,7 @@ private:
     ImGuiSession imgui_;
     gl::ShaderLibrary shaders_;
     ShaderWatcher shader_watcher_;
+    std::chrono::steady_clock::time_point last_shader_scan_{};
     std::unique_ptr<ViewerScene> scene_;
     pipeline::FrameSettings settings_;
     FrameTimings timings_;
