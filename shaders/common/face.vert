@@ -5,6 +5,7 @@
 // Variants: CULL_FRONT_INTERIOR (secondaries: an interior face seen from outside its cell always
 // coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries, shell).
 #include "common/grid.glsl"
+#include "common/face_frame.glsl"
 
 layout(std430, binding = 3) readonly buffer Faces { uint faces[]; };
 
@@ -30,16 +31,14 @@ float distance_to_line(vec2 p, vec2 a, vec2 b) {
 
 void main() {
     uint record = faces[gl_VertexID / 6];
-    uint cell = record & 0x3ffffffu;
-    uint side = (record >> 26) & 7u;
-    uint face_class = (record >> 29) & 3u;
-    vec3 q[4];
-    for (uint k = 0u; k < 4u; ++k) q[k] = corner_position(cell, face_corners[side * 4u + k]);
-    vec3 normal = cross(q[2] - q[0], q[3] - q[1]);
-    if (cell_normals_flipped(cell)) normal = -normal;
-    vec3 centre = 0.25 * (q[0] + q[1] + q[2] + q[3]);
-    bool back_facing = dot(normal, eye_position - centre) < 0.0;
-    bool culled = dot(normal, normal) == 0.0;  // collapsed face (pinch-out)
+    uint cell = face_record_cell(record);
+    uint side = face_record_side(record);
+    uint face_class = face_record_class(record);
+    FaceFrame f = face_frame(cell, side, eye_position);
+    vec3 q[4] = f.q;
+    vec3 normal = f.normal;
+    bool back_facing = f.back_facing;
+    bool culled = f.collapsed;
 #ifdef CULL_FRONT_INTERIOR
     culled = culled || (!back_facing && face_class == face_class_interior);
 #endif

@@ -9,6 +9,12 @@ uniform uvec2 grid_size;  // NX, NY
 uniform float up_sign;    // -1 when z is depth
 uniform float z_scale;    // vertical exaggeration
 
+// Face record (src/cutaway/grid_layout.h pack_face): bits 0-26 compact cell, 27-29 side, 30-31 class.
+uint face_record_cell(uint record) { return record & 0x7ffffffu; }
+uint face_record_side(uint record) { return (record >> 27) & 7u; }
+uint face_record_class(uint record) { return record >> 30; }
+uint pack_face_record(uint cell, uint side, uint face_class) { return cell | (side << 27) | (face_class << 30); }
+
 const uint face_class_interior = 1u;
 const uint face_class_fault = 2u;
 const uint face_class_shell = 3u;

@@ -13,6 +13,7 @@
 #include "app/model_source.h"
 #include "app/render_options.h"
 #include "app/run_context.h"
+#include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cutaway_renderer.h"
 #include "cutaway/frame_metrics.h"
@@ -77,6 +78,17 @@ json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSetti
             {"exact_seconds", seconds}};
 }
 
+json faces_drawn_json(const pipeline::FacesDrawn& drawn) {
+    json faces = {{"secondary", drawn.secondary}, {"primary", drawn.primary}, {"shell_contours", drawn.shell_contours}};
+    if (drawn.culling) {
+        const pipeline::CullingCounts& c = *drawn.culling;
+        faces["culling"] = {{"bricks", c.bricks}, {"bricks_culled", c.bricks_culled}, {"cells_culled", c.cells_culled},
+                            {"cells_behind_cut", c.cells_behind}, {"cells_straddling_cut", c.cells_straddling},
+                            {"faces_selected", c.faces_requested}};
+    }
+    return faces;
+}
+
 int run_render(const RenderOptions& options) {
     const LoadedModel model = load_model(options.model, options.memory_limit_bytes());
     const grid::CornerPointGrid& grid = model.grid;
@@ -103,13 +115,25 @@ int run_render(const RenderOptions& options) {
     std::vector<pipeline::FrameTimes> runs;
     for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
     gl::write_png(renderer.read_image(), options.out);
+    if (!options.cell_ids.empty())
+        gl::write_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width, options.height), options.cell_ids);
 
     json stats = stage_statistics(runs);
+    stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
+    if (stats["faces_drawn"].contains("culling")) {
+        stats["bricks_culled"] = stats["faces_drawn"]["culling"]["bricks_culled"];
+        stats["cells_culled"] = stats["faces_drawn"]["culling"]["cells_culled"];
+    }
+    std::vector<double> unfenced;
+    for (int i = 0; i < options.repeat; ++i) unfenced.push_back(renderer.render_unfenced_ms(settings, camera));
+    stats["frame_ms_unfenced"] = median(unfenced);
     if (options.exact_check) stats["cut_vs_exact"] = exact_check(renderer, settings, camera);
     if (options.baseline) {
         std::vector<double> baseline;
-        for (int i = 0; i < std::max(1, options.repeat); ++i) baseline.push_back(renderer.render_baseline(camera).wall_ms);
+        for (int i = 0; i < std::max(1, options.repeat); ++i)
+            baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
         stats["baseline_ms"] = median(baseline);
+        stats["baseline_faces_drawn"] = renderer.faces_drawn().secondary;
         stats["total_over_baseline"] = stats["stages_ms"]["total"].get<double>() / median(baseline);
     }
     if (options.metrics) {
@@ -134,6 +158,7 @@ int run_render(const RenderOptions& options) {
     stats["cells"] = grid.cell_count();
     stats["active_cells"] = grid.active_count();
     stats["primary_cells"] = primary_count;
+    stats["gpu_memory_bytes"] = renderer.gpu_memory_bytes();
     stats["model"] = model.description;
     stats["model_load_s"] = model.load_seconds;
     stats["property"] = {{"name", property.label}, {"primary_range", {property.primary_range.min, property.primary_range.max}},

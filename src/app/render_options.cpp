@@ -46,6 +46,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
     s.contours = parse_choice<bool>("--contours", contours, {{"on", true}, {"off", false}});
     s.only = parse_choice<OnlyLayer>("--only", only, {{"both", OnlyLayer::both}, {"primaries", OnlyLayer::primaries},
                                                       {"secondaries", OnlyLayer::secondaries}});
+    s.draw = parse_choice<DrawMode>("--draw", draw, {{"visible", DrawMode::visible}, {"all-faces", DrawMode::all_faces}});
     s.seeds = parse_choice<SeedSource>("--seeds", seeds, {{"boxes", SeedSource::boxes}, {"geometry", SeedSource::geometry}});
     for (float a : aperture)
         if (!(a >= 0 && a <= 90)) throw std::invalid_argument("--aperture " + std::to_string(a) + ": expected 0..90 degrees");
@@ -63,7 +64,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
     return {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
-            {"step", step}, {"ijk_box", ijk_box}, {"strategy", s.strategy}, {"seeds", pipeline::to_string(s.seeds)},
+            {"step", step}, {"ijk_box", ijk_box}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
@@ -85,6 +86,8 @@ void add_selection_options(CLI::App& c, RenderOptions& o) {
 
 void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--strategy", o.settings.strategy, "cut-surface strategy");
+    c.add_option("--draw", o.draw,
+                 "stage 2 faces: visible (GPU culling against the frustum and the cut) | all-faces (the paper's path)");
     c.add_option("--seeds", o.seeds, "seeds of the distance-transform strategies: boxes|geometry");
     c.add_option("--border", o.border, "border lines: raycast|threshold");
     c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels");
@@ -125,6 +128,9 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     add_scene_options(c, o);
     c.add_option("--out", o.out, "output PNG")->required();
     c.add_option("--stats", o.stats, "write stage times, metrics and configuration as JSON");
+    c.add_option("--cell-ids", o.cell_ids,
+                 "write the final frame's Eclipse cell index + 1 per pixel as an RGBA8 PNG "
+                 "(R + 256 G + 65536 B + 16777216 A; 0 = no cell)");
     c.add_flag("--baseline", o.baseline, "also time a plain shaded frame of the whole model (baseline_ms)");
     c.add_flag("!--no-metrics", o.metrics, "skip the image metrics (3 extra untimed frames)");
     c.add_flag("--exact-check", o.exact_check,

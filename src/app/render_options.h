@@ -29,6 +29,7 @@ struct RenderOptions {
     std::string contours = "on";
     std::string only = "both";
     std::string seeds = "boxes";
+    std::string draw = "visible";
     std::vector<float> aperture{30, 30};
     bool aperture_180 = false;
     std::vector<float> camera{35, 30, 0};
@@ -39,6 +40,7 @@ struct RenderOptions {
     double z_scale = 0;
     std::string out;
     std::string stats;
+    std::string cell_ids;             ///< --cell-ids PNG (empty: none)
     bool baseline = false;
     bool metrics = true;
     bool exact_check = false;         ///< compare the cut with the exact cone field (cut_vs_exact)

@@ -16,6 +16,11 @@
 namespace cutaway::pipeline {
 namespace {
 
+VisibleFaces make_visible_faces(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid,
+                                const GridLayout& layout, const ModelFrame& frame) {
+    return VisibleFaces(shaders, build_cell_bricks(grid, layout.compact_of_cell, frame), selectable_face_capacity(layout));
+}
+
 GridLayout layout_for(const grid::CornerPointGrid& grid, const ModelFrame& frame) {
     const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
     return build_grid_layout(grid, classes, frame);
@@ -68,6 +73,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       layout_(layout_for(grid, frame_)),
       grid_(grid),
       buffers_(layout_, grid.dims(), frame_),
+      visible_(make_visible_faces(shaders, grid, layout_, frame_)),
       colour_map_(make_colour_map_texture()),
       cut_(width, height),
       filtered_cut_(width, height),
@@ -94,10 +100,28 @@ void CutawayRenderer::set_colouring(const std::vector<float>& values, const Colo
 }
 
 void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
-    const FaceLists lists = build_face_lists(grid_, layout_, flags);
+    const FaceLists lists = build_face_lists(grid_, layout_, flags, false);
     primary_cells_ = lists.primary_cells.size();
-    buffers_.set_selection(lists);
+    buffers_.set_selection(lists, primary_bits(lists, layout_.cells.size()));
+    primary_flags_ = flags;
+    secondary_list_built_ = false;
     frozen_valid_ = false;
+}
+
+const FaceBuffer& CutawayRenderer::secondary_face_list() {
+    if (!secondary_list_built_) {
+        buffers_.set_secondary_faces(build_face_lists(grid_, layout_, primary_flags_, true).secondary);
+        secondary_list_built_ = true;
+    }
+    return buffers_.secondary_faces();
+}
+
+void CutawayRenderer::draw_secondary_faces(DrawMode draw) {
+    if (draw == DrawMode::visible) {
+        visible_.draw();
+        return;
+    }
+    GridBuffers::draw_faces(secondary_face_list());
 }
 
 CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
@@ -144,6 +168,11 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         frozen_valid_ = frozen_camera_.has_value();
     }
     empty_vertex_array_.bind();
+    if (cut_needed && s.draw == DrawMode::visible)
+        gl::timed_stage(timer_, "culling", [&] {
+            visible_.select(buffers_, camera, cut_drawn ? &active_cut() : nullptr, cut_camera);
+        });
+    if (cut_needed && s.draw == DrawMode::all_faces) secondary_face_list();  // built on first use, untimed
     const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "secondary", [&] {
         scene_.clear();
@@ -151,7 +180,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         if (!cut_needed) return;
-        secondary_.draw(context, buffers_.secondary_faces(), s, active_cut(), cut_camera);
+        secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, active_cut(), cut_camera);
         if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, active_cut(), cut_camera);
     });
     gl::timed_stage(timer_, "primary", [&] {
@@ -169,6 +198,12 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         empty_vertex_array_.bind();
     });
     glFinish();
+    last_draw_ = s.draw;
+    last_drawn_ = {};
+    last_drawn_.secondary = cut_needed && s.draw == DrawMode::all_faces ? buffers_.secondary_faces().count : 0;
+    last_drawn_.primary = draw_primaries ? buffers_.primary_faces().count : 0;
+    last_drawn_.shell_contours = s.contours ? buffers_.shell_faces().count : 0;
+    visible_used_ = cut_needed && s.draw == DrawMode::visible;
     FrameTimes times;
     times.stages = timer_.stages();
     times.total.stage = "total";
@@ -181,23 +216,56 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
     return times;
 }
 
-gl::StageTime CutawayRenderer::render_baseline(const Camera& camera) {
+double CutawayRenderer::render_unfenced_ms(const FrameSettings& settings, const Camera& camera) {
+    timer_.set_fenced(false);
+    try {
+        const double total = render(settings, camera).total.wall_ms;
+        timer_.set_fenced(true);
+        return total;
+    } catch (...) {
+        timer_.set_fenced(true);
+        throw;
+    }
+}
+
+gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode draw) {
     timer_.clear();
     empty_vertex_array_.bind();
     FrameSettings plain;
     plain.border = BorderMode::threshold;
+    if (draw == DrawMode::all_faces) buffers_.all_faces();  // built on first use, untimed
     const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "baseline", [&] {
         cut_.clear();
+        if (draw == DrawMode::visible) visible_.select(buffers_, camera, nullptr, camera);
         scene_.clear();
         scene_.framebuffer.bind();
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
-        secondary_.draw(context, buffers_.all_faces(), plain, cut_, camera);
+        const auto submit = [&] {
+            if (draw == DrawMode::visible) visible_.draw();
+            else GridBuffers::draw_faces(buffers_.all_faces());
+        };
+        secondary_.draw(context, submit, plain, cut_, camera);
     });
     frozen_valid_ = false;
+    last_draw_ = draw;
+    last_drawn_ = {};
+    last_drawn_.secondary = draw == DrawMode::all_faces ? buffers_.all_faces().count : 0;
+    visible_used_ = draw == DrawMode::visible;
     return timer_.stages().back();
 }
+
+FacesDrawn CutawayRenderer::faces_drawn() const {
+    FacesDrawn drawn = last_drawn_;
+    if (visible_used_) {
+        drawn.culling = visible_.read_counts();
+        drawn.secondary = drawn.culling->faces;
+    }
+    return drawn;
+}
+
+std::size_t CutawayRenderer::gpu_memory_bytes() const { return buffers_.memory_bytes() + visible_.memory_bytes(); }
 
 void CutawayRenderer::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {
     const bool same_size = x1 - x0 == width_ && y1 - y0 == height_;
@@ -219,6 +287,13 @@ IdImage CutawayRenderer::read_ids() const {
         ids.cell[i] = pairs[2 * i];
         ids.flags[i] = pairs[2 * i + 1];
     }
+    return ids;
+}
+
+std::vector<std::uint32_t> CutawayRenderer::read_eclipse_ids() const {
+    std::vector<std::uint32_t> ids = read_ids().cell;
+    for (std::uint32_t& id : ids)
+        if (id != 0) id = (layout_.cells[id - 1] & 0x7fffffffu) + 1;
     return ids;
 }
 

@@ -19,6 +19,7 @@
 #include "cutaway/post/ssao.h"
 #include "cutaway/primary_pass.h"
 #include "cutaway/secondary_pass.h"
+#include "cutaway/visibility/visible_faces.h"
 #include "gl/image.h"
 #include "gl/stage_timer.h"
 #include "grid/corner_point_grid.h"
@@ -26,7 +27,8 @@
 namespace cutaway::pipeline {
 
 /// Stage names in stats.json (stages_ms).
-inline constexpr const char* stage_names[] = {"cut_surface", "mean_filter", "secondary", "primary", "ssao", "post"};
+/// `culling`: the visible path's pyramid + selection pass (absent with --draw all-faces).
+inline constexpr const char* stage_names[] = {"cut_surface", "mean_filter", "culling", "secondary", "primary", "ssao", "post"};
 
 struct FrameTimes {
     std::vector<gl::StageTime> stages;  ///< in execution order
@@ -46,6 +48,15 @@ struct FloatImage {
     int width = 0;
     int height = 0;
     std::vector<float> values;
+};
+
+/// Faces each pass of the last frame submitted (stats.json faces_drawn); `culling` is set for the
+/// visible path (read back from the GPU on request).
+struct FacesDrawn {
+    std::uint64_t secondary = 0;
+    std::uint64_t primary = 0;
+    std::uint64_t shell_contours = 0;
+    std::optional<CullingCounts> culling;
 };
 
 inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border = 4, flag_edge = 8, flag_shell_cut = 16;
@@ -74,14 +85,24 @@ public:
 
     /// Renders one frame with the strategy named in settings.
     FrameTimes render(const FrameSettings& settings, const Camera& camera);
-    /// The plain shaded frame of the whole model (every face, no cut, no post), timed.
-    gl::StageTime render_baseline(const Camera& camera);
+    /// The same frame without per-stage fences (only `total` is timed: one glFinish at its end),
+    /// as a user's frame runs with its stages overlapping.
+    double render_unfenced_ms(const FrameSettings& settings, const Camera& camera);
+    /// The plain shaded frame of the whole model (no cut, no post), timed: the exposed faces
+    /// (`visible`) or every face of every active cell (`all_faces`).
+    gl::StageTime render_baseline(const Camera& camera, DrawMode draw = DrawMode::visible);
+    /// What the last frame (render or render_baseline) drew.
+    FacesDrawn faces_drawn() const;
+    /// Bytes of GL buffers and textures the renderer holds (llvmpipe keeps them in host memory).
+    std::size_t gpu_memory_bytes() const;
 
     gl::RgbaImage read_image() const;
     /// Copies the last frame onto `framebuffer` (0: a window's) over the rectangle (x0, y0)-(x1, y1),
     /// scaled with linear filtering when the sizes differ.
     void present(unsigned framebuffer, int x0, int y0, int x1, int y1) const;
     IdImage read_ids() const;
+    /// Eclipse cell index + 1 of every pixel of the last frame (0: no cell), rows bottom to top.
+    std::vector<std::uint32_t> read_eclipse_ids() const;
     /// Linear depth of the visible surface in the model camera (0 = background).
     FloatImage read_scene_depth() const;
     /// The cut surface used by the last frame: depth along the cut camera's axis (0 = no cut).
@@ -98,6 +119,9 @@ private:
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut() const;
+    /// Stage 2's faces for `draw`: the culling pass's selection, or the full secondary list.
+    void draw_secondary_faces(DrawMode draw);
+    const FaceBuffer& secondary_face_list();
 
     const gl::ShaderLibrary& shaders_;
     int width_, height_;
@@ -105,6 +129,12 @@ private:
     GridLayout layout_;
     const grid::CornerPointGrid& grid_;
     GridBuffers buffers_;
+    VisibleFaces visible_;
+    std::vector<std::uint8_t> primary_flags_;  ///< per Eclipse cell, for the all-faces list built on demand
+    bool secondary_list_built_ = false;
+    FacesDrawn last_drawn_;
+    DrawMode last_draw_ = DrawMode::visible;
+    bool visible_used_ = false;  ///< the last frame's stage 2 used the culling pass
     gl::Texture colour_map_;
     ColourBarLabel label_;
     std::size_t primary_cells_ = 0;

@@ -11,9 +11,13 @@ enum class OnlyLayer { both, primaries, secondaries };
 /// Seeds of the cone-field strategies: each primary's box back face (widened by a pixel) or the
 /// primaries' own faces (the exact rear hull of the cells).
 enum class SeedSource { boxes, geometry };
+/// Stage 2's faces: `visible` (a GPU culling pass picks the faces that can reach a pixel, SPEC.md
+/// section 6) or `all_faces` (every face of every secondary cell, the paper's path).
+enum class DrawMode { visible, all_faces };
 
 struct FrameSettings {
     std::string strategy = "frustum";      ///< cut-surface strategy (cut_surface_registry.h)
+    DrawMode draw = DrawMode::visible;
     SeedSource seeds = SeedSource::boxes;  ///< seeds of the distance-transform strategies
     float aperture_h_deg = 30;             ///< wall angle from the view ray, 0..90 (90: flat)
     float aperture_v_deg = 30;
@@ -48,5 +52,6 @@ const char* to_string(BorderMode mode);
 const char* to_string(MeanFilterKernel kernel);
 const char* to_string(OnlyLayer only);
 const char* to_string(SeedSource seeds);
+const char* to_string(DrawMode draw);
 
 }  // namespace cutaway::pipeline

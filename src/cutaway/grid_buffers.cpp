@@ -1,5 +1,6 @@
 #include "cutaway/grid_buffers.h"
 
+#include <algorithm>
 #include <span>
 
 namespace cutaway::pipeline {
@@ -8,21 +9,49 @@ FaceBuffer FaceBuffer::from(const std::vector<std::uint32_t>& records) {
     return {gl::Buffer::from(std::span<const std::uint32_t>(records)), records.size()};
 }
 
+namespace {
+/// 2 bits per side (FaceClass), sides in FaceSide order, one word per active cell.
+std::vector<std::uint32_t> packed_face_classes(const GridLayout& layout) {
+    std::vector<std::uint32_t> packed(layout.cells.size(), 0);
+    for (std::size_t c = 0; c < packed.size(); ++c)
+        for (std::size_t s = 0; s < 6; ++s) packed[c] |= std::uint32_t(layout.face_classes[6 * c + s]) << (2 * s);
+    return packed;
+}
+}  // namespace
+
 GridBuffers::GridBuffers(const GridLayout& layout, const grid::GridDims& dims, const ModelFrame& frame)
-    : grid_size_(unsigned(dims.nx), unsigned(dims.ny)),
+    : layout_(layout),
+      grid_size_(unsigned(dims.nx), unsigned(dims.ny)),
       frame_(frame),
       pillars_(gl::Buffer::from(std::span<const float>(layout.pillars))),
       corner_depths_(gl::Buffer::from(std::span<const float>(layout.corner_depths))),
       cells_(gl::Buffer::from(std::span<const std::uint32_t>(layout.cells))),
       values_(layout.cells.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT),
-      shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
-      all_(FaceBuffer::from(pipeline::all_faces(layout))) {}
+      cell_face_classes_(gl::Buffer::from(std::span<const std::uint32_t>(packed_face_classes(layout)))),
+      primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
+                    GL_DYNAMIC_STORAGE_BIT),
+      shell_(FaceBuffer::from(pipeline::shell_faces(layout))) {}
+
+const FaceBuffer& GridBuffers::all_faces() const {
+    if (!all_.buffer) all_ = FaceBuffer::from(pipeline::all_faces(layout_));
+    return all_;
+}
+
+std::size_t GridBuffers::memory_bytes() const {
+    std::size_t bytes = 0;
+    for (const gl::Buffer* b : std::initializer_list<const gl::Buffer*>{&pillars_, &corner_depths_, &cells_, &values_, &cell_face_classes_, &primary_bits_,
+                                &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &shell_.buffer, &all_.buffer})
+        bytes += b->size_bytes();
+    return bytes;
+}
 
 void GridBuffers::set_values(const std::vector<float>& compact_values) {
     glNamedBufferSubData(values_.id(), 0, GLsizeiptr(compact_values.size() * sizeof(float)), compact_values.data());
 }
 
-void GridBuffers::set_selection(const FaceLists& lists) {
+void GridBuffers::set_selection(const FaceLists& lists, const std::vector<std::uint32_t>& primary_bits) {
+    glNamedBufferSubData(primary_bits_.id(), 0, GLsizeiptr(std::min(primary_bits.size() * 4, primary_bits_.size_bytes())),
+                         primary_bits.data());
     secondary_ = FaceBuffer::from(lists.secondary);
     primary_ = FaceBuffer::from(lists.primary);
     primary_cells_ = FaceBuffer::from(lists.primary_cells);
@@ -35,10 +64,20 @@ void GridBuffers::bind_geometry() const {
     values_.bind_base(GL_SHADER_STORAGE_BUFFER, values_binding);
 }
 
+void GridBuffers::bind_culling_inputs() const {
+    cell_face_classes_.bind_base(GL_SHADER_STORAGE_BUFFER, cell_face_classes_binding);
+    primary_bits_.bind_base(GL_SHADER_STORAGE_BUFFER, primary_bits_binding);
+}
+
 void GridBuffers::draw_faces(const FaceBuffer& faces) {
     if (faces.count == 0) return;
-    faces.buffer.bind_base(GL_SHADER_STORAGE_BUFFER, faces_binding);
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * faces.count));
+    // gl_VertexID / 6 indexes the bound range; chunks of 2^27 faces keep 6 x count within GLsizei.
+    constexpr std::size_t chunk_faces = std::size_t(1) << 27;
+    for (std::size_t first = 0; first < faces.count; first += chunk_faces) {
+        const std::size_t count = std::min(chunk_faces, faces.count - first);
+        glBindBufferRange(GL_SHADER_STORAGE_BUFFER, faces_binding, faces.buffer.id(), GLintptr(first * 4), GLsizeiptr(count * 4));
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * count));
+    }
 }
 
 }  // namespace cutaway::pipeline

@@ -10,7 +10,8 @@ namespace cutaway::pipeline {
 
 /// Binding points shared with the shaders.
 enum BufferBinding : unsigned { pillars_binding = 0, corner_depths_binding = 1, cells_binding = 2,
-                                faces_binding = 3, values_binding = 4, primary_cells_binding = 5 };
+                                faces_binding = 3, values_binding = 4, primary_cells_binding = 5,
+                                cell_face_classes_binding = 9, primary_bits_binding = 10 };
 
 struct FaceBuffer {
     gl::Buffer buffer;
@@ -20,14 +21,21 @@ struct FaceBuffer {
 
 class GridBuffers {
 public:
+    /// Keeps a reference to `layout`, which must outlive it.
     GridBuffers(const GridLayout& layout, const grid::GridDims& dims, const ModelFrame& frame);
 
     /// One value per active cell (compact order).
     void set_values(const std::vector<float>& compact_values);
-    void set_selection(const FaceLists& lists);
+    /// Primary faces and cells of a selection, and one primary bit per compact cell (the
+    /// culling pass reads the bits; the secondary list is only filled for `--draw all-faces`).
+    void set_selection(const FaceLists& lists, const std::vector<std::uint32_t>& primary_bits);
 
+    /// Every face of every secondary cell of the selection (the all-faces path's stage 2).
+    void set_secondary_faces(const std::vector<std::uint32_t>& records) { secondary_ = FaceBuffer::from(records); }
     /// Binds pillars, corner depths, cells and values.
     void bind_geometry() const;
+    /// Binds the per-cell face classes and primary bits (visibility/cull_cells.comp).
+    void bind_culling_inputs() const;
     /// Draws `faces` as 2 triangles each with the bound face program.
     static void draw_faces(const FaceBuffer& faces);
 
@@ -37,13 +45,18 @@ public:
     const FaceBuffer& primary_faces() const { return primary_; }
     const FaceBuffer& primary_cells() const { return primary_cells_; }
     const FaceBuffer& shell_faces() const { return shell_; }
-    const FaceBuffer& all_faces() const { return all_; }
+    /// Every face of every active cell (built on first use: only the all-faces path needs it).
+    const FaceBuffer& all_faces() const;
+    /// Bytes of every buffer allocated so far.
+    std::size_t memory_bytes() const;
 
 private:
+    const GridLayout& layout_;
     glm::uvec2 grid_size_;
     ModelFrame frame_;
-    gl::Buffer pillars_, corner_depths_, cells_, values_;
-    FaceBuffer secondary_, primary_, primary_cells_, shell_, all_;
+    gl::Buffer pillars_, corner_depths_, cells_, values_, cell_face_classes_, primary_bits_;
+    FaceBuffer secondary_, primary_, primary_cells_, shell_;
+    mutable FaceBuffer all_;
 };
 
 }  // namespace cutaway::pipeline

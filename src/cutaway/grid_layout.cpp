@@ -66,7 +66,7 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
 }
 
 FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& layout,
-                           const std::vector<std::uint8_t>& primary_flags) {
+                           const std::vector<std::uint8_t>& primary_flags, bool with_secondary) {
     if (primary_flags.size() != grid.cell_count())
         throw std::invalid_argument("primary flags: " + std::to_string(primary_flags.size()) +
                                     " entries, expected one per cell");
@@ -80,7 +80,7 @@ FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& 
             const grid::FaceClass face_class = layout.face_classes[6 * compact + std::size_t(s)];
             const std::uint32_t record = pack_face(compact, side, face_class);
             if (!primary) {
-                lists.secondary.push_back(record);
+                if (with_secondary) lists.secondary.push_back(record);
                 continue;
             }
             // A face shared with another primary is hidden inside the primary cluster.
@@ -90,6 +90,22 @@ FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& 
         }
     }
     return lists;
+}
+
+std::vector<std::uint32_t> primary_bits(const FaceLists& lists, std::size_t active_cells) {
+    std::vector<std::uint32_t> bits((active_cells + 31) / 32, 0);
+    for (std::uint32_t compact : lists.primary_cells) bits[compact / 32] |= 1u << (compact % 32);
+    return bits;
+}
+
+std::size_t selectable_face_capacity(const GridLayout& layout) {
+    std::size_t exposed = 0, interior = 0;
+    for (grid::FaceClass c : layout.face_classes) {
+        if (c == grid::FaceClass::interior) ++interior;
+        else if (c != grid::FaceClass::none) ++exposed;
+    }
+    const std::size_t faces = exposed + (interior + 1) / 2;
+    return faces + faces / 64 + 1024;
 }
 
 namespace {

@@ -10,12 +10,13 @@
 
 namespace cutaway::pipeline {
 
-/// Face record: bits 0-25 compact (active) cell index, 26-28 FaceSide, 29-30 FaceClass.
-inline constexpr std::uint32_t face_cell_bits = 26;
+/// Face record: bits 0-26 compact (active) cell index, 27-29 FaceSide, 30-31 FaceClass
+/// (shaders/common/grid.glsl decodes it).
+inline constexpr std::uint32_t face_cell_bits = 27;
 inline constexpr std::size_t max_render_cells = std::size_t(1) << face_cell_bits;
 
 inline std::uint32_t pack_face(std::uint32_t compact_cell, grid::FaceSide side, grid::FaceClass face_class) {
-    return compact_cell | (std::uint32_t(side) << 26) | (std::uint32_t(face_class) << 29);
+    return compact_cell | (std::uint32_t(side) << face_cell_bits) | (std::uint32_t(face_class) << (face_cell_bits + 3));
 }
 
 struct GridLayout {
@@ -43,9 +44,17 @@ struct FaceLists {
     std::vector<std::uint32_t> primary_cells;  ///< compact indices of the primary cells
 };
 
-/// `primary_flags`: one per Eclipse cell (grid::select_primaries).
+/// `primary_flags`: one per Eclipse cell (grid::select_primaries). `with_secondary`: also list
+/// every face of every secondary cell (only the all-faces path draws that list).
 FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& layout,
-                           const std::vector<std::uint8_t>& primary_flags);
+                           const std::vector<std::uint8_t>& primary_flags, bool with_secondary);
+
+/// One bit per compact cell (bit c % 32 of word c / 32): set for primaries.
+std::vector<std::uint32_t> primary_bits(const FaceLists& lists, std::size_t active_cells);
+
+/// Faces the visible path can select at most: exposed faces once per cell, interior faces once
+/// per pair (plus a margin for ties, where both copies of an edge-on face count as seen from inside).
+std::size_t selectable_face_capacity(const GridLayout& layout);
 
 /// Shell faces of the whole model (for the contour pass), independent of the selection.
 std::vector<std::uint32_t> shell_faces(const GridLayout& layout);

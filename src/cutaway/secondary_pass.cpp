@@ -48,7 +48,7 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
-void SecondaryPass::draw(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings,
+void SecondaryPass::draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
                          const CutTargets& cut, const Camera& cut_camera) {
     gl::ShaderDefines defines{{"CULL_FRONT_INTERIOR", ""},
                               {settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", ""}};
@@ -62,7 +62,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const FaceBuffer& faces
     gl::set_uniform(p, "edge_colour", glm::vec3(0.12f, 0.12f, 0.12f));
     gl::set_uniform(p, "border_colour", border_colour);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
-    GridBuffers::draw_faces(faces);
+    submit();
 }
 
 }  // namespace cutaway::pipeline

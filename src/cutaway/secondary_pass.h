@@ -1,5 +1,7 @@
 #pragma once
 // Stage 2: secondary cells clipped by the cut surface, filled, with wireframe and border lines.
+#include <functional>
+
 #include "cutaway/face_drawing.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
@@ -10,8 +12,10 @@ namespace cutaway::pipeline {
 class SecondaryPass {
 public:
     explicit SecondaryPass(const gl::ShaderLibrary& shaders);
-    /// Draws `faces` into the bound scene framebuffer, clipped by `cut` seen from `cut_camera`.
-    void draw(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings,
+    /// Sets up the secondary program, then `submit` issues the face draw (a face list or the
+    /// culling pass's indirect draw) into the bound scene framebuffer, clipped by `cut` seen from
+    /// `cut_camera`.
+    void draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
               const CutTargets& cut, const Camera& cut_camera);
     /// Ray-cast borders over the visible secondary pixels of `scene` (after draw, ray-cast mode).
     void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,

@@ -20,15 +20,15 @@ Buffer::Buffer(std::size_t bytes, const void* data, GLbitfield flags)
     glNamedBufferStorage(id(), GLsizeiptr(bytes == 0 ? 1 : bytes), bytes == 0 ? nullptr : data, flags);
 }
 
-Texture::Texture(GLenum target, GLenum internal_format, int width, int height)
+Texture::Texture(GLenum target, GLenum internal_format, int width, int height, int levels)
     : width_(width), height_(height), format_(internal_format) {
     GLuint name = 0;
     glCreateTextures(target, 1, &name);
     static_cast<GlObject&>(*this) = GlObject(name);
     if (target == GL_TEXTURE_1D)
-        glTextureStorage1D(id(), 1, internal_format, width);
+        glTextureStorage1D(id(), levels, internal_format, width);
     else
-        glTextureStorage2D(id(), 1, internal_format, width, height);
+        glTextureStorage2D(id(), levels, internal_format, width, height);
     set_filter(GL_NEAREST);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);

@@ -66,7 +66,7 @@ private:
 class Texture : public GlObject<TextureTraits> {
 public:
     Texture() = default;
-    Texture(GLenum target, GLenum internal_format, int width, int height = 1);
+    Texture(GLenum target, GLenum internal_format, int width, int height = 1, int levels = 1);
     int width() const { return width_; }
     int height() const { return height_; }
     GLenum internal_format() const { return format_; }

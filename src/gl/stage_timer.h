@@ -33,8 +33,13 @@ public:
     /// Wall time of a recorded stage (0 if it did not run).
     double wall_ms(const std::string& stage) const;
     void clear() { stages_.clear(); }
+    /// Off: stages are named but not fenced or timed (wall_ms 0), so a frame runs as a user's
+    /// frame would, overlapping its stages; time it as a whole instead.
+    void set_fenced(bool fenced) { fenced_ = fenced; }
+    bool fenced() const { return fenced_; }
 
 private:
+    bool fenced_ = true;
     Query query_;
     std::string current_;
     std::chrono::steady_clock::time_point started_;

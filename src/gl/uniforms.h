@@ -14,6 +14,9 @@ inline void set_uniform(const Program& p, const char* name, bool v) { glProgramU
 inline void set_uniform(const Program& p, const char* name, const glm::vec2& v) {
     glProgramUniform2f(p.id(), p.uniform(name), v.x, v.y);
 }
+inline void set_uniform(const Program& p, const char* name, const glm::ivec2& v) {
+    glProgramUniform2i(p.id(), p.uniform(name), v.x, v.y);
+}
 inline void set_uniform(const Program& p, const char* name, const glm::uvec2& v) {
     glProgramUniform2ui(p.id(), p.uniform(name), v.x, v.y);
 }

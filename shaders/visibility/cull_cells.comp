@@ -1,0 +1,191 @@
+#version 450 core
+// Per-frame choice of the secondary faces that can reach a pixel (SPEC.md section 6). One
+// workgroup per IJK brick: the brick's box is tested first, then each of its cells (8 corners)
+// against the model camera's frustum and the min/max pyramid of the cut depth:
+//   outside the frustum, or entirely in front of the cut (every fragment discarded): nothing;
+//   entirely behind the cut (every fragment kept): its exposed faces seen from outside;
+//   straddling the cut: every face the all-faces pass would draw for it.
+// Surviving face records are appended to visible_faces and counted in the indirect draw command
+// (6 vertices per face); the CPU reads nothing back to draw.
+layout(local_size_x = 64) in;
+
+#include "common/grid.glsl"
+#include "common/face_frame.glsl"
+
+layout(std430, binding = 6) readonly buffer BrickCells { uint brick_cells[]; };
+layout(std430, binding = 7) readonly buffer BrickBegin { uint brick_begin[]; };  // brick_count + 1
+layout(std430, binding = 8) readonly buffer BrickBoxes { vec4 brick_boxes[]; };  // min, max per brick
+layout(std430, binding = 9) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 2 bits per side
+layout(std430, binding = 10) readonly buffer PrimaryBits { uint primary_bits[]; };  // 1 bit per compact cell
+layout(std430, binding = 11) buffer Culling {
+    uint vertex_count;  // DrawArraysIndirectCommand
+    uint instance_count;
+    uint first_vertex;
+    uint base_instance;
+    uint bricks_culled;
+    uint cells_culled;
+    uint cells_behind;
+    uint cells_straddling;
+    uint faces_requested;  // faces selected, including any beyond the capacity
+};
+layout(std430, binding = 12) writeonly buffer VisibleFaces { uint visible_faces[]; };
+layout(std430, binding = 13) readonly buffer CutPyramid { vec2 pyramid[]; };  // visibility/cut_pyramid.comp
+
+uniform mat4 view_projection;   // model camera
+uniform vec3 eye_position;      // model camera, render space
+uniform mat4 cut_view;          // cut camera (the model camera unless the view is frozen)
+uniform mat4 cut_view_projection;
+uniform vec2 cut_size;          // cut image, pixels
+uniform bool has_cut;           // false: nothing is cut anywhere (plain frame)
+const int max_pyramid_levels = 16;
+uniform int pyramid_levels;     // levels of the pyramid (its level 0 is half the cut image)
+uniform ivec2 pyramid_sizes[max_pyramid_levels];
+uniform int pyramid_offsets[max_pyramid_levels];
+uniform uint brick_count;
+uniform uint face_capacity;     // records visible_faces holds
+uniform sampler2D cut_surface;  // A = cut depth along the cut camera's axis, 0 = nothing cut
+
+const int culled = 0, in_front = 1, behind = 2, straddling = 3;
+
+// Min and max cut depth over the texel rectangle lo..hi (inclusive, inside the cut image).
+vec2 cut_range(ivec2 lo, ivec2 hi) {
+    int extent = max(hi.x - lo.x, hi.y - lo.y) + 1;
+    int level = 0;
+    while ((1 << level) < extent) ++level;  // the rectangle spans at most 2x2 texels there
+    level = min(level, pyramid_levels);
+    vec2 range = vec2(3.0e38, -3.0e38);
+    if (level == 0) {
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) {
+                float depth = texelFetch(cut_surface, ivec2(x, y), 0).a;
+                range = vec2(min(range.x, depth), max(range.y, depth));
+            }
+        return range;
+    }
+    ivec2 size = pyramid_sizes[level - 1];
+    int offset = pyramid_offsets[level - 1];
+    ivec2 a = min(lo >> level, size - 1), b = min(hi >> level, size - 1);
+    for (int y = a.y; y <= b.y; ++y)
+        for (int x = a.x; x <= b.x; ++x) {
+            vec2 r = pyramid[offset + y * size.x + x];
+            range = vec2(min(range.x, r.x), max(range.y, r.y));
+        }
+    return range;
+}
+
+// Where a convex hull of 8 points (a cell, or a brick's box) lies. Slack of 1e-5 relative keeps
+// float rounding between this pass and the draw on the conservative side.
+int classify(vec3 p[8]) {
+    uint outside_all = 63u;
+    float near_depth = 3.0e38, far_depth = -3.0e38;
+    vec2 lo = vec2(3.0e38), hi = vec2(-3.0e38);
+    bool behind_cut_eye = false;
+    for (int k = 0; k < 8; ++k) {
+        vec4 c = view_projection * vec4(p[k], 1.0);
+        float s = 1e-5 * (abs(c.x) + abs(c.y) + abs(c.z) + abs(c.w));
+        uint outside = (c.x < -c.w - s ? 1u : 0u) | (c.x > c.w + s ? 2u : 0u) | (c.y < -c.w - s ? 4u : 0u) |
+                       (c.y > c.w + s ? 8u : 0u) | (c.z < -c.w - s ? 16u : 0u) | (c.z > c.w + s ? 32u : 0u);
+        outside_all &= outside;
+        float depth = -(cut_view * vec4(p[k], 1.0)).z;
+        near_depth = min(near_depth, depth);
+        far_depth = max(far_depth, depth);
+        vec4 cc = cut_view_projection * vec4(p[k], 1.0);
+        if (cc.w <= 1e-6) {
+            behind_cut_eye = true;
+        } else {
+            vec2 t = (cc.xy / cc.w * 0.5 + 0.5) * cut_size;
+            lo = min(lo, t);
+            hi = max(hi, t);
+        }
+    }
+    if (outside_all != 0u) return culled;
+    if (!has_cut) return behind;
+    if (behind_cut_eye) return straddling;
+    ivec2 size = ivec2(cut_size);
+    ivec2 tlo = ivec2(floor(lo)) - 1, thi = ivec2(floor(hi)) + 1;  // a texel of margin
+    if (any(lessThan(thi, ivec2(0))) || any(greaterThanEqual(tlo, size))) return behind;  // no cut outside the image
+    bool partly_outside = any(lessThan(tlo, ivec2(0))) || any(greaterThanEqual(thi, size));
+    vec2 cut = cut_range(clamp(tlo, ivec2(0), size - 1), clamp(thi, ivec2(0), size - 1));
+    if (partly_outside) cut.x = 0.0;
+    float eps = 1e-5 * max(abs(near_depth), abs(far_depth));
+    if (far_depth + eps < cut.x) return in_front;   // fragment depth < cut everywhere: all discarded
+    if (near_depth - eps >= cut.y) return behind;   // fragment depth >= cut everywhere: all kept
+    return straddling;
+}
+
+int classify_box(vec3 lo, vec3 hi) {
+    vec3 p[8];
+    for (int k = 0; k < 8; ++k) p[k] = vec3((k & 1) != 0 ? hi.x : lo.x, (k & 2) != 0 ? hi.y : lo.y, (k & 4) != 0 ? hi.z : lo.z);
+    return classify(p);
+}
+
+int classify_cell(uint cell) {
+    vec3 p[8];
+    for (uint k = 0u; k < 8u; ++k) p[k] = corner_position(cell, k);
+    return classify(p);
+}
+
+bool is_primary(uint cell) { return ((primary_bits[cell >> 5] >> (cell & 31u)) & 1u) != 0u; }
+
+shared int brick_class;
+shared uint local_faces, local_base, local_culled, local_behind, local_straddling;
+
+void main() {
+    uint brick = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+    bool valid = brick < brick_count;
+    uint begin = valid ? brick_begin[brick] : 0u;
+    uint end = valid ? brick_begin[brick + 1u] : 0u;
+    if (gl_LocalInvocationIndex == 0u) {
+        local_faces = 0u;
+        local_culled = 0u;
+        local_behind = 0u;
+        local_straddling = 0u;
+        brick_class = valid ? classify_box(brick_boxes[2u * brick].xyz, brick_boxes[2u * brick + 1u].xyz) : culled;
+    }
+    barrier();
+
+    uint slot = begin + gl_LocalInvocationIndex;
+    int cell_class = culled;
+    uint cell = 0u;
+    bool counted = slot < end && brick_class != culled && brick_class != in_front;
+    if (counted) {
+        cell = brick_cells[slot];
+        if (is_primary(cell)) counted = false;  // primaries are drawn by stage 3
+        else cell_class = brick_class == behind ? behind : classify_cell(cell);
+    }
+    uint records[6];
+    uint count = 0u;
+    if (cell_class == behind || cell_class == straddling) {
+        uint classes = cell_face_classes[cell];
+        for (uint side = 0u; side < 6u; ++side) {
+            uint face_class = (classes >> (2u * side)) & 3u;
+            bool exposed = face_class != face_class_interior;
+            if (cell_class == behind && !exposed) continue;
+            FaceFrame f = face_frame(cell, side, eye_position);
+            // Behind the cut a cell shows only its exposed faces seen from outside; through the
+            // cut, whatever the draw keeps (interior faces only from inside their cell).
+            bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing) : !f.back_facing);
+            if (keep) records[count++] = pack_face_record(cell, side, face_class);
+        }
+    }
+    uint offset = atomicAdd(local_faces, count);
+    if (counted) {
+        if (cell_class == behind) atomicAdd(local_behind, 1u);
+        else if (cell_class == straddling) atomicAdd(local_straddling, 1u);
+        else atomicAdd(local_culled, 1u);
+    }
+    barrier();
+    if (gl_LocalInvocationIndex == 0u) {
+        local_base = atomicAdd(faces_requested, local_faces);
+        if (valid && (brick_class == culled || brick_class == in_front)) {
+            atomicAdd(bricks_culled, 1u);
+            atomicAdd(cells_culled, end - begin);
+        }
+        atomicAdd(cells_culled, local_culled);
+        atomicAdd(cells_behind, local_behind);
+        atomicAdd(cells_straddling, local_straddling);
+    }
+    barrier();
+    for (uint k = 0u; k < count; ++k)
+        if (local_base + offset + k < face_capacity) visible_faces[local_base + offset + k] = records[k];
+}

@@ -1,0 +1,74 @@
+#include "cutaway/visibility/cut_depth_pyramid.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "gl/uniforms.h"
+
+namespace cutaway::pipeline {
+namespace {
+constexpr int group_side = 8;  // visibility/cut_pyramid.comp local size
+}  // namespace
+
+CutDepthPyramid::CutDepthPyramid(const gl::ShaderLibrary& shaders)
+    : first_(shaders.build({{GL_COMPUTE_SHADER, "visibility/cut_pyramid.comp"}}, {{"FIRST_LEVEL", ""}})),
+      next_(shaders.build({{GL_COMPUTE_SHADER, "visibility/cut_pyramid.comp"}})) {}
+
+void CutDepthPyramid::build(const gl::Texture& cut_surface) {
+    const int width = std::max(1, cut_surface.width() / 2), height = std::max(1, cut_surface.height() / 2);
+    if (width != width_ || height != height_) {
+        sizes_.clear();
+        offsets_.clear();
+        std::size_t texels = 0;
+        for (glm::ivec2 size(width, height);; size = glm::max(size / 2, glm::ivec2(1))) {
+            sizes_.push_back(size);
+            offsets_.push_back(int(texels));
+            texels += std::size_t(size.x) * std::size_t(size.y);
+            if (size == glm::ivec2(1)) break;
+        }
+        if (levels() > max_pyramid_levels)
+            throw std::invalid_argument("cut image " + std::to_string(cut_surface.width()) + "x" +
+                                        std::to_string(cut_surface.height()) + ": the culling pyramid holds at most " +
+                                        std::to_string(max_pyramid_levels) + " levels");
+        buffer_ = gl::Buffer(texels * sizeof(glm::vec2), nullptr);
+        width_ = width;
+        height_ = height;
+    }
+    buffer_.bind_base(GL_SHADER_STORAGE_BUFFER, cut_pyramid_binding);
+    for (int level = 0; level < levels(); ++level) {
+        const gl::Program& p = level == 0 ? first_ : next_;
+        if (level == 0) {
+            gl::set_uniform(p, "cut_surface", 0);
+            cut_surface.bind(0);
+        } else {
+            gl::set_uniform(p, "below_size", sizes_[std::size_t(level - 1)]);
+            gl::set_uniform(p, "below_offset", offsets_[std::size_t(level - 1)]);
+        }
+        gl::set_uniform(p, "level_size", sizes_[std::size_t(level)]);
+        gl::set_uniform(p, "level_offset", offsets_[std::size_t(level)]);
+        p.use();
+        const glm::ivec2 size = sizes_[std::size_t(level)];
+        glDispatchCompute(GLuint((size.x + group_side - 1) / group_side), GLuint((size.y + group_side - 1) / group_side), 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+}
+
+void CutDepthPyramid::bind_for(const gl::Program& program) const {
+    gl::set_uniform(program, "pyramid_levels", levels());
+    if (levels() > 0) {
+        glProgramUniform2iv(program.id(), program.uniform("pyramid_sizes"), levels(), &sizes_[0].x);
+        glProgramUniform1iv(program.id(), program.uniform("pyramid_offsets"), levels(), offsets_.data());
+        buffer_.bind_base(GL_SHADER_STORAGE_BUFFER, cut_pyramid_binding);
+    }
+}
+
+std::vector<glm::vec2> CutDepthPyramid::read_level(int level) const {
+    const glm::ivec2 size = level_size(level);
+    std::vector<glm::vec2> texels(std::size_t(size.x) * std::size_t(size.y));
+    glGetNamedBufferSubData(buffer_.id(), GLintptr(std::size_t(offsets_[std::size_t(level)]) * sizeof(glm::vec2)),
+                            GLsizeiptr(texels.size() * sizeof(glm::vec2)), texels.data());
+    return texels;
+}
+
+}  // namespace cutaway::pipeline

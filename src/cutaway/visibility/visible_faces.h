@@ -1,0 +1,52 @@
+#pragma once
+// Output-sensitive stage 2 (SPEC.md section 6): every frame a compute pass picks, on the GPU, the
+// secondary faces that can reach a pixel, and the draw reads their count from an indirect
+// command. Built once per model: the cells grouped in IJK bricks with their boxes.
+#include <cstdint>
+
+#include "cutaway/camera.h"
+#include "cutaway/frame_targets.h"
+#include "cutaway/grid_buffers.h"
+#include "cutaway/visibility/cell_bricks.h"
+#include "cutaway/visibility/cut_depth_pyramid.h"
+#include "gl/shader_library.h"
+
+namespace cutaway::pipeline {
+
+/// What the last selection did (read back on request, never to draw).
+struct CullingCounts {
+    std::uint64_t faces = 0;             ///< faces in the draw
+    std::uint64_t faces_requested = 0;   ///< faces selected (> faces only if the buffer overflowed)
+    std::uint64_t bricks = 0;
+    std::uint64_t bricks_culled = 0;     ///< outside the frustum or entirely in front of the cut
+    std::uint64_t cells_culled = 0;      ///< cells of culled bricks, and culled secondaries of the others
+    std::uint64_t cells_behind = 0;      ///< secondaries entirely behind the cut (exposed faces only)
+    std::uint64_t cells_straddling = 0;  ///< secondaries the cut passes through (every visible face)
+};
+
+class VisibleFaces {
+public:
+    /// `face_capacity`: records the face buffer holds (every face the selection can pick: the
+    /// exposed faces plus one side of each interior face, see GridLayout::unique_face_count).
+    VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_capacity);
+
+    /// Builds the cut's min/max pyramid (from `cut`, the texture stage 2 reads; null: no cut) and
+    /// selects the faces of secondary cells for the model `camera`.
+    void select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera);
+    /// Draws the selected faces with the bound face program (2 triangles each).
+    void draw() const;
+    /// Reads the counters of the last selection back (a GPU->CPU sync: not in timed frames).
+    CullingCounts read_counts() const;
+    std::size_t memory_bytes() const;
+    const CutDepthPyramid& pyramid() const { return pyramid_; }
+
+private:
+    gl::Program cull_, finish_;
+    CutDepthPyramid pyramid_;
+    gl::Buffer brick_cells_, brick_begin_, brick_boxes_;
+    std::size_t brick_count_ = 0;
+    std::size_t face_capacity_ = 0;
+    gl::Buffer counters_, faces_;
+};
+
+}  // namespace cutaway::pipeline
