@@ -2,7 +2,11 @@
 // (src/cutaway/grid_layout.h describes the buffers). Render space: X east, Y north, Z up.
 layout(std430, binding = 0) readonly buffer Pillars { vec4 pillars[]; };           // top, bottom per pillar
 layout(std430, binding = 1) readonly buffer CornerDepths { float corner_depths[]; };  // 8 per active cell
-layout(std430, binding = 2) readonly buffer Cells { uint cells[]; };               // Eclipse index | flip bit
+layout(std430, binding = 2) readonly buffer Cells { uint cells[]; };               // pillar of corner 0 | flip bit
+// The same geometry through the texture path (src/cutaway/grid_buffers.h says why).
+layout(binding = 8) uniform samplerBuffer pillar_texels;        // top, bottom per pillar
+layout(binding = 9) uniform samplerBuffer corner_depth_texels;  // 8 per active cell
+layout(binding = 10) uniform usamplerBuffer cell_texels;        // pillar of corner 0 | flip bit
 layout(std430, binding = 4) readonly buffer CellValues { float cell_values[]; };     // property per active cell
 
 uniform uvec2 grid_size;  // NX, NY
@@ -25,16 +29,15 @@ const uint face_corners[24] = uint[](0u, 4u, 6u, 2u,  1u, 3u, 7u, 5u,  0u, 1u, 5
                                      2u, 6u, 7u, 3u,  0u, 2u, 3u, 1u,  4u, 5u, 7u, 6u);
 
 vec3 corner_position(uint compact_cell, uint corner) {
-    uint eclipse = cells[compact_cell] & 0x7fffffffu;
-    uint i = eclipse % grid_size.x;
-    uint j = (eclipse / grid_size.x) % grid_size.y;
-    uint pillar = (j + ((corner >> 1) & 1u)) * (grid_size.x + 1u) + i + (corner & 1u);
-    vec3 top = pillars[2u * pillar].xyz;
-    vec3 bottom = pillars[2u * pillar + 1u].xyz;
-    float z = corner_depths[8u * compact_cell + corner];
+    // The pillar index is stored, not derived from the cell's I, J: integer division is slow on
+    // SIMD CPUs (llvmpipe) and this runs 4 times per vertex.
+    uint pillar = (texelFetch(cell_texels, int(compact_cell)).r & 0x7fffffffu) + ((corner >> 1) & 1u) * (grid_size.x + 1u) + (corner & 1u);
+    vec3 top = texelFetch(pillar_texels, int(2u * pillar)).xyz;
+    vec3 bottom = texelFetch(pillar_texels, int(2u * pillar + 1u)).xyz;
+    float z = texelFetch(corner_depth_texels, int(8u * compact_cell + corner)).r;
     float dz = bottom.z - top.z;
     vec2 xy = dz == 0.0 ? top.xy : top.xy + ((z - top.z) / dz) * (bottom.xy - top.xy);
     return vec3(xy, up_sign * z * z_scale);
 }
 
-bool cell_normals_flipped(uint compact_cell) { return (cells[compact_cell] & 0x80000000u) != 0u; }
+bool cell_normals_flipped(uint compact_cell) { return (texelFetch(cell_texels, int(compact_cell)).r & 0x80000000u) != 0u; }

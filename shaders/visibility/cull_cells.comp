@@ -127,65 +127,47 @@ int classify_cell(uint cell) {
 
 bool is_primary(uint cell) { return ((primary_bits[cell >> 5] >> (cell & 31u)) & 1u) != 0u; }
 
-shared int brick_class;
-shared uint local_faces, local_base, local_culled, local_behind, local_straddling;
-
+// No shared memory and no barrier(): llvmpipe runs barrier() by switching between the
+// invocations of a workgroup, which costs more than the test itself. Each invocation tests its
+// brick's box (cheap, 8 corners) and appends its own faces with one atomic.
 void main() {
     uint brick = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-    bool valid = brick < brick_count;
-    uint begin = valid ? brick_begin[brick] : 0u;
-    uint end = valid ? brick_begin[brick + 1u] : 0u;
-    if (gl_LocalInvocationIndex == 0u) {
-        local_faces = 0u;
-        local_culled = 0u;
-        local_behind = 0u;
-        local_straddling = 0u;
-        brick_class = valid ? classify_box(brick_boxes[2u * brick].xyz, brick_boxes[2u * brick + 1u].xyz) : culled;
-    }
-    barrier();
-
+    if (brick >= brick_count) return;
+    uint begin = brick_begin[brick], end = brick_begin[brick + 1u];
     uint slot = begin + gl_LocalInvocationIndex;
-    int cell_class = culled;
-    uint cell = 0u;
-    bool counted = slot < end && brick_class != culled && brick_class != in_front;
-    if (counted) {
-        cell = brick_cells[slot];
-        if (is_primary(cell)) counted = false;  // primaries are drawn by stage 3
-        else cell_class = brick_class == behind ? behind : classify_cell(cell);
-    }
-    uint records[6];
-    uint count = 0u;
-    if (cell_class == behind || cell_class == straddling) {
-        uint classes = cell_face_classes[cell];
-        for (uint side = 0u; side < 6u; ++side) {
-            uint face_class = (classes >> (2u * side)) & 3u;
-            bool exposed = face_class != face_class_interior;
-            if (cell_class == behind && !exposed) continue;
-            FaceFrame f = face_frame(cell, side, eye_position);
-            // Behind the cut a cell shows only its exposed faces seen from outside; through the
-            // cut, whatever the draw keeps (interior faces only from inside their cell).
-            bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing) : !f.back_facing);
-            if (keep) records[count++] = pack_face_record(cell, side, face_class);
-        }
-    }
-    uint offset = atomicAdd(local_faces, count);
-    if (counted) {
-        if (cell_class == behind) atomicAdd(local_behind, 1u);
-        else if (cell_class == straddling) atomicAdd(local_straddling, 1u);
-        else atomicAdd(local_culled, 1u);
-    }
-    barrier();
-    if (gl_LocalInvocationIndex == 0u) {
-        local_base = atomicAdd(faces_requested, local_faces);
-        if (valid && (brick_class == culled || brick_class == in_front)) {
+    if (slot >= end) return;
+    int brick_class = classify_box(brick_boxes[2u * brick].xyz, brick_boxes[2u * brick + 1u].xyz);
+    if (brick_class == culled || brick_class == in_front) {
+        if (gl_LocalInvocationIndex == 0u) {
             atomicAdd(bricks_culled, 1u);
             atomicAdd(cells_culled, end - begin);
         }
-        atomicAdd(cells_culled, local_culled);
-        atomicAdd(cells_behind, local_behind);
-        atomicAdd(cells_straddling, local_straddling);
+        return;
     }
-    barrier();
+    uint cell = brick_cells[slot];
+    if (is_primary(cell)) return;  // primaries are drawn by stage 3
+    int cell_class = brick_class == behind ? behind : classify_cell(cell);
+    if (cell_class == culled || cell_class == in_front) {
+        atomicAdd(cells_culled, 1u);
+        return;
+    }
+    if (cell_class == behind) atomicAdd(cells_behind, 1u);
+    else atomicAdd(cells_straddling, 1u);
+    uint records[6];
+    uint count = 0u;
+    uint classes = cell_face_classes[cell];
+    for (uint side = 0u; side < 6u; ++side) {
+        uint face_class = (classes >> (2u * side)) & 3u;
+        bool exposed = face_class != face_class_interior;
+        if (cell_class == behind && !exposed) continue;
+        FaceFrame f = face_frame(cell, side, eye_position);
+        // Behind the cut a cell shows only its exposed faces seen from outside; through the
+        // cut, whatever the draw keeps (interior faces only from inside their cell).
+        bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing) : !f.back_facing);
+        if (keep) records[count++] = pack_face_record(cell, side, face_class);
+    }
+    if (count == 0u) return;
+    uint base = atomicAdd(faces_requested, count);
     for (uint k = 0u; k < count; ++k)
-        if (local_base + offset + k < face_capacity) visible_faces[local_base + offset + k] = records[k];
+        if (base + k < face_capacity) visible_faces[base + k] = records[k];
 }

@@ -17,6 +17,17 @@ std::vector<std::uint32_t> packed_face_classes(const GridLayout& layout) {
         for (std::size_t s = 0; s < 6; ++s) packed[c] |= std::uint32_t(layout.face_classes[6 * c + s]) << (2 * s);
     return packed;
 }
+/// Per active cell as the shaders read it (common/grid.glsl): the pillar index of its corner 0
+/// (bits 0-30) and the flip bit of GridLayout::cells (bit 31).
+std::vector<std::uint32_t> gpu_cell_records(const GridLayout& layout, const grid::GridDims& dims) {
+    std::vector<std::uint32_t> records(layout.cells.size());
+    for (std::size_t c = 0; c < records.size(); ++c) {
+        const std::size_t eclipse = layout.cells[c] & 0x7fffffffu;
+        const std::size_t i = eclipse % std::size_t(dims.nx), j = eclipse / std::size_t(dims.nx) % std::size_t(dims.ny);
+        records[c] = std::uint32_t(j * std::size_t(dims.nx + 1) + i) | (layout.cells[c] & 0x80000000u);
+    }
+    return records;
+}
 }  // namespace
 
 GridBuffers::GridBuffers(const GridLayout& layout, const grid::GridDims& dims, const ModelFrame& frame)
@@ -25,12 +36,15 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::GridDims& dims, c
       frame_(frame),
       pillars_(gl::Buffer::from(std::span<const float>(layout.pillars))),
       corner_depths_(gl::Buffer::from(std::span<const float>(layout.corner_depths))),
-      cells_(gl::Buffer::from(std::span<const std::uint32_t>(layout.cells))),
+      cells_(gl::Buffer::from(std::span<const std::uint32_t>(gpu_cell_records(layout, dims)))),
       values_(layout.cells.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT),
       cell_face_classes_(gl::Buffer::from(std::span<const std::uint32_t>(packed_face_classes(layout)))),
       primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
                     GL_DYNAMIC_STORAGE_BIT),
-      shell_(FaceBuffer::from(pipeline::shell_faces(layout))) {}
+      shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
+      pillar_texels_(pillars_, GL_RGBA32F),
+      corner_depth_texels_(corner_depths_, GL_R32F),
+      cell_texels_(cells_, GL_R32UI) {}
 
 const FaceBuffer& GridBuffers::all_faces() const {
     if (!all_.buffer) all_ = FaceBuffer::from(pipeline::all_faces(layout_));
@@ -62,6 +76,9 @@ void GridBuffers::bind_geometry() const {
     corner_depths_.bind_base(GL_SHADER_STORAGE_BUFFER, corner_depths_binding);
     cells_.bind_base(GL_SHADER_STORAGE_BUFFER, cells_binding);
     values_.bind_base(GL_SHADER_STORAGE_BUFFER, values_binding);
+    pillar_texels_.bind(pillar_texture_unit);
+    corner_depth_texels_.bind(corner_depth_texture_unit);
+    cell_texels_.bind(cell_texture_unit);
 }
 
 void GridBuffers::bind_culling_inputs() const {

@@ -12,6 +12,8 @@ namespace cutaway::pipeline {
 enum BufferBinding : unsigned { pillars_binding = 0, corner_depths_binding = 1, cells_binding = 2,
                                 faces_binding = 3, values_binding = 4, primary_cells_binding = 5,
                                 cell_face_classes_binding = 9, primary_bits_binding = 10 };
+/// Texture units of the geometry's buffer textures (common/grid.glsl).
+enum GeometryTextureUnit : unsigned { pillar_texture_unit = 8, corner_depth_texture_unit = 9, cell_texture_unit = 10 };
 
 struct FaceBuffer {
     gl::Buffer buffer;
@@ -56,6 +58,9 @@ private:
     ModelFrame frame_;
     gl::Buffer pillars_, corner_depths_, cells_, values_, cell_face_classes_, primary_bits_;
     FaceBuffer secondary_, primary_, primary_cells_, shell_;
+    /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
+    /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
+    gl::BufferTexture pillar_texels_, corner_depth_texels_, cell_texels_;
     mutable FaceBuffer all_;
 };
 

@@ -34,6 +34,13 @@ Texture::Texture(GLenum target, GLenum internal_format, int width, int height, i
     glTextureParameteri(id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 }
 
+BufferTexture::BufferTexture(const Buffer& buffer, GLenum internal_format) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &name);
+    static_cast<GlObject&>(*this) = GlObject(name);
+    glTextureBuffer(id(), internal_format, buffer.id());
+}
+
 void Texture::set_filter(GLenum filter) const {
     glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GLint(filter));
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GLint(filter));

@@ -79,6 +79,15 @@ private:
     GLenum format_ = 0;
 };
 
+/// A buffer texture: `buffer`'s storage read as texels of `internal_format` (samplerBuffer).
+/// The buffer must outlive it.
+class BufferTexture : public GlObject<TextureTraits> {
+public:
+    BufferTexture() = default;
+    BufferTexture(const Buffer& buffer, GLenum internal_format);
+    void bind(GLuint unit) const { glBindTextureUnit(unit, id()); }
+};
+
 /// Framebuffer object; attachments are textures owned elsewhere.
 class Framebuffer : public GlObject<FramebufferTraits> {
 public:
