@@ -7,6 +7,7 @@ struct FaceFrame {
     vec3 normal;       // outward, render space, not normalised
     bool back_facing;  // the eye is on the inner side: the face is seen from inside its cell
     bool collapsed;    // zero area (pinch-out): never drawn
+    bool any_triangle_front_facing;  // either drawn triangle (0,1,2), (0,2,3) faces the eye (or is edge-on)
 };
 
 FaceFrame face_frame(uint cell, uint side, vec3 eye) {
@@ -17,5 +18,10 @@ FaceFrame face_frame(uint cell, uint side, vec3 eye) {
     vec3 centre = 0.25 * (f.q[0] + f.q[1] + f.q[2] + f.q[3]);
     f.back_facing = dot(f.normal, eye - centre) < 0.0;
     f.collapsed = dot(f.normal, f.normal) == 0.0;
+    // A warped face can have one triangle facing the eye while its centre test says "from
+    // inside": a closed cell hides a face only when both of its triangles face away.
+    vec3 first = cross(f.q[1] - f.q[0], f.q[2] - f.q[0]), second = cross(f.q[2] - f.q[0], f.q[3] - f.q[0]);
+    float sign = cell_normals_flipped(cell) ? -1.0 : 1.0;
+    f.any_triangle_front_facing = sign * dot(first, eye - f.q[0]) >= 0.0 || sign * dot(second, eye - f.q[0]) >= 0.0;
     return f;
 }

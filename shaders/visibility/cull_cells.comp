@@ -93,7 +93,9 @@ int classify(vec3 p[8]) {
         if (cc.w <= 1e-6) {
             behind_cut_eye = true;
         } else {
-            vec2 t = (cc.xy / cc.w * 0.5 + 0.5) * cut_size;
+            // Clamped so a corner just in front of the eye (tiny w) cannot overflow the int
+            // conversion below; the rectangle is clamped to the image anyway.
+            vec2 t = clamp((cc.xy / cc.w * 0.5 + 0.5) * cut_size, vec2(-1.0e6), vec2(1.0e6));
             lo = min(lo, t);
             hi = max(hi, t);
         }
@@ -161,9 +163,10 @@ void main() {
         bool exposed = face_class != face_class_interior;
         if (cell_class == behind && !exposed) continue;
         FaceFrame f = face_frame(cell, side, eye_position);
-        // Behind the cut a cell shows only its exposed faces seen from outside; through the
-        // cut, whatever the draw keeps (interior faces only from inside their cell).
-        bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing) : !f.back_facing);
+        // Behind the cut a cell shows only its exposed faces seen from outside (a face both of
+        // whose triangles face away lies behind the cell's own front); through the cut, whatever
+        // the draw keeps (interior faces only from inside their cell).
+        bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing) : f.any_triangle_front_facing);
         if (keep) records[count++] = pack_face_record(cell, side, face_class);
     }
     if (count == 0u) return;
