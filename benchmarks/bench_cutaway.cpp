@@ -1,11 +1,14 @@
 // Cutaway frame times over the paper's camera path (SPEC.md section 3), one GL context per process.
-//   BM_cutaway/pose/mean_filter/border/strategy/fraction_bp/preset (preset varies slowest: one model load each)
-//     preset: index into --presets; fraction_bp: primary fraction in basis points (100 = 1%);
+//   BM_cutaway/pose/mean_filter/border/strategy/fraction_bp/draw/preset (preset varies slowest: one model load each)
+//     preset: index into --presets; draw: index into --draws (visible | all-faces, the paper's path);
+//     fraction_bp: primary fraction in basis points (100 = 1%);
 //     strategy: index into the cut-surface registry (filtered by --strategies); border: 0 raycast,
 //     1 threshold; mean_filter: k (0 = off); pose: -1 = the whole path, else one pose (--per_pose).
 //     Each iteration renders one pose of the path (warm-up passes first); the manual time is the
-//     fenced wall time of the whole frame. Counters: mean fenced ms per stage, baseline_ms (plain
-//     shaded frame of the same poses), gl_query_valid (1 only if every GL query agreed).
+//     fenced wall time of the whole frame. Counters: median over the timed frames of the fenced
+//     ms per stage, baseline (median plain shaded frame of the same poses, same draw mode),
+//     faces_secondary / faces_baseline (faces stage 2 and the plain frame drew, last pose),
+//     gl_query_valid (1 only if every GL query agreed).
 //   BM_baseline/preset: the plain shaded frame over the same path.
 // Each benchmark checks its own output: at least one primary cell and visible primary pixels.
 #include <benchmark/benchmark.h>
@@ -79,6 +82,17 @@ std::size_t visible_primary_pixels(const pipeline::CutawayRenderer& renderer) {
                                      [](std::uint32_t f) { return (f & pipeline::flag_primary) != 0; }));
 }
 
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+pipeline::DrawMode draw_mode(const std::string& name) {
+    return name == "all-faces" ? pipeline::DrawMode::all_faces : pipeline::DrawMode::visible;
+}
+
 std::vector<pipeline::Camera> path_cameras(const pipeline::CutawayRenderer& renderer,
                                            const std::vector<bench::PathPose>& path) {
     std::vector<pipeline::Camera> cameras;
@@ -102,7 +116,7 @@ struct BenchSetup {
 
 void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     const bench::CutawayBenchOptions& options = setup.options;
-    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(5))));
+    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(6))));
     const std::size_t primaries = select_fraction(scene, double(state.range(4)) / 10000.0);
     if (primaries == 0) {
         state.SkipWithError("no primary cells selected");
@@ -115,6 +129,7 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     settings.mean_filter = int(state.range(1));
     settings.line_width_px = 1;
     settings.ssao = true;
+    settings.draw = draw_mode(options.draws.at(std::size_t(state.range(5))));
     const std::vector<bench::PathPose> path = poses_for(options, state.range(0));
     const std::vector<pipeline::Camera> cameras = path_cameras(renderer, path);
     auto frame = [&](std::size_t k) {
@@ -124,36 +139,38 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
 
     for (int w = 0; w < options.warmup; ++w)
         for (std::size_t k = 0; k < path.size(); ++k) frame(k);
-    std::map<std::string, double> stage_sums;
+    std::map<std::string, std::vector<double>> stage_times;  // one entry per timed frame (0: stage not run)
     bool queries_valid = true;
     std::size_t k = 0;
     for (auto _ : state) {
         const pipeline::FrameTimes times = frame(k++ % path.size());
         state.SetIterationTime(times.total.wall_ms / 1000.0);
+        for (const char* name : pipeline::stage_names) stage_times[name].push_back(0.0);
         for (const gl::StageTime& stage : times.stages) {
-            stage_sums[stage.stage] += stage.wall_ms;
+            stage_times[stage.stage].back() += stage.wall_ms;
             queries_valid = queries_valid && stage.gl_query_valid;
         }
-        stage_sums["total"] += times.total.wall_ms;
+        stage_times["total"].push_back(times.total.wall_ms);
     }
     const std::size_t primary_pixels = visible_primary_pixels(renderer);
     if (primary_pixels == 0) state.SkipWithError("no primary pixel visible in the last frame");
+    const double faces_secondary = double(renderer.faces_drawn().secondary);
 
-    double baseline_sum = 0;
-    for (const pipeline::Camera& camera : cameras) baseline_sum += renderer.render_baseline(camera).wall_ms;
-    const double baseline_ms = baseline_sum / double(cameras.size());
-    for (const char* name : pipeline::stage_names) stage_sums.try_emplace(name, 0.0);
-    for (const auto& [name, sum] : stage_sums)
-        state.counters[name] = benchmark::Counter(sum, benchmark::Counter::kAvgIterations);
+    std::vector<double> baseline;
+    for (const pipeline::Camera& camera : cameras) baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
+    const double baseline_ms = median(baseline);
+    for (const auto& [name, times] : stage_times) state.counters[name] = median(times);
     state.counters["baseline"] = baseline_ms;
-    state.counters["total_over_baseline"] =
-        benchmark::Counter(stage_sums["total"] / baseline_ms, benchmark::Counter::kAvgIterations);
+    state.counters["total_over_baseline"] = median(stage_times["total"]) / baseline_ms;
+    state.counters["faces_secondary"] = faces_secondary;
+    state.counters["faces_baseline"] = double(renderer.faces_drawn().secondary);
     state.counters["gl_query_valid"] = queries_valid ? 1 : 0;
     state.counters["primary_cells"] = double(primaries);
     state.counters["primary_pixels"] = double(primary_pixels);
     state.counters["cells"] = double(scene.model->grid.active_count());
     if (path.size() == 1) state.counters["aperture_deg"] = path.front().aperture_deg;
-    state.SetLabel(options.presets.at(std::size_t(state.range(5))) + " " + settings.strategy + " " +
+    state.SetLabel(options.presets.at(std::size_t(state.range(6))) + " " + pipeline::to_string(settings.draw) + " " +
+                   settings.strategy + " " +
                    pipeline::to_string(settings.border) + " mean_filter " + std::to_string(settings.mean_filter));
 }
 
@@ -195,8 +212,8 @@ void register_benchmarks(const BenchSetup& setup) {
     if (o.per_pose) poses = indices(bench::camera_path(o.poses));
     const std::int64_t iterations = std::int64_t(o.repeat) * (o.per_pose ? 1 : o.poses);
     benchmark::RegisterBenchmark("BM_cutaway", [&setup](benchmark::State& s) { bm_cutaway(s, setup); })
-        ->ArgNames({"pose", "mean_filter", "border", "strategy", "fraction_bp", "preset"})  // first varies fastest
-        ->ArgsProduct({poses, mean_filters, borders, indices(setup.strategies), fractions_bp, indices(o.presets)})
+        ->ArgNames({"pose", "mean_filter", "border", "strategy", "fraction_bp", "draw", "preset"})  // first varies fastest
+        ->ArgsProduct({poses, mean_filters, borders, indices(setup.strategies), fractions_bp, indices(o.draws), indices(o.presets)})
         ->Iterations(iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_baseline", [&setup](benchmark::State& s) { bm_baseline(s, setup); })
         ->ArgNames({"preset"})->ArgsProduct({indices(o.presets)})
@@ -219,6 +236,8 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
     benchmark::AddCustomContext("resolution", std::to_string(o.width) + "x" + std::to_string(o.height));
     benchmark::AddCustomContext("presets", join(o.presets));
     benchmark::AddCustomContext("strategies", join(strategies));
+    benchmark::AddCustomContext("draws", join(o.draws));
+    benchmark::AddCustomContext("statistic", "counters: median over the timed frames (poses x repeat)");
     std::string path;
     for (const bench::PathPose& p : bench::camera_path(o.poses))
         path += (path.empty() ? "" : "; ") + std::to_string(int(p.orbit.azimuth_deg)) + "/" +

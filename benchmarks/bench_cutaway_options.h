@@ -16,6 +16,7 @@ struct CutawayBenchOptions {
     std::vector<std::string> strategies{"all"};    ///< registry names, or "all"
     std::vector<std::string> borders{"raycast"};   ///< raycast|threshold
     std::vector<int> mean_filters{9};              ///< k x k, 0 = off
+    std::vector<std::string> draws{"visible"};     ///< stage 2 faces: visible|all-faces
     int width = 1920, height = 1080;
     int poses = 8;                                 ///< camera path length (camera_path.h)
     bool per_pose = false;                         ///< one benchmark per pose instead of the whole path
@@ -51,7 +52,7 @@ inline const char* usage_text() {
     return "bench_cutaway flags (besides Google Benchmark's):\n"
            "  --presets=zaphirus,petra,opharine,sapphire   --fractions=0.01   --strategies=all|NAME,...\n"
            "  --borders=raycast[,threshold]   --mean_filters=9[,0,33]   --size=1920x1080\n"
-           "  --poses=8   --per_pose   --warmup=1   --repeat=1\n";
+           "  --draws=visible[,all-faces]   --poses=8   --per_pose   --warmup=1   --repeat=1\n";
 }
 
 /// Removes the flags above from argv (argc updated); throws std::invalid_argument on bad values.
@@ -67,6 +68,7 @@ inline CutawayBenchOptions take_bench_options(int& argc, char** argv) {
         else if (flag == "--fractions") options.fractions = parse_list<double>(flag, value);
         else if (flag == "--strategies") options.strategies = split_list(value);
         else if (flag == "--borders") options.borders = split_list(value);
+        else if (flag == "--draws") options.draws = split_list(value);
         else if (flag == "--mean_filters") options.mean_filters = parse_list<int>(flag, value);
         else if (flag == "--poses") options.poses = parse_list<int>(flag, value).at(0);
         else if (flag == "--warmup") options.warmup = parse_list<int>(flag, value).at(0);
@@ -86,6 +88,9 @@ inline CutawayBenchOptions take_bench_options(int& argc, char** argv) {
     for (const std::string& border : options.borders)
         if (border != "raycast" && border != "threshold")
             throw std::invalid_argument("--borders: expected raycast or threshold, got '" + border + "'");
+    for (const std::string& draw : options.draws)
+        if (draw != "visible" && draw != "all-faces")
+            throw std::invalid_argument("--draws: expected visible or all-faces, got '" + draw + "'");
     return options;
 }
 

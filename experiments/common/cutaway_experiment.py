@@ -20,8 +20,8 @@ import volume_experiment as vx  # noqa: E402  (matplotlib import, git revision, 
 
 REPO = vx.REPO
 PRESETS = ("zaphirus", "petra", "opharine", "sapphire")
-STAGES = ("cut_surface", "secondary", "primary", "ssao", "mean_filter", "post")
-STAGE_LABELS = {"cut_surface": "stage 1: cut surface", "secondary": "stage 2: secondaries",
+STAGES = ("cut_surface", "culling", "secondary", "primary", "ssao", "mean_filter", "post")
+STAGE_LABELS = {"cut_surface": "stage 1: cut surface", "culling": "culling (visible path)", "secondary": "stage 2: secondaries",
                 "primary": "stage 3: primaries", "ssao": "SSAO", "mean_filter": "mean filter",
                 "post": "composite (post)", "total": "total"}
 write_json = vx.write_json
@@ -100,15 +100,16 @@ def benchmark_context(document):
 def cutaway_runs(document):
     """BM_cutaway rows of a benchmark document as dicts: preset, pose (-1 = path), stage ms, counters."""
     presets = document["context"]["presets"].split(",")
+    draws = document["context"].get("draws", "visible").split(",")
     rows = []
     for bench in document["benchmarks"]:
         if not bench["name"].startswith("BM_cutaway/") or bench.get("error_occurred"):
             continue
         args = dict(part.split(":") for part in bench["name"].split("/")[1:] if ":" in part)
         row = {"preset": presets[int(args["preset"])], "pose": int(args["pose"]), "label": bench.get("label"),
-               "stages_ms": {s: bench[s] for s in STAGES + ("total",)}}
+               "draw": draws[int(args.get("draw", 0))], "stages_ms": {s: bench.get(s, 0.0) for s in STAGES + ("total",)}}
         for key in ("baseline", "total_over_baseline", "gl_query_valid", "primary_cells", "primary_pixels", "cells",
-                    "aperture_deg"):
+                    "aperture_deg", "faces_secondary", "faces_baseline"):
             if key in bench:
                 row[key] = bench[key]
         rows.append(row)
