@@ -15,7 +15,7 @@ packages=(
   # tests, benchmarks, reference checks, fuzzing
   libgtest-dev libgmock-dev libbenchmark-dev libopm-common-dev libboost-test-dev clang libclang-rt-14-dev
   # plots
-  python3 python3-matplotlib
+  python3 python3-matplotlib python3-vtk9
 )
 
 missing=()
