@@ -10,9 +10,9 @@ paper_figures/scale.png (frame time and peak bytes per active cell against activ
 --quick: zaphirus and petra at 480x270 (results/quick/scale/).
 
 Each model is `cutaway render preset:NAME` at 1920x1080 with the main job's settings (1% of PORO
-primaries, 9x9 mean filter, SSAO, ray-cast borders, --draw visible), one warm-up and one timed frame
-(the 10M model's frame takes minutes on llvmpipe), run as its own process so its peak resident set
-(getrusage of the child) is its own.
+primaries, 9x9 mean filter, SSAO, ray-cast borders, --draw visible), one warm-up frame (none above
+a million cells: the 10M model's frame takes minutes on llvmpipe) and one timed frame, run as its own
+process so its peak resident set (getrusage of the child) is its own.
 """
 import os
 import subprocess
@@ -32,7 +32,8 @@ def measure(exp, preset, size):
     """Runs one render as a child process; returns its stats, wall seconds and peak RSS bytes."""
     with tempfile.TemporaryDirectory(prefix="cutaway-scale-") as scratch:
         stats_path = os.path.join(scratch, "stats.json")
-        command = [exp.cutaway, "render", "preset:" + preset, "--size", *size.split("x"), "--warmup", "1", "--repeat", "1",
+        warmup = "0" if preset.startswith("scale-") else "1"
+        command = [exp.cutaway, "render", "preset:" + preset, "--size", *size.split("x"), "--warmup", warmup, "--repeat", "1",
                    "--no-metrics", "--out", os.path.join(scratch, "frame.png"), "--stats", stats_path]
         started = time.monotonic()
         child = subprocess.Popen(command, stdout=subprocess.DEVNULL)
