@@ -44,6 +44,8 @@ def main():
     exp = cx.Experiment("viewer", __doc__, ["viewer_responsiveness.json", "viewer_responsiveness.md", "viewer_petra.png"])
     if exp.up_to_date():
         return
+    # Read before the run rewrites paper_figures/viewer_petra.png (a tracked file: the tree would look dirty).
+    revision = exp.context()["git_revision"]
     xvfb_run = shutil.which("xvfb-run")
     if xvfb_run is None:
         raise SystemExit("xvfb-run not found (Debian package xvfb; scripts/install-deps.sh installs it)")
@@ -84,7 +86,7 @@ def main():
         "primary_cells": first["primary_cells"], "configuration": first["configuration"],
         "protocol": {"turns": turns, "range_changes": ranges, "idle_frames": idle, "panel": "shown",
                      "timing": first["timing"]},
-        "context": {**exp.context(first), "gl_version": first["gl_version"], "gl_platform": first["gl_platform"],
+        "context": {**exp.context(first), "git_revision": revision, "gl_version": first["gl_version"], "gl_platform": first["gl_platform"],
                     "git_revision_viewer": first["git_revision"]},
         "by_render_scale": summary, "runs": {str(k): v for k, v in runs.items()}})
 
@@ -98,7 +100,7 @@ def main():
                     f"{st['secondary']:.0f} | {st['mean_filter']:.0f} | {st['ssao']:.0f} | {st['total']:.0f} |")
     with open(exp.path("viewer_responsiveness.md"), "w") as f:
         f.write(f"# Viewer responsiveness: petra, {size[0]}x{size[1]} window, {first['gl_renderer']}\n\n"
-                f"Written by experiments/viewer_responsiveness/run.py (git {exp.context()['git_revision']}, "
+                f"Written by experiments/viewer_responsiveness/run.py (git {revision}, "
                 f"LP_NUM_THREADS={os.environ['LP_NUM_THREADS']}, {first['gl_platform']} under Xvfb). Medians over "
                 f"{turns + ranges} frames that re-render the cutaway (camera turns, primary-range changes) and {idle} "
                 "frames with a still view (panel and overlay redrawn over the last cutaway).\n\n" + "\n".join(rows) + "\n")
