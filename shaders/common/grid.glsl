@@ -7,7 +7,7 @@ layout(std430, binding = 2) readonly buffer Cells { uint cells[]; };            
 layout(binding = 8) uniform samplerBuffer pillar_texels;        // top, bottom per pillar
 layout(binding = 9) uniform samplerBuffer corner_depth_texels;  // 8 per active cell
 layout(binding = 10) uniform usamplerBuffer cell_texels;        // pillar of corner 0 | flip bit
-layout(std430, binding = 4) readonly buffer CellValues { float cell_values[]; };     // property per active cell
+layout(binding = 11) uniform samplerBuffer cell_value_texels;  // property per active cell
 
 uniform uvec2 grid_size;  // NX, NY
 uniform float up_sign;    // -1 when z is depth

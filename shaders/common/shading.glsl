@@ -5,7 +5,7 @@ uniform vec3 light_eye;         // headlight position (render space): the model 
 
 vec3 cell_colour(uint compact_cell) {
     float span = value_range.y - value_range.x;
-    float t = span > 0.0 ? (cell_values[compact_cell] - value_range.x) / span : 0.5;
+    float t = span > 0.0 ? (texelFetch(cell_value_texels, int(compact_cell)).r - value_range.x) / span : 0.5;
     return texture(colour_map, clamp(t, 0.0, 1.0)).rgb;
 }
 

@@ -44,7 +44,8 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::GridDims& dims, c
       shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
       pillar_texels_(pillars_, GL_RGBA32F),
       corner_depth_texels_(corner_depths_, GL_R32F),
-      cell_texels_(cells_, GL_R32UI) {}
+      cell_texels_(cells_, GL_R32UI),
+      value_texels_(values_, GL_R32F) {}
 
 const FaceBuffer& GridBuffers::all_faces() const {
     if (!all_.buffer) all_ = FaceBuffer::from(pipeline::all_faces(layout_));
@@ -79,6 +80,7 @@ void GridBuffers::bind_geometry() const {
     pillar_texels_.bind(pillar_texture_unit);
     corner_depth_texels_.bind(corner_depth_texture_unit);
     cell_texels_.bind(cell_texture_unit);
+    value_texels_.bind(value_texture_unit);
 }
 
 void GridBuffers::bind_culling_inputs() const {

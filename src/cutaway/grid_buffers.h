@@ -13,7 +13,8 @@ enum BufferBinding : unsigned { pillars_binding = 0, corner_depths_binding = 1, 
                                 faces_binding = 3, values_binding = 4, primary_cells_binding = 5,
                                 cell_face_classes_binding = 9, primary_bits_binding = 10 };
 /// Texture units of the geometry's buffer textures (common/grid.glsl).
-enum GeometryTextureUnit : unsigned { pillar_texture_unit = 8, corner_depth_texture_unit = 9, cell_texture_unit = 10 };
+enum GeometryTextureUnit : unsigned { pillar_texture_unit = 8, corner_depth_texture_unit = 9, cell_texture_unit = 10,
+                                      value_texture_unit = 11 };
 
 struct FaceBuffer {
     gl::Buffer buffer;
@@ -60,7 +61,7 @@ private:
     FaceBuffer secondary_, primary_, primary_cells_, shell_;
     /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
     /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
-    gl::BufferTexture pillar_texels_, corner_depth_texels_, cell_texels_;
+    gl::BufferTexture pillar_texels_, corner_depth_texels_, cell_texels_, value_texels_;
     mutable FaceBuffer all_;
 };
 
