@@ -4,7 +4,7 @@ file(MAKE_DIRECTORY ${OUT})
 set(REEK ${DATA}/grdecl/reek/reek_sim_grid.grdecl ${DATA}/grdecl/reek/reek_sim_poro.grdecl)
 
 execute_process(COMMAND ${CUTAWAY} render ${REEK} --size 320 240 --repeat 1 --baseline
-                        --out ${OUT}/reek.png --stats ${OUT}/reek.json
+                        --out ${OUT}/reek.png --stats ${OUT}/reek.json --cell-ids ${OUT}/reek_ids.png
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/reek.png)
   message(FATAL_ERROR "render failed (${rc}): ${err}")
@@ -16,8 +16,12 @@ foreach(stage cut_surface secondary primary ssao mean_filter total)
     message(FATAL_ERROR "stages_ms.${stage} = ${ms}")
   endif()
 endforeach()
+if(NOT EXISTS ${OUT}/reek_ids.png)
+  message(FATAL_ERROR "--cell-ids wrote no image")
+endif()
 foreach(key gl_query_ms gl_query_valid gl_renderer lp_num_threads size cells primary_cells primary_exposure
-            context_kept border_line_width baseline_ms git_revision configuration)
+            context_kept border_line_width baseline_ms git_revision configuration faces_drawn bricks_culled
+            cells_culled frame_ms_unfenced baseline_faces_drawn)
   string(JSON value ERROR_VARIABLE missing GET "${stats}" ${key})
   if(missing)
     message(FATAL_ERROR "stats.json has no ${key}")
@@ -38,6 +42,7 @@ endfunction()
 expect_failure(unknown_property 2 "--property SATURATION: not in the model \\(static: PORO" ${REEK} --property SATURATION)
 expect_failure(huge_image 2 "image width 100000: expected 1\\.\\.[0-9]+" ${REEK} --size 100000 100)
 expect_failure(bad_border 2 "--border 'wide': expected raycast\\|threshold" ${REEK} --border wide)
+expect_failure(bad_draw 2 "--draw 'some': expected visible\\|all-faces" ${REEK} --draw some)
 expect_failure(no_device 4 "OpenGL: EGL platform 'device': no hardware EGL device" ${REEK} --egl-platform device)
 file(WRITE ${OUT}/nan.grdecl "SPECGRID\n 1 1 1 1 F /\nCOORD\n 0 0 0 0 0 1  1 0 0 1 0 1  0 1 0 0 1 1  1 1 0 1 1 1 /\nZCORN\n 4*0 4*1 /\nPORO\n nan /\n")
 expect_failure(nan_property 2 "property PORO: NaN in active cell \\(i,j,k\\) = \\(0,0,0\\)" ${OUT}/nan.grdecl)
