@@ -1,0 +1,71 @@
+// CPU parts of the output-sensitive renderer: the IJK bricks the culling pass walks, and the
+// --cell-ids encoding.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <limits>
+
+#include "cutaway/cell_id_image.h"
+#include "cutaway/grid_layout.h"
+#include "cutaway/visibility/cell_bricks.h"
+#include "grid/cell_geometry.h"
+#include "grid/grdecl_reader.h"
+
+namespace cutaway {
+namespace {
+
+grid::CornerPointGrid reek_grid() {
+    return grid::load_grdecl({std::string(CUTAWAY_SHARED_DATA) + "/grdecl/reek/reek_sim_grid.grdecl"});
+}
+
+TEST(CellBricks, EveryActiveCellInExactlyOneBrickWhoseBoxHoldsItsCorners) {
+    const grid::CornerPointGrid grid = reek_grid();
+    const pipeline::ModelFrame frame = pipeline::make_model_frame(grid, 0.0);
+    const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
+    const pipeline::GridLayout layout = pipeline::build_grid_layout(grid, classes, frame);
+    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, layout.compact_of_cell, frame);
+
+    ASSERT_EQ(bricks.cells.size(), grid.active_count());
+    ASSERT_EQ(bricks.boxes.size(), 8 * bricks.brick_count());
+    std::vector<int> seen(grid.active_count(), 0);
+    for (std::size_t b = 0; b < bricks.brick_count(); ++b) {
+        ASSERT_LT(bricks.begin[b], bricks.begin[b + 1]) << "brick " << b << " is empty";
+        ASSERT_LE(bricks.begin[b + 1] - bricks.begin[b], std::uint32_t(pipeline::brick_side * pipeline::brick_side * pipeline::brick_side));
+        const glm::vec3 lo(bricks.boxes[8 * b], bricks.boxes[8 * b + 1], bricks.boxes[8 * b + 2]);
+        const glm::vec3 hi(bricks.boxes[8 * b + 4], bricks.boxes[8 * b + 5], bricks.boxes[8 * b + 6]);
+        grid::CellIjk first{};
+        for (std::uint32_t slot = bricks.begin[b]; slot < bricks.begin[b + 1]; ++slot) {
+            const std::uint32_t compact = bricks.cells[slot];
+            ++seen.at(compact);
+            const grid::CellIjk c = grid::cell_ijk(grid.dims(), layout.cells[compact] & 0x7fffffffu);
+            if (slot == bricks.begin[b]) first = c;
+            // One 4x4x4 IJK block per brick.
+            EXPECT_EQ(c.i / pipeline::brick_side, first.i / pipeline::brick_side);
+            EXPECT_EQ(c.j / pipeline::brick_side, first.j / pipeline::brick_side);
+            EXPECT_EQ(c.k / pipeline::brick_side, first.k / pipeline::brick_side);
+            for (const grid::Point3& p : grid::cell_corners(grid, c.i, c.j, c.k)) {
+                const glm::vec3 r = frame.to_render(p);
+                EXPECT_TRUE(glm::all(glm::greaterThanEqual(r, lo)) && glm::all(glm::lessThanEqual(r, hi)))
+                    << "cell " << c.i << "," << c.j << "," << c.k << " outside its brick's box";
+            }
+        }
+    }
+    EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+}
+
+TEST(CellIdImage, EncodesEclipseIndexPlusOneLittleEndianAndFlipsRows) {
+    const std::vector<std::uint32_t> ids{0, 1, 256, 65536, 16777216, std::numeric_limits<std::uint32_t>::max()};
+    const gl::RgbaImage image = pipeline::encode_cell_ids(ids, 3, 2);
+    // GL rows run bottom to top, PNG rows top to bottom: the PNG's first row is GL row 1.
+    EXPECT_EQ(image.at(0, 0)[2], 1);  // 65536: B = 1
+    EXPECT_EQ(image.at(1, 0)[3], 1);  // 16777216: A = 1
+    EXPECT_EQ(image.at(2, 0)[0], 255);
+    EXPECT_EQ(image.at(0, 1)[0] + image.at(0, 1)[1] + image.at(0, 1)[2] + image.at(0, 1)[3], 0);  // 0: no cell
+    EXPECT_EQ(image.at(1, 1)[0], 1);  // 1: R = 1
+    EXPECT_EQ(image.at(2, 1)[1], 1);  // 256: G = 1
+    EXPECT_EQ(pipeline::decode_cell_ids(image), ids);
+    EXPECT_THROW(pipeline::encode_cell_ids(ids, 4, 2), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cutaway
