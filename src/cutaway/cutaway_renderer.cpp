@@ -178,7 +178,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         scene_.clear();
         scene_.framebuffer.bind();
         glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_LESS);
+        glDepthFunc(s.depth_ties_to_last ? GL_LEQUAL : GL_LESS);
         if (!cut_needed) return;
         secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, active_cut(), cut_camera);
         if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, active_cut(), cut_camera);
@@ -187,6 +187,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         scene_.framebuffer.bind();
         if (draw_primaries) primary_.draw_primaries(context, buffers_.primary_faces(), s);
         if (s.contours) primary_.draw_shell_depth(context, scene_);
+        glDepthFunc(GL_LESS);
     });
     if (s.ssao)
         gl::timed_stage(timer_, "ssao", [&] {

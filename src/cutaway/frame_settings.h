@@ -40,6 +40,9 @@ struct FrameSettings {
     OnlyLayer only = OnlyLayer::both;
     bool cut_enabled = true;               ///< false: no cut at all (the uncut reference frame)
     bool colour_bar = true;
+    /// Equal depths in stages 2 and 3: the fragment drawn first wins (GL_LESS, the default) or the
+    /// one drawn last (GL_LEQUAL). Tests use it to tell draw-order ties from real differences.
+    bool depth_ties_to_last = false;
 };
 
 /// aperture 180 degrees: both walls flat (the expert request "remove everything in front").
