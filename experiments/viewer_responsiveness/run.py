@@ -44,8 +44,6 @@ def main():
     exp = cx.Experiment("viewer", __doc__, ["viewer_responsiveness.json", "viewer_responsiveness.md", "viewer_petra.png"])
     if exp.up_to_date():
         return
-    # Read before the run rewrites paper_figures/viewer_petra.png (a tracked file: the tree would look dirty).
-    revision = exp.context()["git_revision"]
     xvfb_run = shutil.which("xvfb-run")
     if xvfb_run is None:
         raise SystemExit("xvfb-run not found (Debian package xvfb; scripts/install-deps.sh installs it)")
@@ -57,7 +55,9 @@ def main():
             script = os.path.join(scratch, f"script-{scale}.txt")
             stats = os.path.join(scratch, f"stats-{scale}.json")
             with open(script, "w") as f:
-                f.write(script_text(turns, ranges, idle, exp.path("viewer_petra.png") if scale == 1.0 else None))
+                # The screenshot goes to scratch and is copied at the end: rewriting the tracked
+                # figure during the runs would make the viewer record a dirty revision.
+                f.write(script_text(turns, ranges, idle, os.path.join(scratch, "viewer_petra.png") if scale == 1.0 else None))
             command = [xvfb_run, "-a", "-s", "-screen 0 1920x1080x24", exp.cutaway, "view", "preset:petra",
                        "--size", str(size[0]), str(size[1]), "--render-scale", str(scale), "--script", script,
                        "--stats", stats]
@@ -65,6 +65,8 @@ def main():
             with open(stats) as f:
                 document = f.read()
             runs[scale] = cx.json.loads(document)
+        revision = exp.context()["git_revision"]  # before the copy changes a tracked file
+        shutil.copyfile(os.path.join(scratch, "viewer_petra.png"), exp.path("viewer_petra.png"))
 
     summary = {}
     for scale, stats in runs.items():
