@@ -1,9 +1,6 @@
 // Corner-point geometry on the GPU: corners rebuilt from pillars and per-cell corner depths
 // (src/cutaway/grid_layout.h describes the buffers). Render space: X east, Y north, Z up.
-layout(std430, binding = 0) readonly buffer Pillars { vec4 pillars[]; };           // top, bottom per pillar
-layout(std430, binding = 1) readonly buffer CornerDepths { float corner_depths[]; };  // 8 per active cell
-layout(std430, binding = 2) readonly buffer Cells { uint cells[]; };               // pillar of corner 0 | flip bit
-// The same geometry through the texture path (src/cutaway/grid_buffers.h says why).
+// Read through buffer textures (src/cutaway/grid_buffers.h says why).
 layout(binding = 8) uniform samplerBuffer pillar_texels;        // top, bottom per pillar
 layout(binding = 9) uniform samplerBuffer corner_depth_texels;  // 8 per active cell
 layout(binding = 10) uniform usamplerBuffer cell_texels;        // pillar of corner 0 | flip bit

@@ -199,7 +199,6 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         empty_vertex_array_.bind();
     });
     glFinish();
-    last_draw_ = s.draw;
     last_drawn_ = {};
     last_drawn_.secondary = cut_needed && s.draw == DrawMode::all_faces ? buffers_.secondary_faces().count : 0;
     last_drawn_.primary = draw_primaries ? buffers_.primary_faces().count : 0;
@@ -250,7 +249,6 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode dr
         secondary_.draw(context, submit, plain, cut_, camera);
     });
     frozen_valid_ = false;
-    last_draw_ = draw;
     last_drawn_ = {};
     last_drawn_.secondary = draw == DrawMode::all_faces ? buffers_.all_faces().count : 0;
     visible_used_ = draw == DrawMode::visible;

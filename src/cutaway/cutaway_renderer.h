@@ -133,7 +133,6 @@ private:
     std::vector<std::uint8_t> primary_flags_;  ///< per Eclipse cell, for the all-faces list built on demand
     bool secondary_list_built_ = false;
     FacesDrawn last_drawn_;
-    DrawMode last_draw_ = DrawMode::visible;
     bool visible_used_ = false;  ///< the last frame's stage 2 used the culling pass
     gl::Texture colour_map_;
     ColourBarLabel label_;

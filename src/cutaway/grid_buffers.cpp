@@ -73,10 +73,6 @@ void GridBuffers::set_selection(const FaceLists& lists, const std::vector<std::u
 }
 
 void GridBuffers::bind_geometry() const {
-    pillars_.bind_base(GL_SHADER_STORAGE_BUFFER, pillars_binding);
-    corner_depths_.bind_base(GL_SHADER_STORAGE_BUFFER, corner_depths_binding);
-    cells_.bind_base(GL_SHADER_STORAGE_BUFFER, cells_binding);
-    values_.bind_base(GL_SHADER_STORAGE_BUFFER, values_binding);
     pillar_texels_.bind(pillar_texture_unit);
     corner_depth_texels_.bind(corner_depth_texture_unit);
     cell_texels_.bind(cell_texture_unit);

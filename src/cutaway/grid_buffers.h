@@ -9,8 +9,7 @@
 namespace cutaway::pipeline {
 
 /// Binding points shared with the shaders.
-enum BufferBinding : unsigned { pillars_binding = 0, corner_depths_binding = 1, cells_binding = 2,
-                                faces_binding = 3, values_binding = 4, primary_cells_binding = 5,
+enum BufferBinding : unsigned { faces_binding = 3, primary_cells_binding = 5,
                                 cell_face_classes_binding = 9, primary_bits_binding = 10 };
 /// Texture units of the geometry's buffer textures (common/grid.glsl).
 enum GeometryTextureUnit : unsigned { pillar_texture_unit = 8, corner_depth_texture_unit = 9, cell_texture_unit = 10,
@@ -35,7 +34,7 @@ public:
 
     /// Every face of every secondary cell of the selection (the all-faces path's stage 2).
     void set_secondary_faces(const std::vector<std::uint32_t>& records) { secondary_ = FaceBuffer::from(records); }
-    /// Binds pillars, corner depths, cells and values.
+    /// Binds the buffer textures of pillars, corner depths, cells and values.
     void bind_geometry() const;
     /// Binds the per-cell face classes and primary bits (visibility/cull_cells.comp).
     void bind_culling_inputs() const;
