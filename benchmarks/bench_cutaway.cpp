@@ -71,8 +71,8 @@ private:
 std::size_t select_fraction(Scene& scene, double fraction) {
     app::RenderOptions options;
     options.primary_fraction = fraction;
-    const std::vector<std::uint8_t> flags = app::select_primary_cells(scene.model->grid, scene.property, options);
-    scene.renderer->set_primaries(flags);
+    scene.renderer->select_range(scene.property.primary_range,
+                                 app::choose_primary_range(scene.model->grid, scene.property, options));
     return scene.renderer->primary_cell_count();
 }
 

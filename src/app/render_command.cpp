@@ -93,18 +93,18 @@ int run_render(const RenderOptions& options) {
     const LoadedModel model = load_model(options.model, options.memory_limit_bytes());
     const grid::CornerPointGrid& grid = model.grid;
     PropertyChoice property = choose_property(grid, options);
-    const std::vector<std::uint8_t> primaries = select_primary_cells(grid, property, options);
-    const std::size_t primary_count = grid::count_primaries(primaries);
-    if (primary_count == 0)
-        std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
-                  << property.primary_range.min << ", " << property.primary_range.max
-                  << "]; rendering the context only\n";
+    const std::optional<grid::IjkBox> box = choose_primary_range(grid, property, options);
 
     std::unique_ptr<gl::GlContext> context = gl::create_context(options.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height);
     renderer.set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
-    renderer.set_primaries(primaries);
+    renderer.select_range(property.primary_range, box);
+    const std::size_t primary_count = renderer.primary_cell_count();
+    if (primary_count == 0)
+        std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
+                  << property.primary_range.min << ", " << property.primary_range.max
+                  << "]; rendering the context only\n";
     const pipeline::FrameSettings settings = options.frame_settings();
     const pipeline::Camera camera =
         pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height);

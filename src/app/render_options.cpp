@@ -71,7 +71,7 @@ nlohmann::json RenderOptions::describe() const {
             {"mean_filter_kernel", pipeline::to_string(s.mean_filter_kernel)}, {"ssao", s.ssao},
             {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius}, {"saturation", s.saturation},
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
-            {"hide_internal_lines", s.hide_internal_lines}, {"only", pipeline::to_string(s.only)},
+            {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
             {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
 }
@@ -102,6 +102,9 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_flag("--silhouette", o.settings.silhouette, "silhouette of the primary cluster");
     c.add_option("--silhouette-width", o.settings.silhouette_width_px, "silhouette width, pixels");
     c.add_flag("--hide-internal-lines", o.settings.hide_internal_lines, "no cell edges on the cut fill");
+    c.add_flag("--see-through", o.settings.see_through,
+               "let the cut leave the model through its rear shell (the paper's frustums; default: the cut "
+               "stops just in front of the farthest shell surface, which shows as cut fill)");
     c.add_option("--contours", o.contours, "shell contour lines: on|off");
     c.add_option("--only", o.only, "both|primaries|secondaries");
     c.add_flag("!--no-colour-bar", o.settings.colour_bar, "leave out the colour bar");
@@ -177,8 +180,8 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
     return choice;
 }
 
-std::vector<std::uint8_t> select_primary_cells(const grid::CornerPointGrid& grid, PropertyChoice& property,
-                                               const RenderOptions& options) {
+std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
+                                                 const RenderOptions& options) {
     if (!options.range.empty() && options.primary_fraction > 0)
         throw std::invalid_argument("give either --range or --primary-fraction, not both");
     if (!options.range.empty())
@@ -191,7 +194,7 @@ std::vector<std::uint8_t> select_primary_cells(const grid::CornerPointGrid& grid
         const auto& b = options.ijk_box;
         box = grid::IjkBox{b[0], b[1], b[2], b[3], b[4], b[5]};
     }
-    return grid::select_primaries(grid, property.values(), property.name, property.primary_range, box);
+    return box;
 }
 
 }  // namespace cutaway::app

@@ -83,8 +83,9 @@ struct PropertyChoice {
 /// Throws std::invalid_argument for an unknown property or step, naming the known ones.
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options);
 
-/// Primary flags per cell from the property range (or fraction) and the IJK box.
-std::vector<std::uint8_t> select_primary_cells(const grid::CornerPointGrid& grid, PropertyChoice& property,
-                                               const RenderOptions& options);
+/// Sets property.primary_range from --range (or --primary-fraction) and returns the --ijk-box,
+/// if any: the selection the renderer makes on the GPU (CutawayRenderer::select_range).
+std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
+                                                 const RenderOptions& options);
 
 }  // namespace cutaway::app

@@ -74,9 +74,11 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       grid_(grid),
       buffers_(layout_, grid.dims(), frame_),
       visible_(make_visible_faces(shaders, grid, layout_, frame_)),
+      selection_(shaders, layout_, grid.dims()),
       colour_map_(make_colour_map_texture()),
       cut_(width, height),
       filtered_cut_(width, height),
+      rear_shell_(shaders, width, height),
       scene_(width, height),
       post_(width, height),
       secondary_(shaders),
@@ -86,6 +88,9 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       ssao_(shaders),
       composite_(shaders),
       colour_bar_(shaders) {
+    // The GPU holds the corner geometry now; the CPU copy (36 bytes per active cell) is not read again.
+    layout_.corner_depths = {};
+    layout_.pillars = {};
     set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));
     set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1});
 }
@@ -100,17 +105,31 @@ void CutawayRenderer::set_colouring(const std::vector<float>& values, const Colo
 }
 
 void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
-    const FaceLists lists = build_face_lists(grid_, layout_, flags, false);
-    primary_cells_ = lists.primary_cells.size();
-    buffers_.set_selection(lists, primary_bits(lists, layout_.cells.size()));
-    primary_flags_ = flags;
+    if (flags.size() != grid_.cell_count())
+        throw std::invalid_argument("primary flags: " + std::to_string(flags.size()) + " entries, expected one per cell");
+    selection_.select_bits(buffers_, primary_bits(layout_, flags));
+    selection_changed();
+}
+
+void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box) {
+    selection_.select_range(buffers_, range, box);
+    selection_changed();
+}
+
+void CutawayRenderer::selection_changed() {
     secondary_list_built_ = false;
     frozen_valid_ = false;
 }
 
+std::size_t CutawayRenderer::primary_cell_count() const { return buffers_.primary_cells().count; }
+
+std::vector<std::uint8_t> CutawayRenderer::primary_flags() const {
+    return pipeline::primary_flags(layout_, buffers_.read_primary_bits(), grid_.cell_count());
+}
+
 const FaceBuffer& CutawayRenderer::secondary_face_list() {
     if (!secondary_list_built_) {
-        buffers_.set_secondary_faces(build_face_lists(grid_, layout_, primary_flags_, true).secondary);
+        buffers_.set_secondary_faces(build_face_lists(grid_, layout_, primary_flags(), true).secondary);
         secondary_list_built_ = true;
     }
     return buffers_.secondary_faces();
@@ -137,6 +156,15 @@ CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camer
             nearest_model_depth(frame_, cut_camera), s.seeds};
 }
 
+void CutawayRenderer::resolve_cut(const CutTargets& targets, const FrameSettings& s, const Camera& cut_camera) {
+    // Far enough in front of the shell that its own fragments (the same faces, rasterised from the
+    // model camera) stay behind the cut despite rounding: 1e-4 of the model's radius, plus 64
+    // steps of the 32-bit depth encoding over the camera's depth range (which dominates for tiny
+    // models: 1e-5 of the radius left 11 pixels in front of the cut on a 6-cell grid).
+    const float rear_margin = 1e-4f * float(frame_.radius()) + 4e-6f * (cut_camera.far_plane - cut_camera.near_plane);
+    cut_resolve_.apply(targets, cut_camera, s.see_through ? nullptr : &rear_shell_.depth(), rear_margin);
+}
+
 const CutTargets& CutawayRenderer::active_cut() const { return last_filtered_ ? filtered_cut_ : cut_; }
 
 FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
@@ -158,12 +186,13 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
             cut_.clear();
             if (!cut_drawn) return;
             strategy(s.strategy).render(cut_inputs(s, cut_camera), cut_);
-            if (!last_filtered_) cut_resolve_.apply(cut_, cut_camera);
+            if (!s.see_through) rear_shell_.render(buffers_, cut_camera);
+            if (!last_filtered_) resolve_cut(cut_, s, cut_camera);
         });
         if (last_filtered_)
             gl::timed_stage(timer_, "mean_filter", [&] {
                 mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera);
-                cut_resolve_.apply(filtered_cut_, cut_camera);
+                resolve_cut(filtered_cut_, s, cut_camera);
             });
         frozen_valid_ = frozen_camera_.has_value();
     }
@@ -264,7 +293,7 @@ FacesDrawn CutawayRenderer::faces_drawn() const {
     return drawn;
 }
 
-std::size_t CutawayRenderer::gpu_memory_bytes() const { return buffers_.memory_bytes() + visible_.memory_bytes(); }
+std::size_t CutawayRenderer::gpu_memory_bytes() const { return buffers_.memory_bytes() + visible_.memory_bytes() + selection_.memory_bytes(); }
 
 void CutawayRenderer::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {
     const bool same_size = x1 - x0 == width_ && y1 - y0 == height_;

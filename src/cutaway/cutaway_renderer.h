@@ -18,6 +18,8 @@
 #include "cutaway/post/mean_filter.h"
 #include "cutaway/post/ssao.h"
 #include "cutaway/primary_pass.h"
+#include "cutaway/rear_shell_depth.h"
+#include "cutaway/selection/gpu_primary_selection.h"
 #include "cutaway/secondary_pass.h"
 #include "cutaway/visibility/visible_faces.h"
 #include "gl/image.h"
@@ -76,7 +78,12 @@ public:
     void set_colouring(const std::vector<float>& values, const ColourBarLabel& label);
     /// Primary flags, one per Eclipse cell.
     void set_primaries(const std::vector<std::uint8_t>& flags);
-    std::size_t primary_cell_count() const { return primary_cells_; }
+    /// Primaries chosen on the GPU: the active cells whose colouring value lies in `range` (and
+    /// inside `box`). Uploads nothing: a range change costs a few compute passes.
+    void select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box = std::nullopt);
+    std::size_t primary_cell_count() const;
+    /// The current primary set, one flag per Eclipse cell (read back from the GPU).
+    std::vector<std::uint8_t> primary_flags() const;
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until unfreeze().
     void freeze(const Camera& camera) { frozen_camera_ = camera; frozen_valid_ = false; }
@@ -119,9 +126,12 @@ private:
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut() const;
+    /// Normals and positions of `targets`' cut, clamped in front of the rear shell (unless see_through).
+    void resolve_cut(const CutTargets& targets, const FrameSettings& settings, const Camera& cut_camera);
     /// Stage 2's faces for `draw`: the culling pass's selection, or the full secondary list.
     void draw_secondary_faces(DrawMode draw);
     const FaceBuffer& secondary_face_list();
+    void selection_changed();
 
     const gl::ShaderLibrary& shaders_;
     int width_, height_;
@@ -130,14 +140,14 @@ private:
     const grid::CornerPointGrid& grid_;
     GridBuffers buffers_;
     VisibleFaces visible_;
-    std::vector<std::uint8_t> primary_flags_;  ///< per Eclipse cell, for the all-faces list built on demand
+    GpuPrimarySelection selection_;
     bool secondary_list_built_ = false;
     FacesDrawn last_drawn_;
     bool visible_used_ = false;  ///< the last frame's stage 2 used the culling pass
     gl::Texture colour_map_;
     ColourBarLabel label_;
-    std::size_t primary_cells_ = 0;
     CutTargets cut_, filtered_cut_;
+    RearShellDepth rear_shell_;
     SceneTargets scene_;
     PostTargets post_;
     SecondaryPass secondary_;

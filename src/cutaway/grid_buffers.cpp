@@ -42,6 +42,7 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::GridDims& dims, c
       primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
                     GL_DYNAMIC_STORAGE_BIT),
       shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
+      outer_(FaceBuffer::from(pipeline::outer_faces(layout))),
       pillar_texels_(pillars_, GL_RGBA32F),
       corner_depth_texels_(corner_depths_, GL_R32F),
       cell_texels_(cells_, GL_R32UI),
@@ -55,7 +56,7 @@ const FaceBuffer& GridBuffers::all_faces() const {
 std::size_t GridBuffers::memory_bytes() const {
     std::size_t bytes = 0;
     for (const gl::Buffer* b : std::initializer_list<const gl::Buffer*>{&pillars_, &corner_depths_, &cells_, &values_, &cell_face_classes_, &primary_bits_,
-                                &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &shell_.buffer, &all_.buffer})
+                                &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &shell_.buffer, &outer_.buffer, &all_.buffer})
         bytes += b->size_bytes();
     return bytes;
 }
@@ -64,12 +65,28 @@ void GridBuffers::set_values(const std::vector<float>& compact_values) {
     glNamedBufferSubData(values_.id(), 0, GLsizeiptr(compact_values.size() * sizeof(float)), compact_values.data());
 }
 
-void GridBuffers::set_selection(const FaceLists& lists, const std::vector<std::uint32_t>& primary_bits) {
-    glNamedBufferSubData(primary_bits_.id(), 0, GLsizeiptr(std::min(primary_bits.size() * 4, primary_bits_.size_bytes())),
-                         primary_bits.data());
-    secondary_ = FaceBuffer::from(lists.secondary);
-    primary_ = FaceBuffer::from(lists.primary);
-    primary_cells_ = FaceBuffer::from(lists.primary_cells);
+void GridBuffers::upload_primary_bits(const std::vector<std::uint32_t>& bits) {
+    glNamedBufferSubData(primary_bits_.id(), 0, GLsizeiptr(std::min(bits.size() * 4, primary_bits_.size_bytes())),
+                         bits.data());
+}
+
+std::vector<std::uint32_t> GridBuffers::read_primary_bits() const {
+    std::vector<std::uint32_t> bits((layout_.cells.size() + 31) / 32);
+    glGetNamedBufferSubData(primary_bits_.id(), 0, GLsizeiptr(bits.size() * 4), bits.data());
+    return bits;
+}
+
+namespace {
+void resize_list(FaceBuffer& list, std::size_t count) {
+    if (list.buffer.size_bytes() < count * sizeof(std::uint32_t) || !list.buffer)
+        list.buffer = gl::Buffer(std::max<std::size_t>(count, 1) * sizeof(std::uint32_t), nullptr);
+    list.count = count;
+}
+}  // namespace
+
+void GridBuffers::resize_primary_lists(std::size_t cells, std::size_t faces) {
+    resize_list(primary_cells_, cells);
+    resize_list(primary_, faces);
 }
 
 void GridBuffers::bind_geometry() const {

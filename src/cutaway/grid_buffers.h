@@ -28,9 +28,12 @@ public:
 
     /// One value per active cell (compact order).
     void set_values(const std::vector<float>& compact_values);
-    /// Primary faces and cells of a selection, and one primary bit per compact cell (the
-    /// culling pass reads the bits; the secondary list is only filled for `--draw all-faces`).
-    void set_selection(const FaceLists& lists, const std::vector<std::uint32_t>& primary_bits);
+    /// One primary bit per compact cell (bit c % 32 of word c / 32), read by the culling pass
+    /// and by the selection passes (selection/gpu_primary_selection.h) that build the lists.
+    void upload_primary_bits(const std::vector<std::uint32_t>& bits);
+    std::vector<std::uint32_t> read_primary_bits() const;
+    /// Sizes the primary cell and face lists for the selection passes to fill (grows only).
+    void resize_primary_lists(std::size_t cells, std::size_t faces);
 
     /// Every face of every secondary cell of the selection (the all-faces path's stage 2).
     void set_secondary_faces(const std::vector<std::uint32_t>& records) { secondary_ = FaceBuffer::from(records); }
@@ -47,6 +50,8 @@ public:
     const FaceBuffer& primary_faces() const { return primary_; }
     const FaceBuffer& primary_cells() const { return primary_cells_; }
     const FaceBuffer& shell_faces() const { return shell_; }
+    /// Shell and fault faces (grid_layout.h outer_faces).
+    const FaceBuffer& outer_faces() const { return outer_; }
     /// Every face of every active cell (built on first use: only the all-faces path needs it).
     const FaceBuffer& all_faces() const;
     /// Bytes of every buffer allocated so far.
@@ -57,7 +62,7 @@ private:
     glm::uvec2 grid_size_;
     ModelFrame frame_;
     gl::Buffer pillars_, corner_depths_, cells_, values_, cell_face_classes_, primary_bits_;
-    FaceBuffer secondary_, primary_, primary_cells_, shell_;
+    FaceBuffer secondary_, primary_, primary_cells_, shell_, outer_;
     /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
     /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
     gl::BufferTexture pillar_texels_, corner_depth_texels_, cell_texels_, value_texels_;

@@ -92,12 +92,6 @@ FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& 
     return lists;
 }
 
-std::vector<std::uint32_t> primary_bits(const FaceLists& lists, std::size_t active_cells) {
-    std::vector<std::uint32_t> bits((active_cells + 31) / 32, 0);
-    for (std::uint32_t compact : lists.primary_cells) bits[compact / 32] |= 1u << (compact % 32);
-    return bits;
-}
-
 std::size_t selectable_face_capacity(const GridLayout& layout) {
     std::size_t exposed = 0, interior = 0;
     for (grid::FaceClass c : layout.face_classes) {
@@ -123,6 +117,10 @@ std::vector<std::uint32_t> faces_where(const GridLayout& layout, Keep keep) {
 
 std::vector<std::uint32_t> shell_faces(const GridLayout& layout) {
     return faces_where(layout, [](grid::FaceClass c) { return c == grid::FaceClass::shell; });
+}
+
+std::vector<std::uint32_t> outer_faces(const GridLayout& layout) {
+    return faces_where(layout, [](grid::FaceClass c) { return c == grid::FaceClass::shell || c == grid::FaceClass::fault; });
 }
 
 std::vector<std::uint32_t> all_faces(const GridLayout& layout) {

@@ -21,6 +21,7 @@ inline std::uint32_t pack_face(std::uint32_t compact_cell, grid::FaceSide side, 
 
 struct GridLayout {
     /// 2 x vec4 per pillar (top xyz, 0; bottom xyz, 0), centred model units (not flipped).
+    /// The renderer frees pillars and corner_depths once GridBuffers has uploaded them.
     std::vector<float> pillars;
     /// 8 per active cell, ZCORN order (corner bits: 1 = i+1, 2 = j+1, 4 = bottom), centred depth.
     std::vector<float> corner_depths;
@@ -49,15 +50,16 @@ struct FaceLists {
 FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& layout,
                            const std::vector<std::uint8_t>& primary_flags, bool with_secondary);
 
-/// One bit per compact cell (bit c % 32 of word c / 32): set for primaries.
-std::vector<std::uint32_t> primary_bits(const FaceLists& lists, std::size_t active_cells);
-
 /// Faces the visible path can select at most: exposed faces once per cell, interior faces once
 /// per pair (plus a margin for ties, where both copies of an edge-on face count as seen from inside).
 std::size_t selectable_face_capacity(const GridLayout& layout);
 
 /// Shell faces of the whole model (for the contour pass), independent of the selection.
 std::vector<std::uint32_t> shell_faces(const GridLayout& layout);
+
+/// Shell and fault faces (fault faces may be partly uncovered): the farthest of them along a ray
+/// is where the ray leaves the model (rear_shell_depth.h).
+std::vector<std::uint32_t> outer_faces(const GridLayout& layout);
 
 /// Every face of every active cell (the baseline frame).
 std::vector<std::uint32_t> all_faces(const GridLayout& layout);

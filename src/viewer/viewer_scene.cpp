@@ -14,12 +14,15 @@ ViewerScene::ViewerScene(app::LoadedModel model, const gl::ShaderLibrary& shader
 
 void ViewerScene::select(const app::RenderOptions& options) {
     app::PropertyChoice property = app::choose_property(model_.grid, options);
-    std::vector<std::uint8_t> primaries = app::select_primary_cells(model_.grid, property, options);
-    histogram_ = active_histogram(model_.grid, property.values(), histogram_bins);
+    std::optional<grid::IjkBox> box = app::choose_primary_range(model_.grid, property, options);
+    // A new range over the same values re-uploads nothing: the renderer selects on the GPU.
+    const bool same_values = renderer_ && property.label == property_.label;
+    if (!same_values) histogram_ = active_histogram(model_.grid, property.values(), histogram_bins);
     property_ = std::move(property);
-    primaries_ = std::move(primaries);
-    primary_count_ = grid::count_primaries(primaries_);
-    if (renderer_) apply_selection(*renderer_);
+    box_ = box;
+    if (!renderer_) return;
+    if (!same_values) apply_colouring(*renderer_);
+    renderer_->select_range(property_.primary_range, box_);
 }
 
 void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings) {
@@ -32,10 +35,16 @@ void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameS
 }
 
 void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
+    apply_colouring(renderer);
+    renderer.select_range(property_.primary_range, box_);
+}
+
+void ViewerScene::apply_colouring(pipeline::CutawayRenderer& renderer) const {
     renderer.set_colouring(property_.values(),
                            {property_.label, property_.colour_range.min, property_.colour_range.max});
-    renderer.set_primaries(primaries_);
 }
+
+std::size_t ViewerScene::primary_count() const { return renderer_ ? renderer_->primary_cell_count() : 0; }
 
 std::size_t ViewerScene::step_count() const { return model_.grid.step_count(property_.name); }
 

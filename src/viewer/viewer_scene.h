@@ -2,6 +2,7 @@
 // The model on screen: grid, chosen property, primary cells and the cutaway renderer drawing
 // them. The renderer is rebuilt for a new size or edited shaders; the selection survives.
 #include <memory>
+#include <optional>
 
 #include "app/model_source.h"
 #include "app/render_options.h"
@@ -30,20 +31,20 @@ public:
     const grid::CornerPointGrid& grid() const { return model_.grid; }
     const std::string& description() const { return model_.description; }
     const app::PropertyChoice& property() const { return property_; }
-    std::size_t primary_count() const { return primary_count_; }
+    std::size_t primary_count() const;
     const PropertyHistogram& histogram() const { return histogram_; }
     /// Time steps of the property shown (0 for a static one).
     std::size_t step_count() const;
 
 private:
     void apply_selection(pipeline::CutawayRenderer& renderer) const;
+    void apply_colouring(pipeline::CutawayRenderer& renderer) const;
 
     app::LoadedModel model_;
     const gl::ShaderLibrary& shaders_;
     double z_scale_;
     app::PropertyChoice property_;
-    std::vector<std::uint8_t> primaries_;
-    std::size_t primary_count_ = 0;
+    std::optional<grid::IjkBox> box_;
     PropertyHistogram histogram_;
     std::unique_ptr<pipeline::CutawayRenderer> renderer_;
 };

@@ -2,6 +2,8 @@
 
 #include <optional>
 
+#include "generators/generator.h"
+
 namespace cutaway::test {
 namespace {
 
@@ -41,6 +43,20 @@ const grid::CornerPointGrid& reek() {
 const grid::CornerPointGrid& petra() {
     if (!shared().petra) shared().petra = app::load_model({"preset:petra"}, std::size_t(1) << 32);
     return shared().petra->grid;
+}
+
+grid::CornerPointGrid faulted_model_with_inactive_cells(const grid::GridDims& dims, double inactive_fraction,
+                                                        unsigned seed) {
+    generators::GeneratorParameters p;
+    p.dims = dims;
+    p.fault_count = 5;
+    p.throw_range = {10, 40};
+    p.inactive_fraction = inactive_fraction;
+    p.pinch_out_fraction = 0.05;
+    p.time_steps = 0;
+    p.seed = seed;
+    generators::ProgressLog quiet(nullptr);
+    return generators::generate_model(p, quiet).grid;
 }
 
 std::unique_ptr<pipeline::CutawayRenderer> make_renderer(const grid::CornerPointGrid& grid, int width, int height) {

@@ -27,6 +27,10 @@ const grid::CornerPointGrid& reek();
 /// The petra preset (39 x 42 x 20, generated in memory), once.
 const grid::CornerPointGrid& petra();
 
+/// A generated model with faults, pinch-outs and `inactive_fraction` of its cells inactive.
+grid::CornerPointGrid faulted_model_with_inactive_cells(const grid::GridDims& dims, double inactive_fraction,
+                                                        unsigned seed);
+
 /// A renderer of `grid` coloured by PORO, no colour bar needed by the invariants.
 std::unique_ptr<pipeline::CutawayRenderer> make_renderer(const grid::CornerPointGrid& grid, int width, int height);
 

@@ -133,16 +133,7 @@ TEST(VisibleDrawIdentity, Zaphirus) { check_identity(generated("zaphirus"), 1); 
 TEST(VisibleDrawIdentity, Petra) { check_identity(petra(), 2); }
 
 TEST(VisibleDrawIdentity, FaultedGeneratedModelWithInactiveCells) {
-    generators::GeneratorParameters p;
-    p.dims = {24, 20, 8};
-    p.fault_count = 5;
-    p.throw_range = {10, 40};
-    p.inactive_fraction = 0.25;
-    p.pinch_out_fraction = 0.05;
-    p.time_steps = 0;
-    p.seed = 5;
-    generators::ProgressLog quiet(nullptr);
-    const grid::CornerPointGrid grid = generators::generate_model(p, quiet).grid;
+    const grid::CornerPointGrid grid = faulted_model_with_inactive_cells({24, 20, 8}, 0.25, 5);
     ASSERT_LT(grid.active_count(), grid.cell_count());
     check_identity(grid, 3);
 }

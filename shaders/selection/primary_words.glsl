@@ -1,0 +1,44 @@
+// The primary selection on the GPU (src/cutaway/selection/gpu_primary_selection.h): one
+// invocation per word of 32 active cells, in compact order, so every list comes out in the order
+// the CPU reference builds it (ascending cell, then side).
+#include "common/grid.glsl"
+
+layout(std430, binding = 9) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 2 bits per side
+layout(std430, binding = 10) buffer PrimaryBits { uint primary_bits[]; };  // 1 bit per compact cell
+layout(std430, binding = 14) readonly buffer EclipseOfCompact { uint eclipse_of_compact[]; };
+layout(std430, binding = 15) readonly buffer CompactOfEclipse { uint compact_of_eclipse[]; };  // ~0u: inactive
+// Per word: primary cells and primary faces it holds; after the scan, the first index of each.
+layout(std430, binding = 16) buffer WordCounts { uvec2 word_counts[]; };
+
+uniform uint active_cells;
+uniform uvec3 grid_dims;  // NX, NY, NZ
+
+const uint no_cell = 0xffffffffu;
+
+uint word_count() { return (active_cells + 31u) / 32u; }
+
+// This invocation's word (dispatches spread over Y beyond 65535 workgroups along X).
+uint word_index() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x; }
+
+uvec3 cell_ijk(uint eclipse) {
+    return uvec3(eclipse % grid_dims.x, (eclipse / grid_dims.x) % grid_dims.y, eclipse / (grid_dims.x * grid_dims.y));
+}
+
+bool is_primary(uint compact) { return compact != no_cell && ((primary_bits[compact >> 5] >> (compact & 31u)) & 1u) != 0u; }
+
+uint face_class(uint compact, uint side) { return (cell_face_classes[compact] >> (2u * side)) & 3u; }
+
+// Compact index of the active neighbour across `side` (I-, I+, J-, J+, K-, K+), or no_cell.
+uint neighbour(uint compact, uint side) {
+    uint eclipse = eclipse_of_compact[compact];
+    ivec3 c = ivec3(cell_ijk(eclipse));
+    c[side >> 1] += (side & 1u) == 0u ? -1 : 1;
+    if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(grid_dims)))) return no_cell;
+    return compact_of_eclipse[uint(c.x) + grid_dims.x * (uint(c.y) + grid_dims.y * uint(c.z))];
+}
+
+// A primary cell draws every face except an interior one shared with another primary (hidden
+// inside the primary cluster), as build_face_lists does.
+bool primary_face_drawn(uint compact, uint side) {
+    return face_class(compact, side) != face_class_interior || !is_primary(neighbour(compact, side));
+}

@@ -1,0 +1,126 @@
+#include "cutaway/selection/gpu_primary_selection.h"
+
+#include <algorithm>
+#include <limits>
+#include <span>
+#include <stdexcept>
+
+#include "gl/uniforms.h"
+
+namespace cutaway::pipeline {
+namespace {
+
+enum SelectionBinding : unsigned { eclipse_of_compact_binding = 14, compact_of_eclipse_binding = 15,
+                                   word_counts_binding = 16, totals_binding = 17, primary_cells_out_binding = 18,
+                                   primary_faces_out_binding = 19 };
+
+std::vector<std::uint32_t> eclipse_indices(const GridLayout& layout) {
+    std::vector<std::uint32_t> eclipse(layout.cells.size());
+    for (std::size_t c = 0; c < eclipse.size(); ++c) eclipse[c] = layout.cells[c] & 0x7fffffffu;
+    return eclipse;
+}
+
+std::size_t word_count(std::size_t cells) { return (cells + 31) / 32; }
+
+}  // namespace
+
+GpuPrimarySelection::GpuPrimarySelection(const gl::ShaderLibrary& shaders, const GridLayout& layout,
+                                         const grid::GridDims& dims)
+    : mark_(shaders.build({{GL_COMPUTE_SHADER, "selection/mark_primaries.comp"}})),
+      count_(shaders.build({{GL_COMPUTE_SHADER, "selection/count_primary_lists.comp"}})),
+      scan_(shaders.build({{GL_COMPUTE_SHADER, "selection/scan_primary_counts.comp"}})),
+      write_(shaders.build({{GL_COMPUTE_SHADER, "selection/write_primary_lists.comp"}})),
+      active_cells_(layout.cells.size()),
+      dims_(unsigned(dims.nx), unsigned(dims.ny), unsigned(dims.nz)),
+      eclipse_of_compact_(gl::Buffer::from(std::span<const std::uint32_t>(eclipse_indices(layout)))),
+      compact_of_eclipse_(gl::Buffer::from(std::span<const std::uint32_t>(layout.compact_of_cell))),
+      word_counts_(std::max<std::size_t>(word_count(active_cells_), 1) * 2 * sizeof(std::uint32_t), nullptr),
+      totals_(2 * sizeof(std::uint32_t), nullptr) {
+    for (const gl::Program* p : {&mark_, &count_, &write_}) {
+        gl::set_uniform(*p, "active_cells", unsigned(active_cells_));
+        gl::set_uniform(*p, "grid_dims", dims_);
+    }
+    gl::set_uniform(scan_, "word_total", unsigned(word_count(active_cells_)));
+}
+
+void GpuPrimarySelection::bind_inputs(const GridBuffers& grid) const {
+    grid.bind_geometry();
+    grid.bind_culling_inputs();
+    eclipse_of_compact_.bind_base(GL_SHADER_STORAGE_BUFFER, eclipse_of_compact_binding);
+    compact_of_eclipse_.bind_base(GL_SHADER_STORAGE_BUFFER, compact_of_eclipse_binding);
+    word_counts_.bind_base(GL_SHADER_STORAGE_BUFFER, word_counts_binding);
+}
+
+void GpuPrimarySelection::dispatch_words(const gl::Program& program) const {
+    // 64 words per workgroup, spread over Y beyond the 65535 groups GL guarantees along X.
+    const std::size_t groups = std::max<std::size_t>((word_count(active_cells_) + 63) / 64, 1);
+    const std::size_t groups_x = std::min<std::size_t>(groups, 65535);
+    program.use();
+    glDispatchCompute(GLuint(groups_x), GLuint((groups + groups_x - 1) / groups_x), 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void GpuPrimarySelection::select_range(GridBuffers& grid, const grid::PrimaryRange& range,
+                                       const std::optional<grid::IjkBox>& box) {
+    gl::set_uniform(mark_, "value_range", glm::vec2(range.min, range.max));
+    gl::set_uniform(mark_, "use_box", box.has_value());
+    if (box) {
+        // An empty or negative box selects nothing: its clamped corners cross.
+        const auto clamp_low = [](int v) { return unsigned(std::max(v, 0)); };
+        const auto clamp_high = [](int v) { return v < 0 ? 0u : unsigned(v); };
+        const bool empty = box->i1 < 0 || box->j1 < 0 || box->k1 < 0;
+        gl::set_uniform(mark_, "box_min", empty ? glm::uvec3(1) : glm::uvec3(clamp_low(box->i0), clamp_low(box->j0), clamp_low(box->k0)));
+        gl::set_uniform(mark_, "box_max", empty ? glm::uvec3(0) : glm::uvec3(clamp_high(box->i1), clamp_high(box->j1), clamp_high(box->k1)));
+    }
+    bind_inputs(grid);
+    dispatch_words(mark_);
+    build_lists(grid);
+}
+
+void GpuPrimarySelection::select_bits(GridBuffers& grid, const std::vector<std::uint32_t>& bits) {
+    if (bits.size() != word_count(active_cells_))
+        throw std::invalid_argument("primary bits: " + std::to_string(bits.size()) + " words, expected " +
+                                    std::to_string(word_count(active_cells_)));
+    grid.upload_primary_bits(bits);
+    build_lists(grid);
+}
+
+void GpuPrimarySelection::build_lists(GridBuffers& grid) {
+    bind_inputs(grid);
+    dispatch_words(count_);
+    word_counts_.bind_base(GL_SHADER_STORAGE_BUFFER, word_counts_binding);
+    totals_.bind_base(GL_SHADER_STORAGE_BUFFER, totals_binding);
+    scan_.use();
+    glDispatchCompute(1, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::uint32_t totals[2] = {0, 0};
+    glGetNamedBufferSubData(totals_.id(), 0, sizeof(totals), totals);
+    grid.resize_primary_lists(totals[0], totals[1]);
+    bind_inputs(grid);
+    grid.primary_cells().buffer.bind_base(GL_SHADER_STORAGE_BUFFER, primary_cells_out_binding);
+    grid.primary_faces().buffer.bind_base(GL_SHADER_STORAGE_BUFFER, primary_faces_out_binding);
+    dispatch_words(write_);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
+}
+
+std::size_t GpuPrimarySelection::memory_bytes() const {
+    return eclipse_of_compact_.size_bytes() + compact_of_eclipse_.size_bytes() + word_counts_.size_bytes() +
+           totals_.size_bytes();
+}
+
+std::vector<std::uint32_t> primary_bits(const GridLayout& layout, const std::vector<std::uint8_t>& flags) {
+    std::vector<std::uint32_t> bits(word_count(layout.cells.size()), 0);
+    for (std::size_t c = 0; c < layout.cells.size(); ++c)
+        if (flags.at(layout.cells[c] & 0x7fffffffu) != 0) bits[c / 32] |= 1u << (c % 32);
+    return bits;
+}
+
+std::vector<std::uint8_t> primary_flags(const GridLayout& layout, const std::vector<std::uint32_t>& bits,
+                                        std::size_t cell_count) {
+    std::vector<std::uint8_t> flags(cell_count, 0);
+    for (std::size_t c = 0; c < layout.cells.size(); ++c)
+        if ((bits.at(c / 32) >> (c % 32)) & 1u) flags[layout.cells[c] & 0x7fffffffu] = 1;
+    return flags;
+}
+
+}  // namespace cutaway::pipeline
