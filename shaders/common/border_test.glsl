@@ -25,7 +25,7 @@ bool raycast_border(vec2 window, vec3 plane_point, vec3 plane_normal) {
         vec3 point = ray_plane_hit(window + border_width * offsets[n], plane_point, plane_normal, hit);
         if (!hit) continue;
         CutSample there = cut_at(point);
-        if (there.fragment_depth < there.cut_depth) return true;
+        if (there.fragment_depth < there.cut_depth && !cut_is_rear_shell(there.texel)) return true;
     }
     return false;
 }

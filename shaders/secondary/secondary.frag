@@ -40,7 +40,8 @@ void main() {
 
 #ifdef BORDER_THRESHOLD
     // Naive: depth within epsilon of the cut, epsilon = the depth w pixels span at this distance.
-    if (here.cut_depth > 0.0 && here.fragment_depth - here.cut_depth < border_width * here.fragment_depth / focal_px) {
+    if (here.cut_depth > 0.0 && !cut_is_rear_shell(here.texel) &&
+        here.fragment_depth - here.cut_depth < border_width * here.fragment_depth / focal_px) {
         bool shell = face_class == face_class_shell;
         colour = shell ? shell_cut_colour : border_colour;
         flags |= shell ? (flag_border | flag_shell_cut) : flag_border;

@@ -39,6 +39,9 @@ struct FrameSettings {
     bool hide_internal_lines = false;
     OnlyLayer only = OnlyLayer::both;
     bool cut_enabled = true;               ///< false: no cut at all (the uncut reference frame)
+    /// true: the cut may leave the model through its rear shell (background shows through), as
+    /// the paper's frustums do; false: clamped to just in front of the farthest shell surface.
+    bool see_through = false;
     bool colour_bar = true;
     /// Equal depths in stages 2 and 3: the fragment drawn first wins (GL_LESS, the default) or the
     /// one drawn last (GL_LEQUAL). Tests use it to tell draw-order ties from real differences.

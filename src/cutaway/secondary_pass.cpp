@@ -14,6 +14,8 @@ namespace {
 void set_cut_lookup(const gl::Program& p, const CutTargets& cut, const Camera& cut_camera) {
     gl::set_uniform(p, "cut_surface", 1);
     cut.surface.bind(1);
+    gl::set_uniform(p, "cut_position", 5);
+    cut.position.bind(5);
     gl::set_uniform(p, "cut_view", cut_camera.view);
     gl::set_uniform(p, "cut_projection", cut_camera.projection);
     gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());

@@ -10,8 +10,11 @@ namespace cutaway::pipeline {
 class CutResolve {
 public:
     explicit CutResolve(const gl::ShaderLibrary& shaders);
-    /// Reads targets.depth, writes targets.surface and targets.position.
-    void apply(const CutTargets& targets, const Camera& cut_camera);
+    /// Reads targets.depth, writes targets.surface and targets.position. `rear_shell` (null: no
+    /// clamp): the farthest shell depth (rear_shell_depth.h); the cut is kept `rear_margin`
+    /// render units in front of it wherever both exist.
+    void apply(const CutTargets& targets, const Camera& cut_camera, const gl::Texture* rear_shell = nullptr,
+               float rear_margin = 0);
 
 private:
     gl::Program program_;

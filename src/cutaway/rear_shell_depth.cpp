@@ -1,0 +1,36 @@
+#include "cutaway/rear_shell_depth.h"
+
+#include <array>
+
+#include "cutaway/face_drawing.h"
+#include "gl/uniforms.h"
+
+namespace cutaway::pipeline {
+
+RearShellDepth::RearShellDepth(const gl::ShaderLibrary& shaders, int width, int height)
+    // The seed shader writes exactly this: the cut camera's depth encoding, depth only.
+    : program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}})),
+      primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})),
+      depth_(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
+    framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
+    const std::array<GLenum, 1> none{GL_NONE};
+    framebuffer_.finish(none, "rear shell depth");
+}
+
+void RearShellDepth::render(const GridBuffers& grid, const Camera& cut_camera) {
+    const float zero = 0.0f;
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &zero);
+    framebuffer_.bind();
+    prepare_face_program(program_, FaceDrawContext{grid, cut_camera});
+    gl::set_uniform(program_, "cut_near", cut_camera.near_plane);
+    gl::set_uniform(program_, "cut_far", cut_camera.far_plane);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_TRUE);
+    GridBuffers::draw_faces(grid.outer_faces());
+    prepare_face_program(primaries_program_, FaceDrawContext{grid, cut_camera});
+    GridBuffers::draw_faces(grid.primary_faces());
+    glDepthFunc(GL_LESS);
+}
+
+}  // namespace cutaway::pipeline
