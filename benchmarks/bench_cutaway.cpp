@@ -245,7 +245,7 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
     benchmark::AddCustomContext("camera_path_az_el_aperture_deg", path);
     benchmark::AddCustomContext("warmup_passes", std::to_string(o.warmup));
     benchmark::AddCustomContext("timed_passes", std::to_string(o.repeat));
-    benchmark::AddCustomContext("frame_settings", "line width 1 px, SSAO on, border width 2 px, distance framing the model");
+    benchmark::AddCustomContext("frame_settings", "line width 1 px, SSAO on, border width 1 px, distance framing the model");
 }
 
 }  // namespace

@@ -15,9 +15,4 @@ vec3 lit(vec3 colour, vec3 normal, vec3 world) {
     return colour * (0.35 + 0.65 * diffuse);
 }
 
-// Single-pass wireframe: line opacity at `distance` pixels from an edge, for a line `width` wide
-// with a smooth falloff over the last pixel.
-float line_opacity(float distance, float width) {
-    float d = max(distance - 0.5 * width + 0.5, 0.0);
-    return exp2(-2.0 * d * d);
-}
+#include "common/line_style.glsl"

@@ -1,5 +1,6 @@
 #version 450 core
-// Stage 3: primary cells, drawn whole (never clipped), with their own edge colour.
+// Stage 3: primary cells, drawn whole (never clipped), with their own edge colour: a lighter
+// shade of the cell's colour (secondaries' edges are darker), so primaries keep their colour.
 #include "common/grid.glsl"
 #include "common/shading.glsl"
 #include "common/frame_outputs.glsl"
@@ -9,13 +10,12 @@ in FaceVaryings {
 } v_in;
 
 uniform float line_width;
-uniform vec3 primary_edge_colour;
+const float primary_edge_lightening = 0.45;  // edge colour: this far from the cell's colour to white
 
 void main() {
     vec3 colour = lit(cell_colour(v_in.compact_cell), v_in.face_normal, v_in.world_position);
-    float edge = min(min(v_in.edge_distance.x, v_in.edge_distance.y), min(v_in.edge_distance.z, v_in.edge_distance.w));
-    float edge_opacity = line_opacity(edge, line_width);
-    colour = mix(colour, primary_edge_colour, edge_opacity);
+    float edge_opacity = face_edge_opacity(v_in.edge_distance, line_width);
+    colour = mix(colour, mix(colour, vec3(1.0), primary_edge_lightening), edge_opacity);
     uint flags = flag_primary | (edge_opacity > 0.5 ? flag_edge : 0u);
     write_frame(colour, v_in.face_normal, v_in.world_position, v_in.compact_cell, flags);
 }

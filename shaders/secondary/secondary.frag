@@ -14,8 +14,6 @@ in FaceVaryings {
 } v_in;
 
 uniform float line_width;       // pixels
-uniform vec3 edge_colour;
-uniform vec3 border_colour;
 uniform vec3 shell_cut_colour;
 uniform float focal_px;         // model camera focal length, pixels
 uniform float border_width;     // w, pixels
@@ -30,20 +28,21 @@ void main() {
     vec3 colour = lit(cell_colour(v_in.compact_cell), normal, v_in.world_position);
     uint flags = inside_view ? flag_cut_fill : 0u;
 
-    float edge = min(min(v_in.edge_distance.x, v_in.edge_distance.y), min(v_in.edge_distance.z, v_in.edge_distance.w));
-    float edge_opacity = line_opacity(edge, line_width);
+    float edge_opacity = face_edge_opacity(v_in.edge_distance, line_width);
+    bool hide_lines = false;  // on the cut fill, with --hide-internal-lines
 #ifdef HIDE_INTERNAL_LINES
-    if (inside_view) edge_opacity = 0.0;
+    hide_lines = inside_view;
 #endif
-    colour = mix(colour, edge_colour, edge_opacity);
+    if (hide_lines) edge_opacity = 0.0;
+    colour = mix(colour, line_colour_on(colour), edge_opacity);
     if (edge_opacity > 0.5) flags |= flag_edge;
 
 #ifdef BORDER_THRESHOLD
     // Naive: depth within epsilon of the cut, epsilon = the depth w pixels span at this distance.
-    if (here.cut_depth > 0.0 && !cut_is_rear_shell(here.texel) &&
+    bool shell = face_class == face_class_shell;
+    if (here.cut_depth > 0.0 && !cut_is_rear_shell(here.texel) && (shell || !hide_lines) &&
         here.fragment_depth - here.cut_depth < border_width * here.fragment_depth / focal_px) {
-        bool shell = face_class == face_class_shell;
-        colour = shell ? shell_cut_colour : border_colour;
+        colour = shell ? shell_cut_colour : line_colour_on(colour);
         flags |= shell ? (flag_border | flag_shell_cut) : flag_border;
     }
 #endif

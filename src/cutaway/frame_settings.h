@@ -23,7 +23,7 @@ struct FrameSettings {
     float aperture_v_deg = 30;
     float back_margin = 0.002f;            ///< back-plane margin, fraction of the model radius
     BorderMode border = BorderMode::raycast;
-    float border_width_px = 2;             ///< w, pixels
+    float border_width_px = 1;             ///< w, pixels
     float line_width_px = 1;               ///< cell edge lines, pixels
     int mean_filter = 9;                   ///< k x k, 0 or 1 = off
     MeanFilterKernel mean_filter_kernel = MeanFilterKernel::full;

@@ -13,7 +13,6 @@ PrimaryPass::PrimaryPass(const gl::ShaderLibrary& shaders)
 void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings) {
     prepare_face_program(primaries_, context);
     gl::set_uniform(primaries_, "line_width", settings.line_width_px);
-    gl::set_uniform(primaries_, "primary_edge_colour", glm::vec3(0.85f, 0.85f, 0.85f));
     GridBuffers::draw_faces(faces);
 }
 

@@ -21,7 +21,6 @@ void set_cut_lookup(const gl::Program& p, const CutTargets& cut, const Camera& c
     gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
     gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
 }
-const glm::vec3 border_colour(0.0f, 0.0f, 0.0f);
 const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
 }  // namespace
 
@@ -34,8 +33,8 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "border_width", settings.border_width_px);
-    gl::set_uniform(p, "border_colour", border_colour);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
+    gl::set_uniform(p, "hide_internal_lines", settings.hide_internal_lines);
     gl::set_uniform(p, "face_plane", 2);
     gl::set_uniform(p, "normal_depth", 3);
     scene.face_plane.bind(2);
@@ -61,8 +60,6 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     gl::set_uniform(p, "focal_px", context.camera.focal_px());
     gl::set_uniform(p, "line_width", settings.line_width_px);
     gl::set_uniform(p, "border_width", settings.border_width_px);
-    gl::set_uniform(p, "edge_colour", glm::vec3(0.12f, 0.12f, 0.12f));
-    gl::set_uniform(p, "border_colour", border_colour);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
     submit();
 }
