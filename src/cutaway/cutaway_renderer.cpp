@@ -11,6 +11,7 @@
 #include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "gl/gl_error.h"
+#include "grid/cell_geometry.h"
 #include "grid/face_classification.h"
 
 namespace cutaway::pipeline {
@@ -40,6 +41,21 @@ FloatImage read_alpha(const gl::Texture& texture, int width, int height) {
     FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
     for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + 3];
     return image;
+}
+
+/// Render-space mean of the centres of the cells flagged in `flags` (the origin without any).
+glm::vec3 primary_centroid(const grid::CornerPointGrid& grid, const ModelFrame& frame, const std::vector<std::uint8_t>& flags) {
+    const grid::GridDims& d = grid.dims();
+    glm::dvec3 sum(0);
+    std::size_t count = 0;
+    for (std::size_t cell = 0; cell < flags.size(); ++cell) {
+        if (!flags[cell]) continue;
+        const int i = int(cell % std::size_t(d.nx)), j = int(cell / std::size_t(d.nx) % std::size_t(d.ny)),
+                  k = int(cell / (std::size_t(d.nx) * std::size_t(d.ny)));
+        sum += glm::dvec3(frame.to_render(grid::cell_centre(grid::cell_corners(grid, i, j, k))));
+        ++count;
+    }
+    return count ? glm::vec3(sum / double(count)) : glm::vec3(0);
 }
 
 /// Depth (along the view axis) of the nearest corner of the model's box: nothing lies in front
@@ -104,6 +120,8 @@ void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
     primary_cells_ = lists.primary_cells.size();
     buffers_.set_selection(lists, primary_bits(lists, layout_.cells.size()));
     primary_flags_ = flags;
+    primary_centroid_ = primary_centroid(grid_, frame_, flags);
+    ++selection_generation_;
     secondary_list_built_ = false;
     frozen_valid_ = false;
 }
@@ -132,9 +150,12 @@ CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
 }
 
 CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camera& cut_camera) const {
-    return {buffers_, cut_camera, glm::radians(std::clamp(s.aperture_h_deg, 0.0f, 90.0f)),
-            glm::radians(std::clamp(s.aperture_v_deg, 0.0f, 90.0f)), s.back_margin * frame_.radius(),
-            nearest_model_depth(frame_, cut_camera), s.seeds};
+    // Each wall leans out by half the full opening angle.
+    return {buffers_, cut_camera, glm::radians(0.5f * std::clamp(s.aperture_h_deg, 0.0f, 180.0f)),
+            glm::radians(0.5f * std::clamp(s.aperture_v_deg, 0.0f, 180.0f)), s.back_margin * frame_.radius(),
+            nearest_model_depth(frame_, cut_camera),
+            std::max(-(cut_camera.view * glm::vec4(primary_centroid_, 1.0f)).z, cut_camera.near_plane), s.seeds,
+            {&primary_flags_, &layout_.compact_of_cell, grid_.dims(), selection_generation_}};
 }
 
 const CutTargets& CutawayRenderer::active_cut() const { return last_filtered_ ? filtered_cut_ : cut_; }
@@ -143,6 +164,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
     if (camera.width != width_ || camera.height != height_)
         throw std::invalid_argument("camera image size differs from the renderer's");
     timer_.clear();
+    cut_readback_bytes_ = 0;
     empty_vertex_array_.bind();
     glFinish();
     const auto started = std::chrono::steady_clock::now();
@@ -157,7 +179,9 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         gl::timed_stage(timer_, "cut_surface", [&] {
             cut_.clear();
             if (!cut_drawn) return;
-            strategy(s.strategy).render(cut_inputs(s, cut_camera), cut_);
+            CutSurfaceStrategy& cut_strategy = strategy(s.strategy);
+            cut_strategy.render(cut_inputs(s, cut_camera), cut_);
+            cut_readback_bytes_ = cut_strategy.readback_bytes();
             if (!last_filtered_) cut_resolve_.apply(cut_, cut_camera);
         });
         if (last_filtered_)
@@ -308,10 +332,14 @@ cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) 
 }
 
 cone_field::FloatImage CutawayRenderer::exact_cut(const FrameSettings& settings, const Camera& camera) {
+    return cpu_cone_cut(settings, camera, exact_cone_cut);
+}
+
+cone_field::FloatImage CutawayRenderer::cpu_cone_cut(const FrameSettings& settings, const Camera& camera, const ConeFieldCut& cut) {
     const CutSurfaceInputs inputs = cut_inputs(settings, cut_camera_for(camera));
     CutSeedPass seed_pass(shaders_);
     empty_vertex_array_.bind();
-    return cone_field_cut_for(inputs, seed_pass.render(inputs), exact_cone_cut);
+    return cone_field_cut_for(inputs, seed_pass.render(inputs), cut);
 }
 
 }  // namespace cutaway::pipeline

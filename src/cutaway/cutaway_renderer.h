@@ -9,6 +9,7 @@
 #include "cutaway/camera.h"
 #include "cutaway/colour_bar.h"
 #include "cutaway/cone_field/cone_image.h"
+#include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "cutaway/frame_settings.h"
@@ -77,6 +78,8 @@ public:
     /// Primary flags, one per Eclipse cell.
     void set_primaries(const std::vector<std::uint8_t>& flags);
     std::size_t primary_cell_count() const { return primary_cells_; }
+    /// Bytes the last frame's cut-surface strategy read back from the GPU (stats.json readback_bytes).
+    std::size_t cut_readback_bytes() const { return cut_readback_bytes_; }
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until unfreeze().
     void freeze(const Camera& camera) { frozen_camera_ = camera; frozen_valid_ = false; }
@@ -113,6 +116,8 @@ public:
     /// The exact cone-field cut for `settings` and `camera` from the seeds and slope every
     /// cone-field strategy uses (cone_field_strategy.h), in read_strategy_cut's units.
     cone_field::FloatImage exact_cut(const FrameSettings& settings, const Camera& camera);
+    /// The same with any CPU cone-field function: the references of the GPU transforms.
+    cone_field::FloatImage cpu_cone_cut(const FrameSettings& settings, const Camera& camera, const ConeFieldCut& cut);
 
 private:
     CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
@@ -137,6 +142,9 @@ private:
     gl::Texture colour_map_;
     ColourBarLabel label_;
     std::size_t primary_cells_ = 0;
+    glm::vec3 primary_centroid_{0};  ///< render space, mean of the primary cells' centres
+    std::size_t cut_readback_bytes_ = 0;
+    std::uint64_t selection_generation_ = 0;  ///< counts set_primaries calls
     CutTargets cut_, filtered_cut_;
     SceneTargets scene_;
     PostTargets post_;
