@@ -20,6 +20,9 @@
 // angle between the back face and depth s is atan(tan(angle) s / back); the angle itself holds
 // at the primary. Vertices are emitted with w = 1 and z linear in s, so the stored depth is (s - near) / (far - near) and
 // interpolates linearly in screen space: the contract of every strategy (cut_surface_strategy.h).
+// With CONSTANT_WALL_SLOPE every wall of every box rises wall_u_per_depth in u (or v) per depth
+// unit instead: equal pixel slopes, the frustums whose union the frustum-sweep strategy computes
+// exactly (tests/gl/frustum_sweep_gl_test.cpp compares the two).
 // With BACK_FACE_ONLY defined only the back face is emitted: the cone-field strategies' seeds
 // (cut_surface/cut_seeds.h), the primaries' rear hull from their cell boxes.
 layout(points) in;
@@ -36,7 +39,10 @@ uniform float far_plane;
 uniform float rim_depth;         // walls stop here
 uniform float back_margin;       // depth units added behind the box
 uniform vec2 wall_angle;         // horizontal, vertical: half the full apertures, radians 0..pi/2
-uniform float pixel_uv;          // one pixel in u, v units (1 / focal length in pixels)
+uniform float pixel_uv;
+#ifdef CONSTANT_WALL_SLOPE
+uniform float wall_u_per_depth;
+#endif          // one pixel in u, v units (1 / focal length in pixels)
 
 void emit(vec2 uv, float s) {
     gl_Position = vec4(uv * projection_scale, 2.0 * (s - near_plane) / (far_plane - near_plane) - 1.0, 1.0);
@@ -60,8 +66,13 @@ void main() {
     vec2 hi = box[0].uv_box.zw + pixel_uv;
     float back = min(box[0].far_depth + back_margin, far_plane);
     float rim = min(rim_depth, back);
+#ifdef CONSTANT_WALL_SLOPE
+    vec2 rim_lo = lo - vec2(wall_u_per_depth * (back - rim));
+    vec2 rim_hi = hi + vec2(wall_u_per_depth * (back - rim));
+#else
     vec2 rim_lo = lo - wall_slope(lo, -1.0, wall_angle) * (back - rim) / back;
     vec2 rim_hi = hi + wall_slope(hi, 1.0, wall_angle) * (back - rim) / back;
+#endif
     // back face
     emit(vec2(lo.x, lo.y), back); emit(vec2(hi.x, lo.y), back); emit(vec2(lo.x, hi.y), back); emit(vec2(hi.x, hi.y), back);
     EndPrimitive();

@@ -119,8 +119,10 @@ public:
     /// The same with any CPU cone-field function: the references of the GPU transforms.
     cone_field::FloatImage cpu_cone_cut(const FrameSettings& settings, const Camera& camera, const ConeFieldCut& cut);
 
-private:
+    /// What stage 1 hands the strategy for `settings` and the cut camera (tests draw with it).
     CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
+
+private:
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut() const;

@@ -7,10 +7,11 @@ namespace {
 constexpr GLuint cluster_range_texture_unit = 12, cluster_cell_texture_unit = 13;  // frustum.vert (CLUSTERS)
 }  // namespace
 
-gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, bool back_face_only, bool clusters) {
+gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, const CellBoxProgramOptions& options) {
     gl::ShaderDefines defines;
-    if (back_face_only) defines.emplace_back("BACK_FACE_ONLY", "");
-    if (clusters) defines.emplace_back("CLUSTERS", "");
+    if (options.back_face_only) defines.emplace_back("BACK_FACE_ONLY", "");
+    if (options.clusters) defines.emplace_back("CLUSTERS", "");
+    if (options.constant_wall_slope) defines.emplace_back("CONSTANT_WALL_SLOPE", "");
     return shaders.build({{GL_VERTEX_SHADER, "cut_surface/frustum.vert"},
                           {GL_GEOMETRY_SHADER, "cut_surface/frustum.geom"},
                           {GL_FRAGMENT_SHADER, "cut_surface/frustum.frag"}},

@@ -8,9 +8,15 @@
 
 namespace cutaway::pipeline {
 
-/// The frustum program: frustum.vert/.geom/.frag, with BACK_FACE_ONLY when `back_face_only`, and
-/// one box per cluster of cells (ClusterBoxes) instead of one per primary cell when `clusters`.
-gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, bool back_face_only, bool clusters = false);
+/// Variants of the frustum program.
+struct CellBoxProgramOptions {
+    bool back_face_only = false;       ///< BACK_FACE_ONLY: seeds
+    bool clusters = false;             ///< CLUSTERS: one box per cluster of cells (ClusterBoxes), not per primary
+    bool constant_wall_slope = false;  ///< CONSTANT_WALL_SLOPE: uniform wall_u_per_depth for every wall
+};
+
+/// The frustum program: frustum.vert/.geom/.frag with the variant's defines.
+gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, const CellBoxProgramOptions& options);
 
 /// Boxes over clusters of cells (a program built with `clusters`): buffer textures of (first,
 /// count) per cluster (GL_RG32UI) and of the clusters' compact cells (GL_R32UI).

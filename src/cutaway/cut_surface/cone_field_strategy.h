@@ -52,6 +52,7 @@ CutSurfaceEntry jfa_plus_2_entry();
 CutSurfaceEntry one_plus_jfa_entry();
 CutSurfaceEntry jfa_squared_entry();
 CutSurfaceEntry exact_entry();
+CutSurfaceEntry frustum_sweep_entry();
 
 /// The exact cone field (exact_reference_cut), the reference of --exact-check (exact.cpp).
 cone_field::FloatImage exact_cone_cut(const cone_field::SeedImage& seeds, double slope_per_pixel);

@@ -34,7 +34,7 @@ cone_field::SeedImage widened_by_one_pixel(const cone_field::SeedImage& seeds) {
 }  // namespace
 
 CutSeedPass::CutSeedPass(const gl::ShaderLibrary& shaders)
-    : program_(build_cell_box_program(shaders, true)),
+    : program_(build_cell_box_program(shaders, {.back_face_only = true})),
       geometry_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"},
                                        {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}})) {}
 

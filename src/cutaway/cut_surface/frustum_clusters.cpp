@@ -48,7 +48,7 @@ ClusterBuffers upload_clusters(const PrimarySelection& selection) {
 
 class FrustumClusters final : public CutSurfaceStrategy {
 public:
-    explicit FrustumClusters(const gl::ShaderLibrary& shaders) : program_(build_cell_box_program(shaders, false, true)) {}
+    explicit FrustumClusters(const gl::ShaderLibrary& shaders) : program_(build_cell_box_program(shaders, {.clusters = true})) {}
 
     void render(const CutSurfaceInputs& in, const CutTargets& targets) override {
         if (!in.selection.flags || !in.selection.compact_of_cell) return;

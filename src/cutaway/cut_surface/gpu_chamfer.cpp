@@ -5,14 +5,14 @@
 // masks the shortest path uses at most two step directions, adjacent in angle (the chamfer ball
 // is a convex polygon whose vertices are the steps, and adjacent steps form a lattice basis of
 // determinant 1, so the integer optimum is the vertex one): an axial and a diagonal step for the
-// 3x3 masks; an axial and a knight, or a knight and a diagonal step for 5x5. A 1-D max-plus
-// dilation along every lattice line of one step direction (a forward and a backward sweep, one
-// GPU invocation per line) lets a height travel any number of those steps; doing the directions
-// in the order axial, diagonal, knight (shorter steps first) therefore realises every optimal
-// path, as that path's first segment is the shorter-step one, and both its segments stay inside
-// the image (they are monotone in x and y between q and p). Every path the sweeps realise is a
-// path of mask steps inside the image, so none beats L: the sweeps compute exactly the raster
-// passes' h, in exact arithmetic.
+// 3x3 masks; an axial and a knight, or a knight and a diagonal step for 5x5 (the chessboard
+// mask's axial and diagonal steps of length 1 give max(|dx|, |dy|)). A 1-D max-plus dilation
+// along every lattice line of one step direction (a forward and a backward sweep, one GPU
+// invocation per line) lets a height travel any number of those steps; sweeping every direction
+// once, in any order, realises every optimal path: its two segments can be taken in the order
+// their directions are swept, and either way the path is monotone in x and y between q and p, so
+// it stays inside the image. Every path the sweeps realise is a path of mask steps inside the
+// image, so none beats L: the sweeps compute exactly the raster passes' h, in exact arithmetic.
 //
 // Error bound. Against the CPU reference the only difference is rounding: float in stored units
 // here, double in depth units there. A height reaching p went through at most W + H subtractions
@@ -39,7 +39,7 @@ struct SweepDirection {
     double length;
 };
 
-/// The mask's directions, shorter steps first (the order the method above needs).
+/// The mask's directions (the forward half of the mask; any order, see above).
 std::vector<SweepDirection> sweep_directions(cone_field::ChamferMask mask) {
     std::vector<SweepDirection> directions;
     for (const cone_field::ChamferStep& s : cone_field::chamfer_forward_steps(mask)) {
@@ -47,8 +47,6 @@ std::vector<SweepDirection> sweep_directions(cone_field::ChamferMask mask) {
         if (step.x < 0 || (step.x == 0 && step.y < 0)) step = -step;
         directions.push_back({step, s.length});
     }
-    std::stable_sort(directions.begin(), directions.end(),
-                     [](const SweepDirection& a, const SweepDirection& b) { return a.length < b.length; });
     return directions;
 }
 
