@@ -6,7 +6,6 @@
 #ifdef JUMP_FLOODING
 uniform usampler2D owners;
 uniform float slope;  // stored depth units per pixel
-const uint no_owner = 0xffffffffu;
 #include "cut_surface/cone_height.glsl"
 #else
 uniform sampler2D heights;
@@ -16,7 +15,7 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
 #ifdef JUMP_FLOODING
     uvec2 owner = texelFetch(owners, p, 0).xy;
-    float t = owner.x == no_owner ? 0.0 : owner_height(owner, p, slope);
+    float t = owner.x == 0u ? 0.0 : owner_height(owner, p, slope);
 #else
     float t = texelFetch(heights, p, 0).r;
 #endif

@@ -1,6 +1,8 @@
 // Jump flooding on the GPU: one compute pass per step (jfa_steps), ping-ponging two RG32UI
-// textures of owners (seed position and stored depth per pixel, shaders/cut_surface/jump_flood.comp),
-// then one fragment pass writing each owner cone's height as the cut depth.
+// images of owners (seed position and stored depth per pixel, shaders/cut_surface/jump_flood.comp),
+// then one fragment pass writing each owner cone's height as the cut depth. On llvmpipe, image
+// loads with "0 = no owner" (out-of-image loads read 0: no bounds tests) and selects instead of
+// branches made a pass about 2.5x faster than texelFetch with branches (same run, loaded machine).
 //
 // Against the CPU reference (cone_field/jump_flooding.h): the same steps, taps, comparisons and
 // tie-breaking, in float (stored depth units) where the reference uses double (depth units).
@@ -41,13 +43,12 @@ public:
         glDispatchCompute(groups_x, groups_y, 1);
 
         int current = 0;
-        gl::set_uniform(pass_, "owners_in", 0);
         gl::set_uniform(pass_, "slope", in.slope);
         pass_.use();
         for (const int step : cone_field::jfa_steps(variant_, width, height)) {
             glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
             gl::set_uniform(pass_, "step_size", step);
-            owners_[std::size_t(current)].bind(0);
+            glBindImageTexture(1, owners_[std::size_t(current)].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
             glBindImageTexture(0, owners_[std::size_t(1 - current)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
             glDispatchCompute(groups_x, groups_y, 1);
             current = 1 - current;
