@@ -53,8 +53,7 @@ std::vector<SweepDirection> sweep_directions(cone_field::ChamferMask mask) {
 class GpuChamfer final : public GpuConeTransform {
 public:
     GpuChamfer(const gl::ShaderLibrary& shaders, cone_field::ChamferMask mask)
-        : init_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/chamfer_sweep.comp"}}, {{"INIT", ""}})),
-          init_widened_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/chamfer_sweep.comp"}}, {{"INIT", ""}, {"WIDEN_SEEDS", ""}})),
+        : init_(shaders, "cut_surface/chamfer_sweep.comp"),
           sweep_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/chamfer_sweep.comp"}})),
           resolve_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/cone_resolve.frag"}})),
           directions_(sweep_directions(mask)) {}
@@ -64,10 +63,7 @@ public:
         if (heights_.width() != width || heights_.height() != height) heights_ = gl::Texture(GL_TEXTURE_2D, GL_R32F, width, height);
         glBindImageTexture(0, heights_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
 
-        const gl::Program& init = in.widen_seeds ? init_widened_ : init_;
-        gl::set_uniform(init, "seeds", 0);
-        in.seeds.bind(0);
-        init.use();
+        init_.prepare(in).use();
         glDispatchCompute(group_count(width * height, group_size), 1, 1);
 
         sweep_.use();
@@ -87,7 +83,8 @@ public:
     }
 
 private:
-    gl::Program init_, init_widened_, sweep_, resolve_;
+    SeedInitPrograms init_;
+    gl::Program sweep_, resolve_;
     std::vector<SweepDirection> directions_;
     gl::Texture heights_;  ///< R32F stored units, resized with the targets
 };

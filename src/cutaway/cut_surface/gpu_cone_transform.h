@@ -34,6 +34,18 @@ std::unique_ptr<GpuConeTransform> make_gpu_jump_flooding(const gl::ShaderLibrary
 /// Chamfer propagation with `mask` as directional line sweeps (gpu_chamfer.cpp).
 std::unique_ptr<GpuConeTransform> make_gpu_chamfer(const gl::ShaderLibrary& shaders, cone_field::ChamferMask mask);
 
+/// The INIT variant of a transform's compute shader (first pass, from the seed image) with and
+/// without WIDEN_SEEDS (cone_seed.glsl).
+class SeedInitPrograms {
+public:
+    SeedInitPrograms(const gl::ShaderLibrary& shaders, const char* compute_shader);
+    /// The variant for `input`, its `seeds` uniform set and the seed texture bound to unit 0.
+    const gl::Program& prepare(const GpuConeInput& input) const;
+
+private:
+    gl::Program plain_, widened_;
+};
+
 /// Groups of `group` invocations covering `count`.
 inline unsigned group_count(int count, int group) { return unsigned((count + group - 1) / group); }
 

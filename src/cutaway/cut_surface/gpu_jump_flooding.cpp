@@ -22,8 +22,7 @@ constexpr int group_side = 8;  // jump_flood.comp's local size
 class GpuJumpFlooding final : public GpuConeTransform {
 public:
     GpuJumpFlooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant)
-        : init_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}}, {{"INIT", ""}})),
-          init_widened_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}}, {{"INIT", ""}, {"WIDEN_SEEDS", ""}})),
+        : init_(shaders, "cut_surface/jump_flood.comp"),
           pass_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}})),
           resolve_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/cone_resolve.frag"}},
                                  {{"JUMP_FLOODING", ""}})),
@@ -35,9 +34,7 @@ public:
             for (gl::Texture& owners : owners_) owners = gl::Texture(GL_TEXTURE_2D, GL_RG32UI, width, height);
         const unsigned groups_x = group_count(width, group_side), groups_y = group_count(height, group_side);
 
-        const gl::Program& init = in.widen_seeds ? init_widened_ : init_;
-        gl::set_uniform(init, "seeds", 0);
-        in.seeds.bind(0);
+        const gl::Program& init = init_.prepare(in);
         glBindImageTexture(0, owners_[0].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
         init.use();
         glDispatchCompute(groups_x, groups_y, 1);
@@ -61,7 +58,8 @@ public:
     }
 
 private:
-    gl::Program init_, init_widened_, pass_, resolve_;
+    SeedInitPrograms init_;
+    gl::Program pass_, resolve_;
     cone_field::JfaVariant variant_;
     std::array<gl::Texture, 2> owners_;  ///< ping-pong, resized with the targets
 };
