@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -93,6 +94,24 @@ TEST(GpuConeField, GpuStrategiesReadNothingBack) {
         renderer->render(settings, camera);
         // A CPU strategy reads the seed image back: one float per pixel.
         EXPECT_EQ(renderer->cut_readback_bytes(), entry.device == "gpu" ? 0u : std::size_t(width) * height * sizeof(float));
+    }
+}
+
+TEST(GpuConeField, ConeSlopeFallsAsTheApertureOpens) {
+    // Aperture 0 gives the steepest cones (the seeds alone), 180 the flattest (everything in front
+    // of the deepest seed removed), monotone between. Regression: 90 degrees in float radians lies
+    // just above pi/2, where tan is negative, and made 180 the steepest.
+    auto renderer = make_renderer(petra(), width, height);
+    std::mt19937 random(11);
+    renderer->set_primaries(random_primaries(petra(), random));
+    const Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
+    pipeline::FrameSettings settings;
+    double previous = std::numeric_limits<double>::infinity();
+    for (const float aperture : {0.0f, 10.0f, 60.0f, 120.0f, 179.0f, 180.0f}) {
+        settings.aperture_h_deg = aperture;
+        const double slope = pipeline::cut_cone_slope(renderer->cut_inputs(settings, camera));
+        EXPECT_LT(slope, previous) << "aperture " << aperture;
+        previous = slope;
     }
 }
 

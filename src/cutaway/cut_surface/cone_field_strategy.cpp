@@ -58,9 +58,10 @@ bool has_seed(const cone_field::SeedImage& seeds) {
 }  // namespace
 
 double cut_cone_slope(const CutSurfaceInputs& inputs) {
-    const double tangent = std::clamp(std::tan(double(inputs.wall_angle_h_rad)), 1e-4, 1e4);
-    return cone_field::cone_slope_per_pixel(std::atan(tangent), double(inputs.cone_reference_depth),
-                                            double(inputs.cut_camera.focal_px()));
+    // Clamp the angle, not its tangent: 90 degrees in float radians lies just above pi/2, where
+    // tan is hugely negative (clamping that tangent made aperture 180 the steepest cone).
+    const double angle = std::clamp(double(inputs.wall_angle_h_rad), std::atan(1e-4), std::atan(1e4));
+    return cone_field::cone_slope_per_pixel(angle, double(inputs.cone_reference_depth), double(inputs.cut_camera.focal_px()));
 }
 
 cone_field::FloatImage cone_field_cut_for(const CutSurfaceInputs& inputs, const cone_field::SeedImage& seeds,
