@@ -10,10 +10,15 @@
 //     faces_secondary / faces_baseline (faces stage 2 and the plain frame drew, last pose),
 //     gl_query_valid (1 only if every GL query agreed).
 //   BM_baseline/preset: the plain shaded frame over the same path.
+//   BM_cpu_reference/strategy/fraction_bp/preset: for each chosen strategy computed on the GPU that
+//     has a CPU reference (the cone-field transforms), the CPU path it replaces: seed pass, seed
+//     read-back and the CPU transform (cone_field/), fenced wall time per frame over the same path
+//     (compare with BM_cutaway's cut_surface counter; the CPU path's upload is not included).
 // Each benchmark checks its own output: at least one primary cell and visible primary pixels.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -185,6 +190,39 @@ void bm_baseline(benchmark::State& state, const BenchSetup& setup) {
     state.SetLabel(setup.options.presets.at(std::size_t(state.range(0))));
 }
 
+void bm_cpu_reference(benchmark::State& state, const BenchSetup& setup) {
+    const bench::CutawayBenchOptions& options = setup.options;
+    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(2))));
+    if (select_fraction(scene, double(state.range(1)) / 10000.0) == 0) {
+        state.SkipWithError("no primary cells selected");
+        return;
+    }
+    const pipeline::CutSurfaceEntry entry = pipeline::find_cut_surface(setup.strategies.at(std::size_t(state.range(0))));
+    pipeline::FrameSettings settings;
+    settings.strategy = entry.name;
+    const std::vector<bench::PathPose> path = poses_for(options, -1);
+    const std::vector<pipeline::Camera> cameras = path_cameras(*scene.renderer, path);
+    auto frame_ms = [&](std::size_t k) {
+        settings.aperture_h_deg = settings.aperture_v_deg = path[k].aperture_deg;
+        glFinish();
+        const auto started = std::chrono::steady_clock::now();
+        const cone_field::FloatImage cut = scene.renderer->cpu_cone_cut(settings, cameras[k], entry.cpu_reference);
+        glFinish();
+        benchmark::DoNotOptimize(cut.pixels.data());
+        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    };
+    for (int w = 0; w < options.warmup; ++w)
+        for (std::size_t k = 0; k < path.size(); ++k) frame_ms(k);
+    std::vector<double> times;
+    std::size_t k = 0;
+    for (auto _ : state) {
+        times.push_back(frame_ms(k++ % path.size()));
+        state.SetIterationTime(times.back() / 1000.0);
+    }
+    state.counters["cpu_reference_ms"] = median(times);
+    state.SetLabel(options.presets.at(std::size_t(state.range(2))) + " " + entry.name + " (CPU reference)");
+}
+
 std::vector<std::string> chosen_strategies(const std::vector<std::string>& requested) {
     std::vector<std::string> names;
     for (const std::string& name : requested) {
@@ -215,6 +253,16 @@ void register_benchmarks(const BenchSetup& setup) {
         ->ArgNames({"pose", "mean_filter", "border", "strategy", "fraction_bp", "draw", "preset"})  // first varies fastest
         ->ArgsProduct({poses, mean_filters, borders, indices(setup.strategies), fractions_bp, indices(o.draws), indices(o.presets)})
         ->Iterations(iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
+    std::vector<std::int64_t> with_reference;  // GPU strategies with a CPU reference
+    for (std::size_t i = 0; i < setup.strategies.size(); ++i) {
+        const pipeline::CutSurfaceEntry entry = pipeline::find_cut_surface(setup.strategies[i]);
+        if (entry.device == "gpu" && entry.cpu_reference) with_reference.push_back(std::int64_t(i));
+    }
+    if (!with_reference.empty())
+        benchmark::RegisterBenchmark("BM_cpu_reference", [&setup](benchmark::State& s) { bm_cpu_reference(s, setup); })
+            ->ArgNames({"strategy", "fraction_bp", "preset"})
+            ->ArgsProduct({with_reference, fractions_bp, indices(o.presets)})
+            ->Iterations(std::int64_t(o.repeat) * o.poses)->UseManualTime()->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("BM_baseline", [&setup](benchmark::State& s) { bm_baseline(s, setup); })
         ->ArgNames({"preset"})->ArgsProduct({indices(o.presets)})
         ->Iterations(std::int64_t(o.repeat) * o.poses)->UseManualTime()->Unit(benchmark::kMillisecond);

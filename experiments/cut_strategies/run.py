@@ -27,7 +27,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import volume_experiment as vx  # noqa: E402
 
 RESULTS = os.path.join(vx.REPO, "results", "quick" if vx.QUICK else "", "cut_strategies")
-NOT_DISTANCE_TRANSFORMS = {"frustum", "exact"}
+NOT_DISTANCE_TRANSFORMS = {"frustum", "frustum-clusters", "exact"}
 
 
 def strategy_names(cutaway):

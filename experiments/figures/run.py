@@ -11,7 +11,7 @@ exposure; the sweeps; machine context). Skips when all exist unless --force. --q
 
 Protocol: preset:petra (32,760 cells), 1280x720, camera azimuth 35 / elevation 30, 1% primaries of
 PORO, the paper's defaults otherwise; one warm-up and three timed frames per panel (median).
-Sweeps on preset:opharine: apertures 0..90 degrees at 1% primaries; fractions 0.1%..10% at 30 degrees.
+Sweeps on preset:opharine: full apertures 0..180 degrees at 1% primaries; fractions 0.1%..10% at 60 degrees.
 """
 import os
 import sys
@@ -70,7 +70,7 @@ def main():
         for spec in sorted(specs, key=lambda s: s["name"]):
             numbers[spec["name"]] = render_figure(exp, spec, model, size, scratch)
 
-    apertures = (0, 30, 60, 90) if quick else (0, 15, 30, 45, 60, 75, 90)
+    apertures = (0, 60, 120, 180) if quick else (0, 30, 60, 90, 120, 150, 180)
     fractions = (0.003, 0.03) if quick else (0.001, 0.003, 0.01, 0.03, 0.1)
     repeat = 1 if quick else 3
     aperture_rows, stats = sweeps.sweep(exp, sweep_model, size, [(a, ["--aperture", a, a]) for a in apertures],
@@ -78,10 +78,10 @@ def main():
     fraction_rows, _ = sweeps.sweep(exp, sweep_model, size, [(f, ["--primary-fraction", f]) for f in fractions],
                                     figure_specs.CAMERA, repeat)
     label = f"{sweep_model}, {size[0]}x{size[1]}"
-    sweeps.plot_sweep(exp, aperture_rows, "aperture angle (degrees, horizontal = vertical)",
+    sweeps.plot_sweep(exp, aperture_rows, "full aperture angle (degrees, horizontal = vertical)",
                       f"Frame time vs aperture ({label}, 1% primaries)", exp.path("time_vs_aperture.png"))
     sweeps.plot_sweep(exp, fraction_rows, "primary fraction (of active cells, log scale)",
-                      f"Frame time vs primary fraction ({label}, aperture 30 degrees)",
+                      f"Frame time vs primary fraction ({label}, aperture 60 degrees)",
                       exp.path("time_vs_primary_fraction.png"), log_x=True)
     cx.write_json(exp.path("figures.json"), {
         "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),

@@ -9,7 +9,7 @@ unless --force. --quick: 480x270 pixels, 3 poses, two models (results/quick/, pa
 
 Protocol: Table 1's settings (9x9 mean filter, 1% primaries, SSAO on, frustum cut, ray-cast borders),
 1920x1080, a 16-pose path (bench_cutaway --per_pose: azimuth steps of 22.5 degrees, elevation
-alternating 25/45, aperture rising 15..60 degrees), one warm-up pass, one timed frame per pose.
+alternating 25/45, full aperture rising 30..120 degrees), one warm-up pass, one timed frame per pose.
 """
 import os
 import sys
@@ -46,7 +46,7 @@ def main():
         ax.set_ylabel("time (ms)")
         ax.set_title(f"{preset} ({int(rows[0]['cells']):,} cells, {int(rows[0]['primary_cells'])} primaries), {size}")
     axes[0, 0].legend(ncol=4, loc="upper left")
-    axes[-1, 0].set_xlabel(f"camera pose (index; azimuth step {360 / poses:g} degrees, aperture 15 to 60 degrees)")
+    axes[-1, 0].set_xlabel(f"camera pose (index; azimuth step {360 / poses:g} degrees, full aperture 30 to 120 degrees)")
     cx.save_figure(fig, exp.path("stage_over_path.png"))
 
 

@@ -10,7 +10,7 @@ from the paper's path; machine context) and results/table1/table1.md. Skips when
 
 Protocol (SPEC.md section 3): 1920x1080, 9x9 mean filter, the top 1% of PORO as primaries, line
 width 1 px, SSAO on, frustum-union cut (the paper's), ray-cast borders; bench_cutaway renders each
-model over its 8-pose camera path (azimuth steps of 45 degrees, aperture 15..60 degrees) after one
+model over its 8-pose camera path (azimuth steps of 45 degrees, full aperture 30..120 degrees) after one
 untimed pass, 5 timed frames per pose; times are fenced wall clock (glFinish) medians over the frames.
 """
 import os

@@ -1,10 +1,28 @@
 #version 450 core
 // Stage 1, frustum union: the frustum of one primary cell. Its back face (the box's far side,
 // pushed back by the margin, widened by one pixel so pixel-centre coverage never misses) stays;
-// the four walls open towards the camera at the horizontal and vertical aperture angles, up to
-// the rim depth (nearest depth of the model: nothing in front of it can be cut). Vertices are
-// emitted with w = 1 and z linear in s, so the stored depth is (s - near) / (far - near) and
+// the four walls open towards the camera, up to the rim depth (nearest depth of the model:
+// nothing in front of it can be cut).
+//
+// Wall geometry (SPEC section 2 stage 1). As in the paper, the walls are built in the cut
+// camera's perspective-divided space (u = x / s, v = y / s, s = depth along the view axis): each
+// wall is a PLANE in (u, v, s), so its depth is linear in screen space. In eye space such a wall
+// is curved (x = u s), so "its angle" needs a place: at the primary. A wall leans out from the
+// view ray through the box edge it starts from by exactly wall_angle (half the user's full
+// aperture), measured in eye space at the back face, in the horizontal (x, s) plane for the
+// left/right walls and the vertical (y, s) plane for the bottom/top walls. With e = the edge's u
+// (or v), phi = atan(e) the angle of its view ray from the axis, and psi = phi +/- wall_angle the
+// wall's tangent direction (+ for the left and bottom walls, - for the right and top ones: both
+// lean away from the box), the wall is u(s) = e -/+ k (back - s) with
+//     k = |tan(psi) - e| / back     (u per depth unit; d(u s)/ds at s = back is tan(psi)),
+// flat (k -> infinity, clamped) once psi reaches +-90 degrees: full aperture 180 = flat walls.
+// Towards the rim the eye-space wall bends back towards the view ray: on the view axis its mean
+// angle between the back face and depth s is atan(tan(angle) s / back); the angle itself holds
+// at the primary. Vertices are emitted with w = 1 and z linear in s, so the stored depth is (s - near) / (far - near) and
 // interpolates linearly in screen space: the contract of every strategy (cut_surface_strategy.h).
+// With CONSTANT_WALL_SLOPE every wall of every box rises wall_u_per_depth in u (or v) per depth
+// unit instead: equal pixel slopes, the frustums whose union the frustum-sweep strategy computes
+// exactly (tests/gl/frustum_sweep_gl_test.cpp compares the two).
 // With BACK_FACE_ONLY defined only the back face is emitted: the cone-field strategies' seeds
 // (cut_surface/cut_seeds.h), the primaries' rear hull from their cell boxes.
 layout(points) in;
@@ -20,12 +38,27 @@ uniform float near_plane;
 uniform float far_plane;
 uniform float rim_depth;         // walls stop here
 uniform float back_margin;       // depth units added behind the box
-uniform vec2 aperture_tangent;   // tan(horizontal), tan(vertical) aperture
-uniform float pixel_uv;          // one pixel in u, v units (1 / focal length in pixels)
+uniform vec2 wall_angle;         // horizontal, vertical: half the full apertures, radians 0..pi/2
+uniform float pixel_uv;
+#ifdef CONSTANT_WALL_SLOPE
+uniform float wall_u_per_depth;
+#endif          // one pixel in u, v units (1 / focal length in pixels)
 
 void emit(vec2 uv, float s) {
     gl_Position = vec4(uv * projection_scale, 2.0 * (s - near_plane) / (far_plane - near_plane) - 1.0, 1.0);
     EmitVertex();
+}
+
+/// k * back for the walls from edges `edge` (u and v) on `side` (-1: left/bottom, +1: right/top):
+/// |tan(atan(edge) - side * angle) - edge|, 1e4 (far outside any image) once the wall is flat.
+vec2 wall_slope(vec2 edge, float side, vec2 angle) {
+    const float flat_wall = 1e4;
+    vec2 slope;
+    for (int axis = 0; axis < 2; ++axis) {
+        float psi = atan(edge[axis]) - side * angle[axis];
+        slope[axis] = abs(psi) >= 1.5706963 ? flat_wall : min(abs(tan(psi) - edge[axis]), flat_wall);
+    }
+    return slope;
 }
 
 void main() {
@@ -33,11 +66,13 @@ void main() {
     vec2 hi = box[0].uv_box.zw + pixel_uv;
     float back = min(box[0].far_depth + back_margin, far_plane);
     float rim = min(rim_depth, back);
-    // Widening at the rim: a wall at angle a from the view ray moves tan(a) * (back - s) eye units
-    // between depth back and s, which is tan(a) * (back - s) / back in u at the back face's scale.
-    vec2 open = aperture_tangent * (back - rim) / back;
-    vec2 rim_lo = lo - open;
-    vec2 rim_hi = hi + open;
+#ifdef CONSTANT_WALL_SLOPE
+    vec2 rim_lo = lo - vec2(wall_u_per_depth * (back - rim));
+    vec2 rim_hi = hi + vec2(wall_u_per_depth * (back - rim));
+#else
+    vec2 rim_lo = lo - wall_slope(lo, -1.0, wall_angle) * (back - rim) / back;
+    vec2 rim_hi = hi + wall_slope(hi, 1.0, wall_angle) * (back - rim) / back;
+#endif
     // back face
     emit(vec2(lo.x, lo.y), back); emit(vec2(hi.x, lo.y), back); emit(vec2(lo.x, hi.y), back); emit(vec2(hi.x, hi.y), back);
     EndPrimitive();

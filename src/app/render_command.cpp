@@ -120,6 +120,9 @@ int run_render(const RenderOptions& options) {
 
     json stats = stage_statistics(runs);
     stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
+    // Per frame (every timed frame reads back the same amount): 0 for the strategies on the GPU.
+    stats["readback_bytes"] = renderer.cut_readback_bytes();
+    stats["cut_device"] = pipeline::find_cut_surface(settings.strategy).device;
     if (stats["faces_drawn"].contains("culling")) {
         stats["bricks_culled"] = stats["faces_drawn"]["culling"]["bricks_culled"];
         stats["cells_culled"] = stats["faces_drawn"]["culling"]["cells_culled"];

@@ -49,7 +49,8 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
     s.draw = parse_choice<DrawMode>("--draw", draw, {{"visible", DrawMode::visible}, {"all-faces", DrawMode::all_faces}});
     s.seeds = parse_choice<SeedSource>("--seeds", seeds, {{"boxes", SeedSource::boxes}, {"geometry", SeedSource::geometry}});
     for (float a : aperture)
-        if (!(a >= 0 && a <= 90)) throw std::invalid_argument("--aperture " + std::to_string(a) + ": expected 0..90 degrees");
+        if (!(a >= 0 && a <= 180))
+            throw std::invalid_argument("--aperture " + std::to_string(a) + ": expected a full opening angle 0..180 degrees");
     s.aperture_h_deg = aperture[0];
     s.aperture_v_deg = aperture[1];
     if (aperture_180) set_aperture_180(s);
@@ -95,7 +96,7 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--mean-filter", o.settings.mean_filter, "mean filter size k (odd; 0 = off)");
     c.add_option("--mean-filter-kernel", o.kernel, "full|sampled");
     c.add_option("--ssao", o.ssao, "on|off");
-    c.add_option("--aperture", o.aperture, "horizontal and vertical aperture H V, degrees 0..90")->expected(2);
+    c.add_option("--aperture", o.aperture, "horizontal and vertical aperture H V: full opening angles, degrees 0..180 (each wall leans out by half; 180: flat)")->expected(2);
     c.add_flag("--aperture-180", o.aperture_180, "remove everything between the primaries and the camera");
     c.add_option("--back-margin", o.settings.back_margin, "back-plane margin, fraction of the model radius");
     c.add_flag("--saturation", o.settings.saturation, "saturation contrast between primaries and secondaries");

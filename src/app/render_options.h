@@ -30,7 +30,7 @@ struct RenderOptions {
     std::string only = "both";
     std::string seeds = "boxes";
     std::string draw = "visible";
-    std::vector<float> aperture{30, 30};
+    std::vector<float> aperture{60, 60};  ///< full opening angles, degrees
     bool aperture_180 = false;
     std::vector<float> camera{35, 30, 0};
     std::vector<float> freeze_camera;  ///< AZ EL DIST of the frozen cut camera

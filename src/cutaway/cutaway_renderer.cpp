@@ -11,6 +11,7 @@
 #include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "gl/gl_error.h"
+#include "grid/cell_geometry.h"
 #include "grid/face_classification.h"
 
 namespace cutaway::pipeline {
@@ -40,6 +41,21 @@ FloatImage read_alpha(const gl::Texture& texture, int width, int height) {
     FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
     for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + 3];
     return image;
+}
+
+/// Render-space mean of the centres of the cells flagged in `flags` (the origin without any).
+glm::vec3 primary_centroid(const grid::CornerPointGrid& grid, const ModelFrame& frame, const std::vector<std::uint8_t>& flags) {
+    const grid::GridDims& d = grid.dims();
+    glm::dvec3 sum(0);
+    std::size_t count = 0;
+    for (std::size_t cell = 0; cell < flags.size(); ++cell) {
+        if (!flags[cell]) continue;
+        const int i = int(cell % std::size_t(d.nx)), j = int(cell / std::size_t(d.nx) % std::size_t(d.ny)),
+                  k = int(cell / (std::size_t(d.nx) * std::size_t(d.ny)));
+        sum += glm::dvec3(frame.to_render(grid::cell_centre(grid::cell_corners(grid, i, j, k))));
+        ++count;
+    }
+    return count ? glm::vec3(sum / double(count)) : glm::vec3(0);
 }
 
 /// Depth (along the view axis) of the nearest corner of the model's box: nothing lies in front
@@ -109,6 +125,9 @@ void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
         throw std::invalid_argument("primary flags: " + std::to_string(flags.size()) + " entries, expected one per cell");
     selection_.select_bits(buffers_, primary_bits(layout_, flags));
     selection_changed();
+    primary_flags_ = flags;  // known here: no read-back needed
+    primary_centroid_ = primary_centroid(grid_, frame_, flags);
+    selection_on_cpu_ = true;
 }
 
 void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box) {
@@ -116,7 +135,16 @@ void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::o
     selection_changed();
 }
 
+void CutawayRenderer::sync_selection_to_cpu() {
+    if (selection_on_cpu_) return;
+    primary_flags_ = primary_flags();
+    primary_centroid_ = primary_centroid(grid_, frame_, primary_flags_);
+    selection_on_cpu_ = true;
+}
+
 void CutawayRenderer::selection_changed() {
+    ++selection_generation_;
+    selection_on_cpu_ = false;
     secondary_list_built_ = false;
     frozen_valid_ = false;
 }
@@ -129,7 +157,8 @@ std::vector<std::uint8_t> CutawayRenderer::primary_flags() const {
 
 const FaceBuffer& CutawayRenderer::secondary_face_list() {
     if (!secondary_list_built_) {
-        buffers_.set_secondary_faces(build_face_lists(grid_, layout_, primary_flags(), true).secondary);
+        sync_selection_to_cpu();
+        buffers_.set_secondary_faces(build_face_lists(grid_, layout_, primary_flags_, true).secondary);
         secondary_list_built_ = true;
     }
     return buffers_.secondary_faces();
@@ -151,9 +180,12 @@ CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
 }
 
 CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camera& cut_camera) const {
-    return {buffers_, cut_camera, glm::radians(std::clamp(s.aperture_h_deg, 0.0f, 90.0f)),
-            glm::radians(std::clamp(s.aperture_v_deg, 0.0f, 90.0f)), s.back_margin * frame_.radius(),
-            nearest_model_depth(frame_, cut_camera), s.seeds};
+    // Each wall leans out by half the full opening angle.
+    return {buffers_, cut_camera, glm::radians(0.5f * std::clamp(s.aperture_h_deg, 0.0f, 180.0f)),
+            glm::radians(0.5f * std::clamp(s.aperture_v_deg, 0.0f, 180.0f)), s.back_margin * frame_.radius(),
+            nearest_model_depth(frame_, cut_camera),
+            std::max(-(cut_camera.view * glm::vec4(primary_centroid_, 1.0f)).z, cut_camera.near_plane), s.seeds,
+            {&primary_flags_, &layout_.compact_of_cell, grid_.dims(), selection_generation_}};
 }
 
 void CutawayRenderer::resolve_cut(const CutTargets& targets, const FrameSettings& s, const Camera& cut_camera) {
@@ -170,7 +202,9 @@ const CutTargets& CutawayRenderer::active_cut() const { return last_filtered_ ? 
 FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
     if (camera.width != width_ || camera.height != height_)
         throw std::invalid_argument("camera image size differs from the renderer's");
+    sync_selection_to_cpu();  // untimed: only after a new GPU selection
     timer_.clear();
+    cut_readback_bytes_ = 0;
     empty_vertex_array_.bind();
     glFinish();
     const auto started = std::chrono::steady_clock::now();
@@ -185,7 +219,9 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         gl::timed_stage(timer_, "cut_surface", [&] {
             cut_.clear();
             if (!cut_drawn) return;
-            strategy(s.strategy).render(cut_inputs(s, cut_camera), cut_);
+            CutSurfaceStrategy& cut_strategy = strategy(s.strategy);
+            cut_strategy.render(cut_inputs(s, cut_camera), cut_);
+            cut_readback_bytes_ = cut_strategy.readback_bytes();
             if (!s.see_through) rear_shell_.render(buffers_, cut_camera);
             if (!last_filtered_) resolve_cut(cut_, s, cut_camera);
         });
@@ -337,10 +373,15 @@ cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) 
 }
 
 cone_field::FloatImage CutawayRenderer::exact_cut(const FrameSettings& settings, const Camera& camera) {
+    return cpu_cone_cut(settings, camera, exact_cone_cut);
+}
+
+cone_field::FloatImage CutawayRenderer::cpu_cone_cut(const FrameSettings& settings, const Camera& camera, const ConeFieldCut& cut) {
+    sync_selection_to_cpu();
     const CutSurfaceInputs inputs = cut_inputs(settings, cut_camera_for(camera));
     CutSeedPass seed_pass(shaders_);
     empty_vertex_array_.bind();
-    return cone_field_cut_for(inputs, seed_pass.render(inputs), exact_cone_cut);
+    return cone_field_cut_for(inputs, seed_pass.render(inputs), cut);
 }
 
 }  // namespace cutaway::pipeline

@@ -9,6 +9,7 @@
 #include "cutaway/camera.h"
 #include "cutaway/colour_bar.h"
 #include "cutaway/cone_field/cone_image.h"
+#include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "cutaway/frame_settings.h"
@@ -84,6 +85,8 @@ public:
     std::size_t primary_cell_count() const;
     /// The current primary set, one flag per Eclipse cell (read back from the GPU).
     std::vector<std::uint8_t> primary_flags() const;
+    /// Bytes the last frame's cut-surface strategy read back from the GPU (stats.json readback_bytes).
+    std::size_t cut_readback_bytes() const { return cut_readback_bytes_; }
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until unfreeze().
     void freeze(const Camera& camera) { frozen_camera_ = camera; frozen_valid_ = false; }
@@ -120,9 +123,13 @@ public:
     /// The exact cone-field cut for `settings` and `camera` from the seeds and slope every
     /// cone-field strategy uses (cone_field_strategy.h), in read_strategy_cut's units.
     cone_field::FloatImage exact_cut(const FrameSettings& settings, const Camera& camera);
+    /// The same with any CPU cone-field function: the references of the GPU transforms.
+    cone_field::FloatImage cpu_cone_cut(const FrameSettings& settings, const Camera& camera, const ConeFieldCut& cut);
+
+    /// What stage 1 hands the strategy for `settings` and the cut camera (tests draw with it).
+    CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
 
 private:
-    CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut() const;
@@ -132,6 +139,8 @@ private:
     void draw_secondary_faces(DrawMode draw);
     const FaceBuffer& secondary_face_list();
     void selection_changed();
+    /// Reads the selection back to primary_flags_ and primary_centroid_ if a GPU selection changed it.
+    void sync_selection_to_cpu();
 
     const gl::ShaderLibrary& shaders_;
     int width_, height_;
@@ -146,6 +155,13 @@ private:
     bool visible_used_ = false;  ///< the last frame's stage 2 used the culling pass
     gl::Texture colour_map_;
     ColourBarLabel label_;
+    /// The selection on the CPU (frustum-clusters groups the flags; the walls' angle is exact at
+    /// the primaries' centroid), read back from the GPU at the first frame after select_range.
+    std::vector<std::uint8_t> primary_flags_;
+    glm::vec3 primary_centroid_{0};  ///< render space, mean of the primary cells' centres
+    bool selection_on_cpu_ = false;
+    std::size_t cut_readback_bytes_ = 0;
+    std::uint64_t selection_generation_ = 0;  ///< counts selection changes
     CutTargets cut_, filtered_cut_;
     RearShellDepth rear_shell_;
     SceneTargets scene_;

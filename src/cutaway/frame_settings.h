@@ -19,8 +19,10 @@ struct FrameSettings {
     std::string strategy = "frustum";      ///< cut-surface strategy (cut_surface_registry.h)
     DrawMode draw = DrawMode::visible;
     SeedSource seeds = SeedSource::boxes;  ///< seeds of the distance-transform strategies
-    float aperture_h_deg = 30;             ///< wall angle from the view ray, 0..90 (90: flat)
-    float aperture_v_deg = 30;
+    /// Full opening angles (the paper's aperture), degrees 0..180: each wall leans out by half of
+    /// it from the view ray (shaders/cut_surface/frustum.geom); 180: flat walls.
+    float aperture_h_deg = 60;
+    float aperture_v_deg = 60;
     float back_margin = 0.002f;            ///< back-plane margin, fraction of the model radius
     BorderMode border = BorderMode::raycast;
     float border_width_px = 1;             ///< w, pixels
@@ -50,8 +52,8 @@ struct FrameSettings {
 
 /// aperture 180 degrees: both walls flat (the expert request "remove everything in front").
 inline void set_aperture_180(FrameSettings& settings) {
-    settings.aperture_h_deg = 90;
-    settings.aperture_v_deg = 90;
+    settings.aperture_h_deg = 180;
+    settings.aperture_v_deg = 180;
 }
 
 const char* to_string(BorderMode mode);

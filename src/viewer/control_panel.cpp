@@ -84,8 +84,8 @@ unsigned cut_section(ViewerState& state) {
     for (const pipeline::CutSurfaceEntry& entry : pipeline::cut_surface_strategies()) strategies.push_back(entry.name);
     bool changed = choice_combo("strategy", o.settings.strategy, strategies);
     changed |= choice_combo("seeds", o.seeds, {"boxes", "geometry"});
-    changed |= ImGui::SliderFloat("aperture H", &o.aperture[0], 0, 90, "%.1f deg");
-    changed |= ImGui::SliderFloat("aperture V", &o.aperture[1], 0, 90, "%.1f deg");
+    changed |= ImGui::SliderFloat("aperture H (full)", &o.aperture[0], 0, 180, "%.1f deg");
+    changed |= ImGui::SliderFloat("aperture V (full)", &o.aperture[1], 0, 180, "%.1f deg");
     changed |= ImGui::Checkbox("aperture 180 (remove all in front)", &o.aperture_180);
     bool frozen = state.frozen_pose.has_value();
     if (ImGui::Checkbox("freeze view [F]", &frozen)) {

@@ -40,12 +40,17 @@ struct AccuracyBound {
     double max_wrong_fraction;
 };
 
-// SPEC section 2: plain JFA measured up to 0.13% wrong pixels, JFA^2 at most 0.02%; issue 5 sets
-// the test limits at 0.5% and 0.05% (the scenes here are not the SPEC's, so room for variation).
-// The other variants only need to be one-sided and no worse than plain JFA's limit.
+// SPEC section 2's bounds as they are: plain JFA up to 0.13% wrong pixels, JFA^2 at most 0.02%.
+// The other variants add passes to plain JFA, so they are held to its bound.
+//
+// One measured exception, NOT a SPEC bound: plain JFA on the densest scene (11% of the pixels are
+// seeds) with the steepest cones (m = 32, each reaching 8 pixels; SPEC quotes its errors at m = 2)
+// is 0.178% wrong. SPEC's 0.13% does not hold there; this test keeps that case at what it
+// measures (plain_jfa_steep_dense_measured) so a regression still fails, and says so.
+constexpr double plain_jfa_steep_dense_measured = 0.0018;
 constexpr AccuracyBound accuracy_bounds[] = {
-    {JfaVariant::jfa, 0.005},          {JfaVariant::jfa_plus_1, 0.005},   {JfaVariant::jfa_plus_2, 0.005},
-    {JfaVariant::one_plus_jfa, 0.005}, {JfaVariant::jfa_squared, 0.0005},
+    {JfaVariant::jfa, 0.0013},          {JfaVariant::jfa_plus_1, 0.0013},   {JfaVariant::jfa_plus_2, 0.0013},
+    {JfaVariant::one_plus_jfa, 0.0013}, {JfaVariant::jfa_squared, 0.0002},
 };
 
 TEST(JumpFlooding, AccuracyAgainstExactAt512) {
@@ -61,7 +66,8 @@ TEST(JumpFlooding, AccuracyAgainstExactAt512) {
                           << "), mean |error| " << error.mean_abs_error << ", max |error| " << error.max_abs_error
                           << ", max signed " << error.max_signed_error << "\n";
                 ::testing::Test::RecordProperty(label + " wrong_fraction", std::to_string(error.wrong_fraction));
-                EXPECT_LE(error.wrong_fraction, bound.max_wrong_fraction) << label;
+                const bool steep_dense_plain = bound.variant == JfaVariant::jfa && slope > 8.0 && scene.name == "scattered_30000";
+                EXPECT_LE(error.wrong_fraction, steep_dense_plain ? plain_jfa_steep_dense_measured : bound.max_wrong_fraction) << label;
                 // One-sided: each pixel is a real seed's cone height, rounded to float like the
                 // exact maximum, so never above it; not even rounding slack is needed.
                 EXPECT_LE(error.max_signed_error, 0.0) << label;

@@ -37,7 +37,7 @@ TEST(CutStrategies, EveryStrategyKeepsEveryPrimaryPixelVisible) {
             settings.strategy = entry.name;
             // Both seed sources: boxes (back face widened by a pixel) and the cells' own faces.
             for (pipeline::SeedSource seeds : {pipeline::SeedSource::boxes, pipeline::SeedSource::geometry}) {
-                if (seeds == pipeline::SeedSource::geometry && entry.name == "frustum") continue;  // no seeds
+                if (seeds == pipeline::SeedSource::geometry && !entry.cpu_reference) continue;  // no seeds
                 settings.seeds = seeds;
                 SCOPED_TRACE(std::string("seeds ") + pipeline::to_string(seeds));
                 const pipeline::FrameMetrics m = pipeline::measure_frame(*renderer, settings, camera);
@@ -50,11 +50,12 @@ TEST(CutStrategies, EveryStrategyKeepsEveryPrimaryPixelVisible) {
 }
 
 TEST(CutStrategies, JumpFloodingWithinItsErrorBoundsAgainstExactAt512) {
-    // SPEC: plain JFA at most 0.5% wrong pixels, JFA^2 at most 0.05%; errors one-sided (the cut
-    // is the height of a real seed's cone, never above the exact maximum). A pixel is wrong when
-    // off by more than compare_cut's default tolerance (1e-3 of the exact depth range).
+    // SPEC section 2's measured bounds, as they are: plain JFA at most 0.13% wrong pixels, JFA^2
+    // at most 0.02%; errors one-sided (the cut is the height of a real seed's cone, never above
+    // the exact maximum). A pixel is wrong when off by more than compare_cut's default tolerance
+    // (1e-3 of the exact depth range). Here the transforms run on the GPU (float).
     constexpr int side = 512;
-    const std::pair<const char*, double> bounds[] = {{"jfa", 0.005}, {"jfa2", 0.0005}};
+    const std::pair<const char*, double> bounds[] = {{"jfa", 0.0013}, {"jfa2", 0.0002}};
     auto renderer = make_renderer(petra(), side, side);
     std::mt19937 random(41);
     for (int trial = 0; trial < 3; ++trial) {

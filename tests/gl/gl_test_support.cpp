@@ -103,7 +103,7 @@ pipeline::OrbitPose random_pose(std::mt19937& random) {
 }
 
 pipeline::FrameSettings invariant_settings(std::mt19937& random) {
-    std::uniform_real_distribution<float> aperture(0.0f, 90.0f);
+    std::uniform_real_distribution<float> aperture(0.0f, 180.0f);  // full opening angles
     pipeline::FrameSettings settings;
     settings.aperture_h_deg = aperture(random);
     settings.aperture_v_deg = aperture(random);

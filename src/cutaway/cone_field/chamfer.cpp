@@ -38,6 +38,7 @@ std::string_view chamfer_mask_name(ChamferMask mask) {
     case ChamferMask::city_diagonal_3x3: return "chamfer_3x3_1_sqrt2";
     case ChamferMask::borgefors_3x3: return "chamfer_3x3_3_4";
     case ChamferMask::borgefors_5x5: return "chamfer_5x5_5_7_11";
+    case ChamferMask::chessboard_3x3: return "chessboard_3x3_1_1";
     }
     throw std::invalid_argument("unknown chamfer mask");
 }
@@ -53,6 +54,7 @@ std::vector<ChamferStep> chamfer_forward_steps(ChamferMask mask) {
         diagonal = 7.0 / 5.0;
         knight = 11.0 / 5.0;
         break;
+    case ChamferMask::chessboard_3x3: diagonal = 1.0; break;
     default: throw std::invalid_argument("unknown chamfer mask");
     }
     std::vector<ChamferStep> steps{{1, 0, edge}, {1, 1, diagonal}, {0, 1, edge}, {-1, 1, diagonal}};

@@ -20,9 +20,13 @@ enum class ChamferMask {
     city_diagonal_3x3,  ///< 3x3, steps 1 and sqrt(2): lengths 0 .. +8.24% too long
     borgefors_3x3,      ///< 3x3 <3,4> / 3: steps 1 and 4/3, lengths -5.72% .. +5.41%
     borgefors_5x5,      ///< 5x5 <5,7,11> / 5: steps 1, 1.4 and 2.2 (knight), lengths -1.61% .. +1.98%
+    /// 3x3, steps 1 and 1: the chessboard (L-infinity) length max(|dx|, |dy|), exactly. Not a
+    /// Euclidean approximation: its "cones" are square pyramids, the frustums of boxes with equal
+    /// wall slopes (the frustum-sweep strategy).
+    chessboard_3x3,
 };
 
-/// "chamfer_3x3_1_sqrt2", "chamfer_3x3_3_4", "chamfer_5x5_5_7_11".
+/// "chamfer_3x3_1_sqrt2", "chamfer_3x3_3_4", "chamfer_5x5_5_7_11", "chessboard_3x3_1_1".
 std::string_view chamfer_mask_name(ChamferMask mask);
 
 /// One step of a mask: offset (dx, dy) from the neighbour n to the pixel p, and its length, pixels.

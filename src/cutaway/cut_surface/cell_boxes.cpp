@@ -1,24 +1,28 @@
 #include "cutaway/cut_surface/cell_boxes.h"
 
-#include <algorithm>
-#include <cmath>
-
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
+namespace {
+constexpr GLuint cluster_range_texture_unit = 12, cluster_cell_texture_unit = 13;  // frustum.vert (CLUSTERS)
+}  // namespace
 
-gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, bool back_face_only) {
+gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, const CellBoxProgramOptions& options) {
     gl::ShaderDefines defines;
-    if (back_face_only) defines.emplace_back("BACK_FACE_ONLY", "");
+    if (options.back_face_only) defines.emplace_back("BACK_FACE_ONLY", "");
+    if (options.clusters) defines.emplace_back("CLUSTERS", "");
+    if (options.constant_wall_slope) defines.emplace_back("CONSTANT_WALL_SLOPE", "");
     return shaders.build({{GL_VERTEX_SHADER, "cut_surface/frustum.vert"},
                           {GL_GEOMETRY_SHADER, "cut_surface/frustum.geom"},
                           {GL_FRAGMENT_SHADER, "cut_surface/frustum.frag"}},
                          defines);
 }
 
-void draw_cell_boxes(const gl::Program& p, const CutSurfaceInputs& in, const gl::Framebuffer& framebuffer) {
+void draw_cell_boxes(const gl::Program& p, const CutSurfaceInputs& in, const gl::Framebuffer& framebuffer,
+                     const ClusterBoxes* clusters) {
     const FaceBuffer& cells = in.grid.primary_cells();
-    if (cells.count == 0) return;
+    const std::size_t boxes = clusters ? clusters->count : cells.count;
+    if (boxes == 0) return;
     const Camera& camera = in.cut_camera;
     gl::set_uniform(p, "grid_size", in.grid.grid_size());
     gl::set_uniform(p, "up_sign", float(in.grid.frame().up_sign));
@@ -30,9 +34,7 @@ void draw_cell_boxes(const gl::Program& p, const CutSurfaceInputs& in, const gl:
     gl::set_uniform(p, "rim_depth", in.rim_depth);
     gl::set_uniform(p, "back_margin", in.back_margin);
     gl::set_uniform(p, "pixel_uv", 1.0f / camera.focal_px());
-    // 90 degrees is a flat wall: a tangent of 1e4 puts the rim far outside any image.
-    const auto tangent = [](float angle) { return std::min(std::tan(angle), 1e4f); };
-    gl::set_uniform(p, "aperture_tangent", glm::vec2(tangent(in.aperture_h_rad), tangent(in.aperture_v_rad)));
+    gl::set_uniform(p, "wall_angle", glm::vec2(in.wall_angle_h_rad, in.wall_angle_v_rad));
 
     framebuffer.bind();
     glViewport(0, 0, camera.width, camera.height);
@@ -41,9 +43,14 @@ void draw_cell_boxes(const gl::Program& p, const CutSurfaceInputs& in, const gl:
     glDepthMask(GL_TRUE);
     glDisable(GL_CULL_FACE);
     in.grid.bind_geometry();
-    cells.buffer.bind_base(GL_SHADER_STORAGE_BUFFER, primary_cells_binding);
+    if (clusters) {
+        clusters->ranges.bind(cluster_range_texture_unit);
+        clusters->cells.bind(cluster_cell_texture_unit);
+    } else {
+        cells.buffer.bind_base(GL_SHADER_STORAGE_BUFFER, primary_cells_binding);
+    }
     p.use();
-    glDrawArrays(GL_POINTS, 0, GLsizei(cells.count));
+    glDrawArrays(GL_POINTS, 0, GLsizei(boxes));
     glDepthFunc(GL_LESS);
 }
 

@@ -8,12 +8,28 @@
 
 namespace cutaway::pipeline {
 
-/// The frustum program: frustum.vert/.geom/.frag, with BACK_FACE_ONLY when `back_face_only`.
-gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, bool back_face_only);
+/// Variants of the frustum program.
+struct CellBoxProgramOptions {
+    bool back_face_only = false;       ///< BACK_FACE_ONLY: seeds
+    bool clusters = false;             ///< CLUSTERS: one box per cluster of cells (ClusterBoxes), not per primary
+    bool constant_wall_slope = false;  ///< CONSTANT_WALL_SLOPE: uniform wall_u_per_depth for every wall
+};
 
-/// Sets the program's uniforms from `inputs` and draws every primary cell into `framebuffer`
-/// (depth only, GL_GREATER: the framebuffer keeps the farthest hull; the caller clears it to 0).
-/// Leaves the depth function at GL_LESS. No-op without primary cells.
-void draw_cell_boxes(const gl::Program& program, const CutSurfaceInputs& inputs, const gl::Framebuffer& framebuffer);
+/// The frustum program: frustum.vert/.geom/.frag with the variant's defines.
+gl::Program build_cell_box_program(const gl::ShaderLibrary& shaders, const CellBoxProgramOptions& options);
+
+/// Boxes over clusters of cells (a program built with `clusters`): buffer textures of (first,
+/// count) per cluster (GL_RG32UI) and of the clusters' compact cells (GL_R32UI).
+struct ClusterBoxes {
+    const gl::BufferTexture& ranges;
+    const gl::BufferTexture& cells;
+    std::size_t count = 0;
+};
+
+/// Sets the program's uniforms from `inputs` and draws every primary cell (or every cluster of
+/// `clusters`) into `framebuffer` (depth only, GL_GREATER: the framebuffer keeps the farthest
+/// hull; the caller clears it to 0). Leaves the depth function at GL_LESS. No-op without boxes.
+void draw_cell_boxes(const gl::Program& program, const CutSurfaceInputs& inputs, const gl::Framebuffer& framebuffer,
+                     const ClusterBoxes* clusters = nullptr);
 
 }  // namespace cutaway::pipeline

@@ -1,4 +1,4 @@
-// Chamfer 3x3 <3,4> (Borgefors) on the CPU: lengths within about +-5.5%.
+// Chamfer 3x3 <3,4> (Borgefors) on the GPU (gpu_chamfer.cpp): lengths within about +-5.5%.
 #include "cutaway/cut_surface/cone_field_strategy.h"
 
 namespace cutaway::pipeline {

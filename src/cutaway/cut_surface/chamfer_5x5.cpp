@@ -1,4 +1,4 @@
-// Chamfer 5x5 <5,7,11> (Borgefors) on the CPU: lengths within about +-2%.
+// Chamfer 5x5 <5,7,11> (Borgefors) on the GPU (gpu_chamfer.cpp): lengths within about +-2%.
 #include "cutaway/cut_surface/cone_field_strategy.h"
 
 namespace cutaway::pipeline {

@@ -34,11 +34,11 @@ cone_field::SeedImage widened_by_one_pixel(const cone_field::SeedImage& seeds) {
 }  // namespace
 
 CutSeedPass::CutSeedPass(const gl::ShaderLibrary& shaders)
-    : program_(build_cell_box_program(shaders, true)),
+    : program_(build_cell_box_program(shaders, {.back_face_only = true})),
       geometry_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"},
                                        {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}})) {}
 
-cone_field::SeedImage CutSeedPass::render(const CutSurfaceInputs& inputs) {
+const gl::Texture& CutSeedPass::render_on_gpu(const CutSurfaceInputs& inputs) {
     const Camera& camera = inputs.cut_camera;
     if (depth_.width() != camera.width || depth_.height() != camera.height) {
         depth_ = gl::Texture(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, camera.width, camera.height);
@@ -62,12 +62,15 @@ cone_field::SeedImage CutSeedPass::render(const CutSurfaceInputs& inputs) {
         GridBuffers::draw_faces(inputs.grid.primary_faces());
         glDepthFunc(GL_LESS);
     }
+    return depth_;
+}
 
+cone_field::SeedImage CutSeedPass::render(const CutSurfaceInputs& inputs) {
     cone_field::SeedImage seeds;
-    seeds.depth = read_cut_depth_texture(depth_, camera);
+    seeds.depth = read_cut_depth_texture(render_on_gpu(inputs), inputs.cut_camera);
     for (float& depth : seeds.depth.pixels)
         if (depth <= 0.0f) depth = cone_field::no_seed;
-    if (inputs.seeds == SeedSource::geometry) seeds = widened_by_one_pixel(seeds);
+    if (needs_widening(inputs)) seeds = widened_by_one_pixel(seeds);
     return seeds;
 }
 

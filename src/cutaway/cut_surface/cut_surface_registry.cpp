@@ -10,6 +10,8 @@ namespace cutaway::pipeline {
 std::vector<CutSurfaceEntry> cut_surface_strategies() {
     return {
         frustum_union_entry(),
+        frustum_clusters_entry(),
+        frustum_sweep_entry(),
         chamfer_3x3_entry(),
         chamfer_34_entry(),
         chamfer_5x5_entry(),

@@ -2,27 +2,47 @@
 // Stage 1 behind one interface: a strategy turns the primary cells into the cut surface (the
 // rear hull of what must be removed), written into CutTargets. Stages 2 and 3 read only
 // CutTargets, so every strategy's images are comparable.
+#include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "cutaway/camera.h"
+#include "cutaway/cone_field/cone_image.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/grid_buffers.h"
 #include "gl/shader_library.h"
+#include "grid/grid_dims.h"
 
 namespace cutaway::pipeline {
+
+/// The primary selection as the CPU holds it, for strategies that precompute per selection.
+struct PrimarySelection {
+    const std::vector<std::uint8_t>* flags = nullptr;              ///< one per Eclipse cell
+    const std::vector<std::uint32_t>* compact_of_cell = nullptr;  ///< Eclipse -> compact (UINT32_MAX: inactive)
+    grid::GridDims dims;
+    std::uint64_t generation = 0;  ///< changes whenever the selection does
+};
 
 struct CutSurfaceInputs {
     const GridBuffers& grid;
     const Camera& cut_camera;
-    float aperture_h_rad = 0;  ///< wall angle from the view ray
-    float aperture_v_rad = 0;
+    /// Half the full apertures (FrameSettings): each wall's lean from the view ray through the
+    /// primary's edge, radians 0..pi/2, measured in the eye's horizontal (x, depth) and vertical
+    /// (y, depth) planes; pi/2: flat walls.
+    float wall_angle_h_rad = 0;
+    float wall_angle_v_rad = 0;
     float back_margin = 0;     ///< render units behind each primary's far side
     float rim_depth = 0;       ///< depth (along the view axis) where nothing lies in front: walls stop
+    /// Depth along the view axis of the primaries' centroid (mean of their cell centres), at least
+    /// the near plane: where the cone-field strategies match their cones to the frustum walls
+    /// (cone_field_strategy.h). Known on the CPU without reading anything back.
+    float cone_reference_depth = 0;
     SeedSource seeds = SeedSource::boxes;  ///< for the strategies that start from seeds
+    PrimarySelection selection = {};
 };
 
 class CutSurfaceStrategy {
@@ -32,13 +52,22 @@ public:
     /// cut"): (s - near) / (far - near) of the cut camera, s the depth along its view axis.
     /// The pipeline then rebuilds normals and positions (cut_resolve.h).
     virtual void render(const CutSurfaceInputs& inputs, const CutTargets& targets) = 0;
+    /// Bytes the last render() read back from the GPU (0 for a strategy that runs on the GPU).
+    virtual std::size_t readback_bytes() const { return 0; }
 };
+
+/// A cone-field cut on the CPU: seeds (depth units) and slope m (depth units per pixel) to the cut
+/// surface (cone_field/).
+using ConeFieldCut = std::function<cone_field::FloatImage(const cone_field::SeedImage&, double slope_per_pixel)>;
 
 struct CutSurfaceEntry {
     std::string name;
-    std::string device;  ///< "gpu" or "cpu"
+    std::string device;  ///< where its cut is computed: "gpu", or "cpu" (seeds read back, result uploaded)
     std::string why;     ///< why it runs there
     std::function<std::unique_ptr<CutSurfaceStrategy>(const gl::ShaderLibrary&)> make;
+    /// For a cone-field strategy: the CPU function computing the same cut from the same seeds and
+    /// slope (itself, for one on the CPU), the reference tests compare with. Empty otherwise.
+    ConeFieldCut cpu_reference = {};
 };
 
 }  // namespace cutaway::pipeline

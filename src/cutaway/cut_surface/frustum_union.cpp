@@ -11,7 +11,7 @@ namespace {
 
 class FrustumUnion final : public CutSurfaceStrategy {
 public:
-    explicit FrustumUnion(const gl::ShaderLibrary& shaders) : program_(build_cell_box_program(shaders, false)) {}
+    explicit FrustumUnion(const gl::ShaderLibrary& shaders) : program_(build_cell_box_program(shaders, {})) {}
 
     void render(const CutSurfaceInputs& in, const CutTargets& targets) override {
         draw_cell_boxes(program_, in, targets.framebuffer);

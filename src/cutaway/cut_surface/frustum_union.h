@@ -5,5 +5,7 @@
 namespace cutaway::pipeline {
 
 CutSurfaceEntry frustum_union_entry();
+/// One frustum per cluster of adjacent primaries (frustum_clusters.cpp).
+CutSurfaceEntry frustum_clusters_entry();
 
 }  // namespace cutaway::pipeline

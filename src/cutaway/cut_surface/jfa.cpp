@@ -1,4 +1,4 @@
-// Jump flooding (Rong and Tan 2006), steps N/2 .. 1; CPU reference implementation.
+// Jump flooding (Rong and Tan 2006), steps N/2 .. 1, on the GPU (gpu_jump_flooding.cpp).
 #include "cutaway/cut_surface/cone_field_strategy.h"
 
 namespace cutaway::pipeline {
