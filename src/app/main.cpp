@@ -6,6 +6,7 @@
 #include "app/commands.h"
 #include "gl/gl_error.h"
 #include "grid/grdecl_error.h"
+#include "io/output_error.h"
 #include "volume/volume_error.h"
 
 int main(int argc, char** argv) {
@@ -22,7 +23,9 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
-        return app.exit(error);
+        // CLI11 prints "--option: expected ..., found ..."; every refused command line is bad
+        // input (exit 2) whatever CLI11's own code; --help stays 0.
+        return app.exit(error) == 0 ? 0 : 2;
     }
     try {
         if (app.got_subcommand("inspect")) return inspect();
@@ -35,6 +38,9 @@ int main(int argc, char** argv) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;
     } catch (const cutaway::volume::VolumeError& error) {
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return 2;
+    } catch (const cutaway::io::OutputError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;
     } catch (const cutaway::gl::GlError& error) {

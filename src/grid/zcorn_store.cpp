@@ -15,6 +15,8 @@ std::size_t ZcornStore::compact_bytes(GridDims dims) {
            sizeof(double);
 }
 
+std::size_t ZcornStore::full_bytes(GridDims dims) { return dims.zcorn_value_count() * sizeof(double); }
+
 ZcornStore ZcornStore::from_values(GridDims dims, const std::vector<double>& values) {
     if (values.size() != dims.zcorn_value_count())
         throw std::invalid_argument("ZcornStore::from_values: expected " +
@@ -29,10 +31,7 @@ void ZcornStore::push(double depth) {
     if (complete()) throw std::logic_error("ZcornStore::push: store is already complete");
     const std::size_t plane = pushed_ / plane_size_;
     const std::size_t offset = pushed_ % plane_size_;
-    if (compact_ && plane % 2 == 0 && plane > 0 &&
-        depths_[slot_of(plane) * plane_size_ + offset] != depth) {
-        expand_to_full();
-    }
+    if (push_expands(depth)) expand_to_full();
     depths_[slot_of(plane) * plane_size_ + offset] = depth;
     ++pushed_;
 }

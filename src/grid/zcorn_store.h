@@ -23,8 +23,16 @@ public:
     /// Bytes the compact layout needs (the minimum a load allocates for ZCORN).
     static std::size_t compact_bytes(GridDims dims);
 
+    /// Bytes the full layout needs (2NZ planes).
+    static std::size_t full_bytes(GridDims dims);
+
     /// Appends the next depth in Eclipse order (x fastest, then y, then plane).
     void push(double depth);
+    /// Whether push(depth) would switch the store to the full layout (allocating full_bytes()).
+    bool push_expands(double depth) const {
+        const std::size_t plane = pushed_ / plane_size_;
+        return compact_ && plane % 2 == 0 && plane > 0 && depths_[slot_of(plane) * plane_size_ + pushed_ % plane_size_] != depth;
+    }
     std::size_t pushed() const { return pushed_; }
     bool complete() const { return pushed_ == dims_.zcorn_value_count(); }
 

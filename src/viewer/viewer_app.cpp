@@ -83,7 +83,7 @@ ViewerApp::ViewerApp(ViewerOptions options)
     info_.gl_renderer = gl::gl_renderer() + " (" + window_.platform() + ")";
     window_fb_width_ = window_.framebuffer_width();
     window_fb_height_ = window_.framebuffer_height();
-    scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.memory_limit_bytes()),
+    scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.model_memory_limit_bytes()),
                                            shaders_, state_.options, render_width(), render_height());
     if (scene_->primary_count() == 0)
         info_.message = "no cell lies in the primary range; showing the context only";

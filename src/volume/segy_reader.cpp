@@ -3,6 +3,7 @@
 #include <segyio/segy.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -94,12 +95,12 @@ private:
     void read_layout() {
         char binary[SEGY_BINARY_HEADER_SIZE];
         if (segy_binheader(file_.get(), binary) != SEGY_OK) fail("cannot read the binary header");
-        layout_.format = segy_format(binary);
+        layout_.format = unsigned_field(segy_format(binary));
         const int big_endian_code = layout_.format;
         if (!is_known_format(layout_.format)) {
             segy_set_format(file_.get(), int(SEGY_IBM_FLOAT_4_BYTE) | int(SEGY_LSB));
             if (segy_binheader(file_.get(), binary) != SEGY_OK) fail("cannot read the binary header");
-            layout_.format = segy_format(binary);
+            layout_.format = unsigned_field(segy_format(binary));
             layout_.little_endian = true;
         }
         if (!is_known_format(layout_.format))
@@ -111,7 +112,7 @@ private:
                  " is not supported, expected 1 (IBM float), 2 (int32), 3 (int16), 5 (IEEE float) or 8 (int8)");
         segy_set_format(file_.get(), layout_.format | (layout_.little_endian ? SEGY_LSB : SEGY_MSB));
 
-        layout_.samples = segy_samples(binary);
+        layout_.samples = unsigned_field(segy_samples(binary));
         if (layout_.samples <= 0)
             fail("binary header field 'samples' (bytes 3221-3222) is " + std::to_string(layout_.samples) +
                  ", expected a positive number of samples per trace");
@@ -133,6 +134,10 @@ private:
         // Bounded before any per-trace allocation: every sample as a float.
         check_memory(std::uint64_t(layout_.traces) * std::uint64_t(layout_.samples) * sizeof(float), "the traces");
     }
+
+    /// segyio reads the 2-byte binary header fields as signed: 65535 comes back as -1. SEG-Y
+    /// defines the sample count and format code as unsigned.
+    static int unsigned_field(int value) { return value & 0xFFFF; }
 
     void check_memory(std::uint64_t bytes, const std::string& what) const {
         if (bytes > options_.memory_limit_bytes)
@@ -234,7 +239,9 @@ private:
             segy_to_native(layout_.format, layout_.samples, raw.data());
             const int i = index_of(cube.inline_numbers, positions[t].inline_number);
             const int x = index_of(cube.crossline_numbers, positions[t].crossline_number);
-            to_floats(raw.data(), &cube.samples[cube.index(i, x, 0)]);
+            float* trace = &cube.samples[cube.index(i, x, 0)];
+            to_floats(raw.data(), trace);
+            refuse_non_finite(trace, t);
             cube.trace_present[std::size_t(i) * std::size_t(cube.dims.crosslines) + std::size_t(x)] = 1;
         }
         for (int i = 0; i < cube.dims.inlines; ++i)
@@ -242,6 +249,15 @@ private:
                 if (!cube.trace_present[std::size_t(i) * std::size_t(cube.dims.crosslines) + std::size_t(x)])
                     cube.missing_traces.emplace_back(cube.inline_numbers[std::size_t(i)],
                                                      cube.crossline_numbers[std::size_t(x)]);
+    }
+
+    /// NaN or infinite amplitudes (IEEE or IBM float formats) have no place on the 256 levels: one
+    /// +inf made every other level 0 and the render blank.
+    void refuse_non_finite(const float* trace, std::size_t trace_index) const {
+        for (int k = 0; k < layout_.samples; ++k)
+            if (!std::isfinite(trace[k]))
+                fail("trace " + std::to_string(trace_index) + " sample " + std::to_string(k) + ": expected a finite amplitude, found " +
+                     (std::isnan(trace[k]) ? "NaN" : trace[k] > 0 ? "+inf" : "-inf"));
     }
 
     /// Native samples of the file's format (after segy_to_native) to floats.

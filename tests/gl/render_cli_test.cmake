@@ -40,7 +40,7 @@ function(expect_failure name code pattern)
 endfunction()
 
 expect_failure(unknown_property 2 "--property SATURATION: not in the model \\(static: PORO" ${REEK} --property SATURATION)
-expect_failure(huge_image 2 "image width 100000: expected 1\\.\\.[0-9]+" ${REEK} --size 100000 100)
+expect_failure(huge_image 2 "--size: expected a finite number in \\[16, 32768\\] pixels, found .100000." ${REEK} --size 100000 100)
 expect_failure(bad_border 2 "--border 'wide': expected raycast\\|threshold" ${REEK} --border wide)
 expect_failure(bad_draw 2 "--draw 'some': expected visible\\|all-faces" ${REEK} --draw some)
 expect_failure(no_device 4 "OpenGL: EGL platform 'device': no hardware EGL device" ${REEK} --egl-platform device)
