@@ -129,7 +129,9 @@ CommandAction add_inspect_command(CLI::App& app) {
     auto options = std::make_shared<InspectOptions>();
     CLI::App* cmd = app.add_subcommand("inspect", "Load GRDECL file(s) onto one grid and report dimensions, "
                                                   "active cells, faces by class and volumes");
-    cmd->add_option("model", options->files, "GRDECL file(s): the grid, then any property files")->required();
+    cmd->add_option("model", options->files, "GRDECL file(s): the grid, then any property files")
+        ->required()
+        ->check(utf8_text());
     cmd->add_flag("--json", options->json, "Print the report as JSON");
     cmd->add_option("--cells-csv", options->cells_csv, "Write i,j,k,volume,cx,cy,cz per active cell (0-based ijk)")
         ->check(writable_output());

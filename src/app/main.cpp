@@ -12,6 +12,10 @@
 int main(int argc, char** argv) {
     CLI::App app{"cutaway: corner-point reservoir grids, cutaway rendering and seismic ray casting benchmarks"};
     app.require_subcommand(1);
+    // Refused command lines read like every other refusal: "cutaway: --option: expected ..., found ...".
+    app.failure_message([](const CLI::App*, const CLI::Error& error) {
+        return "cutaway: " + std::string(error.what()) + "\n(cutaway SUBCOMMAND --help lists the options)\n";
+    });
     // One line per subcommand: its registration returns the action run when it is chosen.
     const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
     const cutaway::app::CommandAction generate = cutaway::app::add_generate_command(app);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -69,6 +70,45 @@ CLI::Validator one_of(const std::vector<std::string>& names) {
             return "expected one of " + known + ", found " + shown(text);
         },
         known);
+}
+
+namespace {
+
+/// Whether `text` is well-formed UTF-8 (no overlong forms, surrogates or code points past U+10FFFF).
+bool is_utf8(const std::string& text) {
+    std::size_t n = 0;
+    while (n < text.size()) {
+        const auto lead = static_cast<unsigned char>(text[n]);
+        const std::size_t length = lead < 0x80 ? 1 : (lead >> 5) == 0x6 ? 2 : (lead >> 4) == 0xE ? 3 : (lead >> 3) == 0x1E ? 4 : 0;
+        if (length == 0 || n + length > text.size()) return false;
+        std::uint32_t code = length == 1 ? lead : lead & (0x7F >> length);
+        for (std::size_t k = 1; k < length; ++k) {
+            const auto next = static_cast<unsigned char>(text[n + k]);
+            if ((next >> 6) != 0x2) return false;
+            code = (code << 6) | (next & 0x3F);
+        }
+        const std::uint32_t smallest[5] = {0, 0, 0x80, 0x800, 0x10000};
+        if (code < smallest[length] || code > 0x10FFFF || (code >= 0xD800 && code <= 0xDFFF)) return false;
+        n += length;
+    }
+    return true;
+}
+
+}  // namespace
+
+CLI::Validator utf8_text() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            if (is_utf8(text)) return {};
+            std::string printable = text;
+            for (char& c : printable)
+                if (static_cast<unsigned char>(c) > 126 || static_cast<unsigned char>(c) < 32) c = '?';
+            // The end of a path names the file: show the last 60 characters.
+            constexpr std::size_t tail = 60;
+            if (printable.size() > tail) printable = "..." + printable.substr(printable.size() - tail);
+            return "expected UTF-8 text, found '" + printable + "'";
+        },
+        "UTF-8");
 }
 
 CLI::Validator writable_output() {

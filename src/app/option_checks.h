@@ -25,6 +25,8 @@ CLI::Validator finite_above(double low, double high, const std::string& unit = "
 void check_orbit_values(CLI::Option& option, double max_distance);
 /// One of `names` ("expected one of a|b|c, found 'x'").
 CLI::Validator one_of(const std::vector<std::string>& names);
+/// Text that is valid UTF-8: input paths end up in JSON reports, which hold UTF-8 only.
+CLI::Validator utf8_text();
 /// A path an output can be written to (checked before any work: see io::output_path_problem).
 CLI::Validator writable_output();
 

@@ -90,7 +90,7 @@ json faces_drawn_json(const pipeline::FacesDrawn& drawn) {
     return faces;
 }
 
-/// A metric's value, or null with `absent_key` saying why when its denominator is zero (0/0 is not 1).
+/// A metric's value, or null with KEY_absent saying why when its denominator is zero (0/0 is not 1).
 void put_metric(json& stats, const std::string& key, double fraction, std::size_t denominator, const std::string& why_absent) {
     if (denominator > 0) {
         stats[key] = fraction;

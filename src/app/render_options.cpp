@@ -90,7 +90,7 @@ nlohmann::json RenderOptions::describe() const {
 }
 
 void add_selection_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)");
+    c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)")->check(utf8_text());
     c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2)->check(finite_in(-FLT_MAX, FLT_MAX));
     c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)")
         ->check(finite_above(0, 1));
@@ -132,7 +132,9 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
 }
 
 void add_scene_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")->required();
+    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")
+        ->required()
+        ->check(utf8_text());
     add_selection_options(c, o);
     add_frame_options(c, o);
     // DIST in render units; 1e9 is far beyond any model's framing distance (metres, z-scaled).

@@ -259,7 +259,7 @@ int run_volume(VolumeOptions& o) {
 CommandAction add_volume_command(CLI::App& app) {
     auto o = std::make_shared<VolumeOptions>();
     CLI::App* cmd = app.add_subcommand("volume", "Ray cast a seismic SEG-Y cube (Duan & Li) into a PNG, headless");
-    cmd->add_option("cube", o->cube, "Post-stack SEG-Y cube")->required();
+    cmd->add_option("cube", o->cube, "Post-stack SEG-Y cube")->required()->check(utf8_text());
     cmd->add_option("--out", o->out, "Output PNG")->required()->check(writable_output());
     cmd->add_option("--stats", o->stats, "Write times, sample counts and the configuration as JSON")
         ->check(writable_output());

@@ -97,6 +97,10 @@ std::string output_path_problem(const std::filesystem::path& path) {
     if (path.empty()) return "expected a file name, found an empty path";
     std::error_code error;
     if (std::filesystem::is_directory(path, error)) return "expected a file, found the directory '" + path.string() + "'";
+    if (is_special_file(path)) {  // written in place (/dev/null): only the file itself must be writable
+        if (::access(path.c_str(), W_OK) == 0) return {};
+        return "expected a writable file, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+    }
     const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
     if (!std::filesystem::is_directory(directory, error)) {
         std::string text("expected a file in an existing directory, found '");

@@ -287,6 +287,11 @@ TEST_F(BadInput, NonUtf8KeywordIsBadInputBeforeAnyReport) {
     EXPECT_TRUE(r.out.empty()) << "half a report: " << r.out;
     expect_refused(cutaway({"render", grid, "--out", out("x.png"), "--stats", out("x.json")}), {"bytes.grdecl:13"});
     expect_no_output();
+    // A file name that is not UTF-8 would reach the report's "files" (JSON holds UTF-8 only).
+    const fs::path named = file("na\xefve.grdecl", kTinyGrid);
+    const ProcessResult n = cutaway({"inspect", named, "--json"});
+    expect_refused(n, {"model", "expected UTF-8 text", "na?ve.grdecl"});
+    EXPECT_TRUE(n.out.empty()) << n.out;
 }
 
 TEST_F(BadInput, WarningsAreCappedAndLongKeywordsTruncated) {
@@ -306,9 +311,9 @@ TEST_F(BadInput, LongKeywordIsTruncatedInErrors) {
     EXPECT_NE(r.err.find("KKKK..."), std::string::npos) << r.err;
 }
 
-/// A big-endian IEEE-float SEG-Y file: 2 x 2 traces of `samples` samples (values from `sample`),
-/// the sample count field set to `samples_field`.
-std::string segy_bytes(int samples_field, int samples, float (*sample)(int trace, int k)) {
+/// A big-endian SEG-Y file of 2 x 2 traces of `samples` IEEE floats (values from `sample`), with the
+/// binary header's sample count and format fields set to `samples_field` and `format_field`.
+std::string segy_bytes(int samples_field, int format_field, int samples, float (*sample)(int trace, int k)) {
     std::string bytes(3600, '\0');
     const auto put16 = [&bytes](std::size_t at, int v) {
         bytes[at] = char((v >> 8) & 0xFF);
@@ -316,7 +321,7 @@ std::string segy_bytes(int samples_field, int samples, float (*sample)(int trace
     };
     put16(3216, 4000);          // sample interval, microseconds (bytes 3217-3218)
     put16(3220, samples_field);  // samples per trace (bytes 3221-3222)
-    put16(3224, 5);             // IEEE float (bytes 3225-3226)
+    put16(3224, format_field);  // 5: IEEE float (bytes 3225-3226)
     for (int t = 0; t < 4; ++t) {
         std::string header(240, '\0');
         const auto put32 = [&header](std::size_t at, std::int32_t v) {
@@ -338,21 +343,25 @@ std::string segy_bytes(int samples_field, int samples, float (*sample)(int trace
 }
 
 TEST_F(BadInput, NonFiniteSeismicSamplesAreRefused) {
-    const fs::path inf_cube = file("inf.sgy", segy_bytes(8, 8, [](int t, int k) {
+    const fs::path inf_cube = file("inf.sgy", segy_bytes(8, 5, 8, [](int t, int k) {
         return t == 3 && k == 5 ? std::numeric_limits<float>::infinity() : float(k);
     }));
     expect_refused(cutaway({"volume", inf_cube, "--caster", "cpu", "--out", out("v.png")}),
                    {"inf.sgy", "trace 3 sample 5", "expected a finite amplitude", "+inf"});
-    const fs::path nan_cube = file("nan.sgy", segy_bytes(8, 8, [](int, int) { return std::numeric_limits<float>::quiet_NaN(); }));
+    const fs::path nan_cube = file("nan.sgy", segy_bytes(8, 5, 8, [](int, int) { return std::numeric_limits<float>::quiet_NaN(); }));
     expect_refused(cutaway({"volume", nan_cube, "--caster", "cpu", "--out", out("v.png")}), {"nan.sgy", "trace 0 sample 0", "NaN"});
     expect_no_output();
 }
 
-TEST_F(BadInput, SeismicSampleCount65535IsPrintedUnsigned) {
-    const fs::path cube = file("ns.sgy", segy_bytes(65535, 8, [](int, int k) { return float(k); }));
-    const ProcessResult r = cutaway({"volume", cube, "--caster", "cpu", "--out", out("v.png")});
-    expect_refused(r, {"ns.sgy", "65535"});
-    EXPECT_EQ(r.err.find("-1 samples"), std::string::npos) << r.err;
+TEST_F(BadInput, SeismicHeaderFields65535ArePrintedUnsigned) {
+    const fs::path samples = file("ns.sgy", segy_bytes(65535, 5, 8, [](int, int k) { return float(k); }));
+    const ProcessResult r = cutaway({"volume", samples, "--caster", "cpu", "--out", out("v.png")});
+    expect_refused(r, {"ns.sgy", "65535 samples"});
+    EXPECT_EQ(r.err.find("-1"), std::string::npos) << r.err;
+    const fs::path format = file("format.sgy", segy_bytes(8, 65535, 8, [](int, int k) { return float(k); }));
+    const ProcessResult f = cutaway({"volume", format, "--caster", "cpu", "--out", out("v.png")});
+    expect_refused(f, {"format.sgy", "'format'", "reads 65535 big-endian and 65535 little-endian"});
+    expect_no_output();
 }
 
 // ---- cases that reach the renderer (EGL on llvmpipe) ------------------------------------------
