@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <stdexcept>
 
 #include "io/staged_file.h"
@@ -28,7 +29,8 @@ std::string shown(const std::string& text) {
 CLI::Validator finite_range(double low, double high, bool low_open, const std::string& unit, const std::string& name) {
     const std::string range = (low_open ? "(" : "[") + number_text(low) + ", " + number_text(high) + "]" +
                               (unit.empty() ? "" : " " + unit);
-    const std::string description = (name.empty() ? "" : name + " to be ") + "a finite number in " + range;
+    const bool bounded = std::isfinite(low) || std::isfinite(high);
+    const std::string description = (name.empty() ? "" : name + " to be ") + "a finite number" + (bounded ? " in " + range : "");
     return CLI::Validator(
         [=](std::string& text) -> std::string {
             double value = 0;
@@ -53,6 +55,10 @@ CLI::Validator finite_in(double low, double high, const std::string& unit, const
 
 CLI::Validator finite_above(double low, double high, const std::string& unit, const std::string& name) {
     return finite_range(low, high, true, unit, name);
+}
+
+CLI::Validator finite_number() {
+    return finite_range(-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false, "", "");
 }
 
 void check_orbit_values(CLI::Option& option, double max_distance) {

@@ -20,6 +20,8 @@ std::string number_text(double value);
 CLI::Validator finite_in(double low, double high, const std::string& unit = "", const std::string& name = "");
 /// A finite number in (low, high]: for quantities that must be strictly positive.
 CLI::Validator finite_above(double low, double high, const std::string& unit = "", const std::string& name = "");
+/// Any finite number (for options whose range the consumer checks).
+CLI::Validator finite_number();
 /// Checks AZ EL DIST of an orbit camera option: AZ in [-360, 360] degrees, EL in [-89, 89] degrees
 /// (straight up or down has no defined image "up"), DIST in [0, max_distance].
 void check_orbit_values(CLI::Option& option, double max_distance);

@@ -353,12 +353,10 @@ private:
         reserve(ZcornStore::compact_bytes(dims), "ZCORN");
         ZcornStore& store = state_.zcorn.emplace(dims);
         read_values(dims.zcorn_value_count(), [&](const Token& token, std::string_view text, std::size_t count) {
-            const double z = coordinate_value(token, text);
-            for (std::size_t n = 0; n < count; ++n) {
-                // Reserved before the store allocates its full layout (it holds both for a moment).
-                if (store.push_expands(z)) reserve(ZcornStore::full_bytes(dims), "ZCORN with gaps between layers (full layout)");
-                store.push(z);
-            }
+            // Reserved before the store allocates its full layout (it holds both for a moment).
+            store.push_repeated(coordinate_value(token, text), count, [&] {
+                reserve(ZcornStore::full_bytes(dims), "ZCORN with gaps between layers (full layout)");
+            });
         });
     }
 

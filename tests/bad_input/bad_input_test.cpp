@@ -197,8 +197,14 @@ TEST_F(BadInput, VolumeOptionsOutsideTheirRangeAreRefusedWithTheRange) {
     expect_no_output();
 }
 
-TEST_F(BadInput, ViewAndGenerateSizesAreBounded) {
+TEST_F(BadInput, ViewAndGeneratorOptionsAreChecked) {
     expect_refused(cutaway({"view", "preset:zaphirus", "--size", "100000", "100000"}), {"--size", "[16, 32768]"});
+    // CLI::Range let NaN through (every comparison with NaN is false).
+    expect_refused(cutaway({"view", "preset:zaphirus", "--render-scale", "nan"}), {"--render-scale", "[0.25, 1]"});
+    expect_refused(cutaway({"generate-seismic", "--dims", "8", "8", "16", "--noise", "inf", "--out", out("s.sgy")}),
+                   {"--noise", "a finite number", "'inf'"});
+    expect_refused(cutaway({"generate", "--dims", "4", "4", "2", "--top-depth", "nan", "--out", out("g.grdecl")}),
+                   {"--top-depth", "a finite number"});
     const ProcessResult r = cutaway({"generate", "--dims", "2147483647", "1", "1", "--out", out("g.grdecl")});
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_EQ(r.err.find("18446744073"), std::string::npos) << "overflowed estimate: " << r.err;
