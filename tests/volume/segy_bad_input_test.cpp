@@ -99,5 +99,21 @@ TEST(SegyBadInput, TracesWithoutLineNumbers) {
     expect_mentions(load_error(path, options), {"cube.sgy", "expected survey line numbers"});
 }
 
+TEST(SegyBadInput, FuzzRegressionsFailCleanlyOrLoad) {
+    // Every input fuzz_segy_reader ever crashed on (tests/fuzz/regressions/*.sgy): now a
+    // VolumeError or a cube, nothing else, under the fuzzer's memory limit.
+    const auto dir = std::filesystem::path(CUTAWAY_SOURCE_DIR) / "tests/fuzz/regressions";
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".sgy") continue;
+        SCOPED_TRACE(entry.path().string());
+        volume::SegyReadOptions options;
+        options.memory_limit_bytes = std::uint64_t(64) << 20;
+        try {
+            (void)load_segy(entry.path(), options);
+        } catch (const volume::VolumeError&) {
+        }
+    }
+}
+
 }  // namespace
 }  // namespace cutaway::test
