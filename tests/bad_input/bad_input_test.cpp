@@ -366,7 +366,7 @@ TEST_F(BadInput, SeismicHeaderFields65535ArePrintedUnsigned) {
     EXPECT_EQ(r.err.find("-1"), std::string::npos) << r.err;
     const fs::path format = file("format.sgy", segy_bytes(8, 65535, 8, [](int, int k) { return float(k); }));
     const ProcessResult f = cutaway({"volume", format, "--caster", "cpu", "--out", out("v.png")});
-    expect_refused(f, {"format.sgy", "'format'", "reads 65535 big-endian and 65535 little-endian"});
+    expect_refused(f, {"format.sgy", "'format'", "expected a sample format code 1-16, found 65535 big-endian and 65535 little-endian"});
     expect_no_output();
 }
 

@@ -67,7 +67,7 @@ TEST(SegyBadInput, UnsupportedFormatCodeIsNamed) {
 TEST(SegyBadInput, ZeroSamplesPerTrace) {
     const ScratchDir dir = unique_scratch("segy-zero-samples");
     const auto path = edited_cube(dir, "zero.sgy", [](std::string& b) { b[3220] = b[3221] = 0; });
-    expect_mentions(load_error(path), {"zero.sgy", "'samples' (bytes 3221-3222) is 0"});
+    expect_mentions(load_error(path), {"zero.sgy", "'samples' (bytes 3221-3222): expected a positive number of samples per trace, found 0"});
 }
 
 TEST(SegyBadInput, TruncatedLastTrace) {
@@ -87,7 +87,7 @@ TEST(SegyBadInput, CubeOverTheMemoryLimitIsRefusedBeforeAllocating) {
     const auto path = edited_cube(dir, "cube.sgy", [](std::string&) {});
     volume::SegyReadOptions options;
     options.memory_limit_bytes = 500;  // the 3x3x16 cube's samples need 576 bytes as floats
-    expect_mentions(load_error(path, options), {"cube.sgy", "beyond the memory limit"});
+    expect_mentions(load_error(path, options), {"cube.sgy", "expected at most the memory limit of", "beyond the memory limit"});
 }
 
 TEST(SegyBadInput, TracesWithoutLineNumbers) {
