@@ -100,6 +100,10 @@ void print_text(std::ostream& out, const nlohmann::json& j) {
 }
 
 int run_inspect(const InspectOptions& options) {
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& model : options.files) files.emplace_back("the model", model);
+    files.emplace_back("--cells-csv", options.cells_csv);
+    refuse_shared_outputs(files);
     using clock = std::chrono::steady_clock;
     grid::GrdeclReadOptions read_options;
     read_options.memory_limit_bytes = gib_to_bytes(options.memory_limit_gb);

@@ -33,7 +33,7 @@ CLI::Validator utf8_text();
 CLI::Validator writable_output();
 
 /// Throws std::invalid_argument when two of the (option, path) pairs given (non-empty) name the
-/// same file: one output would silently overwrite the other.
+/// same file: one output would silently overwrite the other (or an input, listed first).
 void refuse_shared_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
 
 /// The largest --memory-limit-gb accepted (GiB): far above any machine this runs on, small enough

@@ -118,7 +118,11 @@ void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options)
 }
 
 int run_render(const RenderOptions& options) {
-    refuse_shared_outputs({{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
+    // Inputs first: an output naming a model file would overwrite it.
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& model : options.model) files.emplace_back("the model", model);
+    files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
+    refuse_shared_outputs(files);
     const LoadedModel model = load_model(options.model, options.model_memory_limit_bytes());
     const grid::CornerPointGrid& grid = model.grid;
     PropertyChoice property = choose_property(grid, options);

@@ -199,7 +199,7 @@ void refuse_eye_inside(const volume::ViewGeometry& view) {
 int run_volume(VolumeOptions& o) {
     volume::TransferFunctionSettings tf;
     apply_options(o, tf);
-    refuse_shared_outputs({{"--out", o.out}, {"--stats", o.stats}});
+    refuse_shared_outputs({{"the cube", o.cube}, {"--out", o.out}, {"--stats", o.stats}});
 
     Clock::time_point start = Clock::now();
     const volume::VolumeCube cube = volume::load_segy(o.cube, o.read);

@@ -87,6 +87,9 @@ TEST_F(BadInput, SamePathForTwoOutputsIsRefusedBeforeRendering) {
     const ProcessResult r = cutaway({"render", grid, "--out", out("x.png"), "--stats", out("x.png")});
     expect_refused(r, {"--stats", "--out", "same path"});
     expect_no_output();
+    // An output naming an input would overwrite it.
+    expect_refused(cutaway({"inspect", grid, "--cells-csv", grid}), {"--cells-csv", "the model", "same path"});
+    EXPECT_EQ(fs::file_size(grid), std::string(kTinyGrid).size()) << "the model was overwritten";
 }
 
 TEST_F(BadInput, MissingOutputDirectoryIsRefusedBeforeReadingTheModel) {
