@@ -12,6 +12,7 @@
 #include "io/staged_file.h"
 
 namespace cutaway::app {
+
 std::string number_text(double value) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%g", value);

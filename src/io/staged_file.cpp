@@ -26,7 +26,7 @@ bool is_special_file(const std::filesystem::path& path) {
 
 void fail_output(const std::filesystem::path& path, int error_number) {
     const std::string reason = error_number != 0 ? std::strerror(error_number) : "unknown reason";
-    throw OutputError(path.string() + ": cannot write (" + reason + ")");
+    throw OutputError(path.string() + ": expected the output written whole, found an error: " + reason);
 }
 
 StagedFile::StagedFile(std::filesystem::path target) : target_(std::move(target)) {
@@ -45,7 +45,10 @@ StagedFile::StagedFile(std::filesystem::path target) : target_(std::move(target)
     buffer.push_back('\0');
     const int fd = ::mkstemp(buffer.data());
     if (fd < 0) fail_output(target_, errno);
-    ::fchmod(fd, 0644);  // mkstemp makes 0600; outputs are ordinary files
+    // mkstemp makes 0600; an output gets what open(..., 0666) would give under the umask.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
     ::close(fd);
     write_path_ = buffer.data();
 }

@@ -33,7 +33,8 @@ private:
     bool committed_ = false;
 };
 
-/// Throws OutputError "PATH: cannot write (REASON)" with REASON from errno (or "unknown reason").
+/// Throws OutputError "PATH: expected the output written whole, found an error: REASON" with
+/// REASON from errno (or "unknown reason").
 [[noreturn]] void fail_output(const std::filesystem::path& path, int error_number);
 
 /// Writes `bytes` to `path` through a StagedFile, checking every write and the close.
