@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -41,6 +42,13 @@ std::string format_name(int code) {
         case SEGY_SIGNED_CHAR_1_BYTE: return "int8 (8)";
         default: return "code " + std::to_string(code);
     }
+}
+
+/// Bytes as MiB with three significant digits ("0.0889 MiB", "715 MiB").
+std::string mib_text(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g MiB", double(bytes) / double(1 << 20));
+    return text;
 }
 
 /// Everything the binary header says about the trace layout.
@@ -141,17 +149,21 @@ private:
         layout_.traces = (long long)(trace_section / record);
         if (layout_.traces == 0) fail("", "traces after the headers", "none");
         // Bounded before any per-trace allocation: every sample as a float.
-        check_memory(std::uint64_t(layout_.traces) * std::uint64_t(layout_.samples) * sizeof(float), "the traces");
+        check_memory(std::uint64_t(layout_.traces) * std::uint64_t(layout_.samples), "the traces");
     }
 
     /// segyio reads the 2-byte binary header fields as signed: 65535 comes back as -1. SEG-Y
     /// defines the sample count and format code as unsigned.
     static int unsigned_field(int value) { return value & 0xFFFF; }
 
-    void check_memory(std::uint64_t bytes, const std::string& what) const {
+    /// Refuses `samples` when what a render holds for them exceeds the limit: each sample as a
+    /// float, its 8-bit level and the level's copy in the 3D texture (host memory on llvmpipe).
+    void check_memory(std::uint64_t samples, const std::string& what) const {
+        constexpr std::uint64_t bytes_per_sample = sizeof(float) + 1 + 1;
+        const std::uint64_t bytes = samples * bytes_per_sample;
         if (bytes > options_.memory_limit_bytes)
-            fail(what, "at most the memory limit of " + std::to_string(options_.memory_limit_bytes >> 20) + " MiB",
-                 std::to_string(bytes >> 20) + " MiB as floats (beyond the memory limit)");
+            fail(what, "at most the memory limit of " + mib_text(options_.memory_limit_bytes),
+                 mib_text(bytes) + " (6 bytes a sample: float, level, texture; beyond the memory limit)");
     }
 
     std::vector<TracePosition> read_positions() {
@@ -229,7 +241,7 @@ private:
             numbers->erase(std::unique(numbers->begin(), numbers->end()), numbers->end());
         }
         cube.dims = {int(cube.inline_numbers.size()), int(cube.crossline_numbers.size()), layout_.samples};
-        check_memory(std::uint64_t(cube.dims.count()) * sizeof(float),
+        check_memory(std::uint64_t(cube.dims.count()),
                      "the " + std::to_string(cube.dims.inlines) + "x" + std::to_string(cube.dims.crosslines) + "x" +
                          std::to_string(cube.dims.samples) + " cube");
         cube.samples.assign(cube.dims.count(), options_.null_value);

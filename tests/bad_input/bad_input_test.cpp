@@ -233,6 +233,19 @@ TEST_F(BadInput, RenderTargetsAreRefusedBeforeAllocating) {
     expect_no_output();
 }
 
+TEST_F(BadInput, SeismicCubeOverTheLimitIsRefusedBeforeItsSamplesAreRead) {
+    // f3.sgy: 23 x 18 x 75 = 31050 samples at 6 bytes (float, level, texture) = 182 KiB; the limit
+    // of 0.0001 GiB (105 KiB) less the 16 x 16 frame (12 KiB) leaves 93 KiB.
+    const fs::path cube = fs::path(CUTAWAY_SHARED_DATA) / "segy" / "f3.sgy";
+    const ProcessResult r = cutaway({"volume", cube, "--caster", "cpu", "--size", "16", "16", "--memory-limit-gb", "0.0001",
+                                     "--out", out("v.png")});
+    expect_refused(r, {"f3.sgy", "the traces", "expected at most the memory limit of"});
+    if (kMeasureMemory) {
+        EXPECT_LT(r.peak_rss_mb, kBaselineRssMb);
+    }
+    expect_no_output();
+}
+
 TEST_F(BadInput, LargeFileIsRefusedBeforeItIsRead) {
     // A sparse 2 GB file costs no disk; reading it whole took 2.1 GB and 12 s before.
     const fs::path big = scratch_ / "big.grdecl";

@@ -86,7 +86,7 @@ TEST(SegyBadInput, CubeOverTheMemoryLimitIsRefusedBeforeAllocating) {
     const ScratchDir dir = unique_scratch("segy-memory");
     const auto path = edited_cube(dir, "cube.sgy", [](std::string&) {});
     volume::SegyReadOptions options;
-    options.memory_limit_bytes = 500;  // the 3x3x16 cube's samples need 576 bytes as floats
+    options.memory_limit_bytes = 500;  // the 3x3x16 cube's 144 samples need 864 bytes (6 a sample)
     expect_mentions(load_error(path, options), {"cube.sgy", "expected at most the memory limit of", "beyond the memory limit"});
 }
 
