@@ -57,7 +57,8 @@ std::vector<std::string> describe(const GeneratorParameters& p) {
 std::size_t estimated_peak_bytes(const GeneratorParameters& p) {
     const double cells = double(p.dims.cell_count());
     const double columns = double(p.dims.nx) * double(p.dims.ny);
-    const double pillars = double(p.dims.pillar_count());
+    // In doubles: (NX+1) overflows int for NX = 2^31-1 (an estimate of 18446744073.7 GB).
+    const double pillars = (double(p.dims.nx) + 1) * (double(p.dims.ny) + 1);
     // Compact ZCORN (4 doubles per column and interface), pillar interface depths (up to two
     // variants per pillar), per-cell arrays: ACTNUM, PORO, PERMX, NTG, FACIES, SWAT steps, the
     // front's arrival times and queue, and the fields the properties are drawn from.

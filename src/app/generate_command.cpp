@@ -1,16 +1,17 @@
 // `cutaway generate --preset NAME | --dims NX NY NZ [options] --seed S --out FILE.grdecl`
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/parameter_options.h"
 #include "generators/generator.h"
 #include "generators/presets.h"
 #include "generators/write_progress.h"
 #include "grid/grdecl_writer.h"
+#include "io/staged_file.h"
 
 namespace cutaway::app {
 namespace {
@@ -55,21 +56,18 @@ int run_generate(const GenerateOptions& options) {
     std::ostream* log = options.quiet ? nullptr : &std::cerr;
     generators::ProgressLog progress(log);
     const generators::GeneratedModel model =
-        generators::generate_model(parameters, progress, std::size_t(options.memory_limit_gb * double(1 << 30)));
+        generators::generate_model(parameters, progress, gib_to_bytes(options.memory_limit_gb));
 
     grid::GrdeclWriteOptions write_options;
     write_options.header_comments = generators::header_lines(parameters, model.report);
-    {
-        std::ofstream file(options.out, std::ios::binary);
-        if (!file) throw std::runtime_error(options.out + ": cannot open for writing");
+    io::write_stream(options.out, [&](std::ostream& file) {
         generators::WriteProgressBuf buffer(file.rdbuf(), log);
         std::ostream out(&buffer);
         grid::write_grdecl(out, model.grid, write_options);
         out.flush();
-        file.flush();
-        if (!out || !file) throw std::runtime_error(options.out + ": write failed (disk full?)");
+        if (!out) file.setstate(std::ios::badbit);  // the staged file reports the path and reason
         progress.finished("write", std::to_string(buffer.bytes_written()) + " bytes to " + options.out);
-    }
+    });
     if (!options.quiet)
         for (const std::string& line : model.report.lines()) std::cout << line << '\n';
     return 0;
@@ -85,9 +83,8 @@ CommandAction add_generate_command(CLI::App& app) {
                     "zaphirus, petra, opharine, sapphire, scale-1m, scale-10m (options below override it)");
     cmd->add_option("--dims", options->dims, "Cells NX NY NZ")->expected(3);
     cmd->add_option("--extent", options->extent, "Model size east, north and thickness (metres)")->expected(3);
-    cmd->add_option("--out", options->out, "Output GRDECL file");
-    cmd->add_option("--memory-limit-gb", options->memory_limit_gb, "Refuse models needing more memory (GiB)")
-        ->check(CLI::PositiveNumber);
+    cmd->add_option("--out", options->out, "Output GRDECL file")->check(writable_output());
+    add_memory_limit_option(*cmd, options->memory_limit_gb, "models");
     cmd->add_flag("--quiet", options->quiet, "No progress lines or report");
     cmd->add_flag("--list-presets", options->list_presets, "Print the presets and exit");
     GenerateOptions& o = *options;

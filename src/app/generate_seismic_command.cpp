@@ -1,13 +1,16 @@
 // `cutaway generate-seismic --preset NAME | --dims NI NX NS [options] --out FILE.sgy`
+#include <cerrno>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <stdexcept>
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/parameter_options.h"
 #include "generators/seismic_model.h"
 #include "generators/seismic_segy_writer.h"
+#include "io/staged_file.h"
 
 namespace cutaway::app {
 namespace {
@@ -55,8 +58,15 @@ int run_generate_seismic(const GenerateSeismicOptions& options) {
     write.format = format_code(options.format);
     write.little_endian = options.little_endian;
     write.crossline_sorted = options.crossline_sorted;
-    const auto volume = generators::generate_seismic(p, std::uint64_t(options.memory_limit_gb * double(1 << 30)));
-    generators::write_segy(options.out, volume, write);
+    const auto volume = generators::generate_seismic(p, gib_to_bytes(options.memory_limit_gb));
+    // segyio writes the staged file; a failed write leaves no partial cube under the output name.
+    io::StagedFile staged(options.out);
+    try {
+        generators::write_segy(staged.write_path(), volume, write);
+    } catch (const std::runtime_error&) {
+        io::fail_output(options.out, errno);  // segyio's failed fwrite/fopen left errno set
+    }
+    staged.commit();
     std::cout << options.out << ": " << p.name << " " << p.inlines << " x " << p.crosslines << " x " << p.samples
               << " samples, seed " << p.seed << ", format " << options.format << (write.little_endian ? " LSB" : " MSB")
               << (write.crossline_sorted ? ", crossline sorted" : ", inline sorted") << '\n';
@@ -75,10 +85,9 @@ CommandAction add_generate_seismic_command(CLI::App& app) {
     cmd->add_option("--format", options->format, "Sample format: ibm, ieee (default), int32, int16, int8");
     cmd->add_flag("--little-endian", options->little_endian, "Write little-endian (default big-endian)");
     cmd->add_flag("--crossline-sorted", options->crossline_sorted, "Order traces crossline-major");
-    cmd->add_option("--memory-limit-gb", options->memory_limit_gb, "Refuse cubes needing more memory (GiB)")
-        ->check(CLI::PositiveNumber);
+    add_memory_limit_option(*cmd, options->memory_limit_gb, "cubes");
     cmd->add_flag("--list-presets", options->list_presets, "Print the presets and exit");
-    cmd->add_option("--out", options->out, "Output SEG-Y file");
+    cmd->add_option("--out", options->out, "Output SEG-Y file")->check(writable_output());
     GenerateSeismicOptions& o = *options;
     add_parameter_option(cmd, o.overrides, "--seed", &SeismicParameters::seed, "Random seed (same seed, same file)");
     add_parameter_option(cmd, o.overrides, "--horizons", &SeismicParameters::horizons, "Reflecting layer boundaries");

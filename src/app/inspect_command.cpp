@@ -1,14 +1,16 @@
 // `cutaway inspect MODEL.grdecl [MORE.grdecl...] [--json] [--cells-csv FILE]`
 #include <charconv>
 #include <chrono>
-#include <fstream>
+#include <ostream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "grid/grdecl_reader.h"
 #include "grid/grid_summary.h"
+#include "io/staged_file.h"
 
 namespace cutaway::app {
 namespace {
@@ -25,9 +27,7 @@ std::string shortest(double value) {
     return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
 }
 
-void write_cells_csv(const std::string& path, const grid::CornerPointGrid& grid) {
-    std::ofstream out(path);
-    if (!out) throw std::runtime_error(path + ": cannot open for writing");
+void write_cells_csv(std::ostream& out, const grid::CornerPointGrid& grid) {
     out << "i,j,k,volume,cx,cy,cz\n";
     const grid::GridDims& d = grid.dims();
     for (int k = 0; k < d.nz; ++k)
@@ -39,7 +39,6 @@ void write_cells_csv(const std::string& path, const grid::CornerPointGrid& grid)
                 out << i << ',' << j << ',' << k << ',' << shortest(grid::cell_volume(corners)) << ','
                     << shortest(c.x) << ',' << shortest(c.y) << ',' << shortest(c.z) << '\n';
             }
-    if (!out.flush()) throw std::runtime_error(path + ": write failed");
 }
 
 nlohmann::json summary_json(const InspectOptions& options, const grid::CornerPointGrid& grid,
@@ -101,9 +100,13 @@ void print_text(std::ostream& out, const nlohmann::json& j) {
 }
 
 int run_inspect(const InspectOptions& options) {
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& model : options.files) files.emplace_back("the model", model);
+    files.emplace_back("--cells-csv", options.cells_csv);
+    refuse_shared_outputs(files);
     using clock = std::chrono::steady_clock;
     grid::GrdeclReadOptions read_options;
-    read_options.memory_limit_bytes = std::size_t(options.memory_limit_gb * 1e9);
+    read_options.memory_limit_bytes = gib_to_bytes(options.memory_limit_gb);
     std::vector<std::filesystem::path> paths(options.files.begin(), options.files.end());
     std::vector<std::string> warnings;
 
@@ -119,7 +122,8 @@ int run_inspect(const InspectOptions& options) {
         std::cout << j.dump(2) << '\n';
     else
         print_text(std::cout, j);
-    if (!options.cells_csv.empty()) write_cells_csv(options.cells_csv, grid);
+    if (!options.cells_csv.empty())
+        io::write_stream(options.cells_csv, [&grid](std::ostream& out) { write_cells_csv(out, grid); });
     return 0;
 }
 
@@ -129,11 +133,13 @@ CommandAction add_inspect_command(CLI::App& app) {
     auto options = std::make_shared<InspectOptions>();
     CLI::App* cmd = app.add_subcommand("inspect", "Load GRDECL file(s) onto one grid and report dimensions, "
                                                   "active cells, faces by class and volumes");
-    cmd->add_option("model", options->files, "GRDECL file(s): the grid, then any property files")->required();
+    cmd->add_option("model", options->files, "GRDECL file(s): the grid, then any property files")
+        ->required()
+        ->check(utf8_text());
     cmd->add_flag("--json", options->json, "Print the report as JSON");
-    cmd->add_option("--cells-csv", options->cells_csv, "Write i,j,k,volume,cx,cy,cz per active cell (0-based ijk)");
-    cmd->add_option("--memory-limit-gb", options->memory_limit_gb, "Refuse grids whose arrays need more (GB)")
-        ->check(CLI::PositiveNumber);
+    cmd->add_option("--cells-csv", options->cells_csv, "Write i,j,k,volume,cx,cy,cz per active cell (0-based ijk)")
+        ->check(writable_output());
+    add_memory_limit_option(*cmd, options->memory_limit_gb, "grids whose file text and arrays need");
     return [options] { return run_inspect(*options); };
 }
 

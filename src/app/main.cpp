@@ -6,11 +6,16 @@
 #include "app/commands.h"
 #include "gl/gl_error.h"
 #include "grid/grdecl_error.h"
+#include "io/output_error.h"
 #include "volume/volume_error.h"
 
 int main(int argc, char** argv) {
     CLI::App app{"cutaway: corner-point reservoir grids, cutaway rendering and seismic ray casting benchmarks"};
     app.require_subcommand(1);
+    // Refused command lines read like every other refusal: "cutaway: --option: expected ..., found ...".
+    app.failure_message([](const CLI::App*, const CLI::Error& error) {
+        return "cutaway: " + std::string(error.what()) + "\n(cutaway SUBCOMMAND --help lists the options)\n";
+    });
     // One line per subcommand: its registration returns the action run when it is chosen.
     const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
     const cutaway::app::CommandAction generate = cutaway::app::add_generate_command(app);
@@ -22,7 +27,9 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
-        return app.exit(error);
+        // CLI11 prints "--option: expected ..., found ..."; every refused command line is bad
+        // input (exit 2) whatever CLI11's own code; --help stays 0.
+        return app.exit(error) == 0 ? 0 : 2;
     }
     try {
         if (app.got_subcommand("inspect")) return inspect();
@@ -35,6 +42,9 @@ int main(int argc, char** argv) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;
     } catch (const cutaway::volume::VolumeError& error) {
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return 2;
+    } catch (const cutaway::io::OutputError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;
     } catch (const cutaway::gl::GlError& error) {

@@ -8,6 +8,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/option_checks.h"
+
 namespace cutaway::app {
 
 template <typename Parameters>
@@ -18,7 +20,8 @@ template <typename Parameters, typename T>
 void add_parameter_option(CLI::App* command, ParameterOverrides<Parameters>& overrides, const std::string& name,
                           T Parameters::*field, const std::string& help) {
     auto value = std::make_shared<T>();
-    CLI::Option* option = command->add_option(name, *value, help);
+    // NaN and infinity never reach a generator (its own checks give each value's range).
+    CLI::Option* option = command->add_option(name, *value, help)->check(finite_number());
     overrides.push_back([option, value, field](Parameters& p) {
         if (option->count() > 0) p.*field = *value;
     });

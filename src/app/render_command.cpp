@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -11,6 +10,7 @@
 
 #include "app/commands.h"
 #include "app/model_source.h"
+#include "app/option_checks.h"
 #include "app/render_options.h"
 #include "app/run_context.h"
 #include "cutaway/cell_id_image.h"
@@ -21,6 +21,7 @@
 #include "gl/image.h"
 #include "metrics/cut_error.h"
 #include "grid/primary_selection.h"
+#include "io/staged_file.h"
 
 namespace cutaway::app {
 namespace {
@@ -89,8 +90,40 @@ json faces_drawn_json(const pipeline::FacesDrawn& drawn) {
     return faces;
 }
 
+/// A metric's value, or null with KEY_absent saying why when its denominator is zero (0/0 is not 1).
+void put_metric(json& stats, const std::string& key, double fraction, std::size_t denominator, const std::string& why_absent) {
+    if (denominator > 0) {
+        stats[key] = fraction;
+        return;
+    }
+    stats[key] = nullptr;
+    stats[key + "_absent"] = why_absent;
+}
+
+/// Refuses a camera that would see nothing: a model without extent (all pillars at one x, y, or
+/// coordinates whose extent overflows single precision) or a DIST inside the model.
+void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options) {
+    const glm::vec3 extent = frame.render_max - frame.render_min;
+    const bool finite = std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z) &&
+                        std::isfinite(frame.radius());
+    if (!finite || !(std::max(extent.x, extent.y) > 0))
+        throw std::invalid_argument(
+            options.model.front() + ": expected a model with a finite, non-zero horizontal extent in single precision " +
+            "(render units), found " + number_text(extent.x) + " x " + number_text(extent.y) + " x " + number_text(extent.z));
+    for (const auto& [option, pose] : {std::pair{"--camera", std::optional(options.camera_pose())},
+                                       std::pair{"--freeze-camera", options.freeze_pose}})
+        if (pose && pose->distance > 0 && pose->distance < frame.radius())
+            throw std::invalid_argument(std::string(option) + ": expected DIST 0 (frame the model) or at least the model's radius " +
+                                        number_text(frame.radius()) + " (outside it), found " + number_text(pose->distance));
+}
+
 int run_render(const RenderOptions& options) {
-    const LoadedModel model = load_model(options.model, options.memory_limit_bytes());
+    // Inputs first: an output naming a model file would overwrite it.
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& model : options.model) files.emplace_back("the model", model);
+    files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
+    refuse_shared_outputs(files);
+    const LoadedModel model = load_model(options.model, options.model_memory_limit_bytes());
     const grid::CornerPointGrid& grid = model.grid;
     PropertyChoice property = choose_property(grid, options);
     const std::optional<grid::IjkBox> box = choose_primary_range(grid, property, options);
@@ -98,6 +131,7 @@ int run_render(const RenderOptions& options) {
     std::unique_ptr<gl::GlContext> context = gl::create_context(options.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height);
+    check_view(renderer.frame(), options);
     renderer.set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
     renderer.select_range(property.primary_range, box);
     const std::size_t primary_count = renderer.primary_cell_count();
@@ -141,9 +175,11 @@ int run_render(const RenderOptions& options) {
     }
     if (options.metrics) {
         const pipeline::FrameMetrics m = pipeline::measure_frame(renderer, settings, camera);
-        stats["primary_exposure"] = m.exposure.fraction;
+        put_metric(stats, "primary_exposure", m.exposure.fraction, m.exposure.primary_pixels,
+                   "no primary pixel in the primaries-only frame");
         stats["primary_pixels"] = m.exposure.primary_pixels;
-        stats["context_kept"] = m.context.fraction;
+        put_metric(stats, "context_kept", m.context.fraction, m.context.uncut - std::min(m.context.uncut, m.context.kept_180),
+                   "the 180-degree-aperture frame keeps as much context as the uncut frame");
         stats["context_pixels"] = {{"cutaway", m.context.kept}, {"aperture_180", m.context.kept_180},
                                    {"uncut", m.context.uncut}};
         stats["border_line_width"] = {{"mean_px", m.border_width.mean}, {"stddev_px", m.border_width.stddev},
@@ -169,11 +205,7 @@ int run_render(const RenderOptions& options) {
     stats["configuration"] = options.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
-    if (!options.stats.empty()) {
-        std::ofstream file(options.stats);
-        if (!file) throw std::runtime_error(options.stats + ": cannot open for writing");
-        file << stats.dump(2) << '\n';
-    }
+    if (!options.stats.empty()) io::write_file(options.stats, stats.dump(2) + '\n');
     std::cout << "cutaway render: " << options.out << " (" << primary_count << " primary cells, total "
               << stats["stages_ms"]["total"].get<double>() << " ms median of " << options.repeat << ")\n";
     return 0;

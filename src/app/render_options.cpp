@@ -1,7 +1,10 @@
 #include "app/render_options.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <stdexcept>
+
+#include "app/option_checks.h"
 
 namespace cutaway::app {
 namespace {
@@ -32,6 +35,16 @@ gl::ContextOptions RenderOptions::context_options() const {
     options.debug_output = true;
 #endif
     return options;
+}
+
+std::size_t RenderOptions::memory_limit_bytes() const { return gib_to_bytes(memory_limit_gb); }
+
+std::size_t RenderOptions::render_target_bytes() const {
+    return std::size_t(width) * std::size_t(height) * render_target_bytes_per_pixel;
+}
+
+std::size_t RenderOptions::model_memory_limit_bytes() const {
+    return memory_limit_bytes() - std::min(memory_limit_bytes(), render_target_bytes());
 }
 
 pipeline::OrbitPose RenderOptions::camera_pose() const { return {camera[0], camera[1], camera[2], glm::vec3(0)}; }
@@ -78,11 +91,15 @@ nlohmann::json RenderOptions::describe() const {
 }
 
 void add_selection_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)");
-    c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2);
-    c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)");
-    c.add_option("--step", o.step, "time step of a dynamic property (0-based)");
-    c.add_option("--ijk-box", o.ijk_box, "restrict primaries to I0 J0 K0 I1 J1 K1 (0-based, inclusive)")->expected(6);
+    c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)")->check(utf8_text());
+    c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2)->check(finite_in(-FLT_MAX, FLT_MAX));
+    c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)")
+        ->check(finite_above(0, 1));
+    c.add_option("--step", o.step, "time step of a dynamic property (0-based)")->check(finite_in(0, 1e6));
+    // Dimensions are at most 1e8 (the GRDECL reader's bound); the box is checked against the grid's.
+    c.add_option("--ijk-box", o.ijk_box, "restrict primaries to I0 J0 K0 I1 J1 K1 (0-based, inclusive)")
+        ->expected(6)
+        ->check(finite_in(0, 1e8));
 }
 
 void add_frame_options(CLI::App& c, RenderOptions& o) {
@@ -91,17 +108,26 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
                  "stage 2 faces: visible (GPU culling against the frustum and the cut) | all-faces (the paper's path)");
     c.add_option("--seeds", o.seeds, "seeds of the distance-transform strategies: boxes|geometry");
     c.add_option("--border", o.border, "border lines: raycast|threshold");
-    c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels");
-    c.add_option("--line-width", o.settings.line_width_px, "cell edge line width, pixels (0: none)");
-    c.add_option("--mean-filter", o.settings.mean_filter, "mean filter size k (odd; 0 = off)");
+    c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels")
+        ->check(finite_in(1, 32, "pixels"));
+    c.add_option("--line-width", o.settings.line_width_px, "cell edge line width, pixels (0: none)")
+        ->check(finite_in(0, 16, "pixels"));
+    c.add_option("--mean-filter", o.settings.mean_filter, "mean filter size k (odd; 0 = off)")->check(finite_in(0, 65));
     c.add_option("--mean-filter-kernel", o.kernel, "full|sampled");
     c.add_option("--ssao", o.ssao, "on|off");
-    c.add_option("--aperture", o.aperture, "horizontal and vertical aperture H V: full opening angles, degrees 0..180 (each wall leans out by half; 180: flat)")->expected(2);
+    c.add_option("--aperture", o.aperture,
+                 "horizontal and vertical aperture H V: full opening angles, degrees 0..180 (each wall leans out by "
+                 "half; 180: flat)")
+        ->expected(2)
+        ->check(finite_in(0, 180, "degrees"));
     c.add_flag("--aperture-180", o.aperture_180, "remove everything between the primaries and the camera");
-    c.add_option("--back-margin", o.settings.back_margin, "back-plane margin, fraction of the model radius");
+    c.add_option("--back-margin", o.settings.back_margin, "back-plane margin, fraction of the model radius")
+        ->check(finite_in(0, 1, "of the model radius"));
     c.add_flag("--saturation", o.settings.saturation, "saturation contrast between primaries and secondaries");
     c.add_flag("--silhouette", o.settings.silhouette, "silhouette of the primary cluster");
-    c.add_option("--silhouette-width", o.settings.silhouette_width_px, "silhouette width, pixels");
+    // Each silhouette pixel looks at every pixel within the width: 64 is already a very wide band.
+    c.add_option("--silhouette-width", o.settings.silhouette_width_px, "silhouette width, pixels")
+        ->check(finite_in(1, 64, "pixels"));
     c.add_flag("--hide-internal-lines", o.settings.hide_internal_lines, "no cell edges on the cut fill");
     c.add_flag("--see-through", o.settings.see_through,
                "let the cut leave the model through its rear shell (the paper's frustums; default: the cut "
@@ -112,17 +138,32 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
 }
 
 void add_scene_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")->required();
+    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")
+        ->required()
+        ->check(utf8_text());
     add_selection_options(c, o);
     add_frame_options(c, o);
-    c.add_option("--camera", o.camera, "AZ EL DIST: degrees around the model centre; DIST 0 frames the model")->expected(3);
-    c.add_option("--freeze-camera", o.freeze_camera, "freeze view: the cut is made from this AZ EL DIST")->expected(3);
-    c.add_option("--size", o.size, "image W H, pixels")->expected(2);
-    c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)");
-    c.add_option("--memory-limit-gb", o.memory_limit_gb, "refuse models needing more memory than this");
+    // DIST in render units; 1e9 is far beyond any model's framing distance (metres, z-scaled).
+    check_orbit_values(*c.add_option("--camera", o.camera, "AZ EL DIST: degrees around the model centre; DIST 0 frames the model")
+                            ->expected(3),
+                       1e9);
+    check_orbit_values(*c.add_option("--freeze-camera", o.freeze_camera, "freeze view: the cut is made from this AZ EL DIST")
+                            ->expected(3),
+                       1e9);
+    // 32768 is the largest texture side any current GL reports; the renderer checks the context's own
+    // limit and the memory limit bounds W x H.
+    c.add_option("--size", o.size, "image W H, pixels")->expected(2)->check(finite_in(16, 32768, "pixels"));
+    // Vertical exaggerations beyond 1000 flatten every model into a line.
+    c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)")->check(finite_in(0, 1000));
+    add_memory_limit_option(c, o.memory_limit_gb, "models and render targets");
     c.callback([&o] {
         o.width = o.size[0];
         o.height = o.size[1];
+        // Render targets are reserved from the one memory budget before the model is read.
+        if (o.render_target_bytes() > o.memory_limit_bytes())
+            throw CLI::ValidationError("--size", memory_limit_problem(o.render_target_bytes(), o.memory_limit_bytes(),
+                                                                      "render targets of " + std::to_string(o.width) +
+                                                                          " x " + std::to_string(o.height) + " pixels"));
         if (o.freeze_camera.size() == 3)
             o.freeze_pose = pipeline::OrbitPose{o.freeze_camera[0], o.freeze_camera[1], o.freeze_camera[2], glm::vec3(0)};
     });
@@ -130,19 +171,21 @@ void add_scene_options(CLI::App& c, RenderOptions& o) {
 
 void add_render_options(CLI::App& c, RenderOptions& o) {
     add_scene_options(c, o);
-    c.add_option("--out", o.out, "output PNG")->required();
-    c.add_option("--stats", o.stats, "write stage times, metrics and configuration as JSON");
+    c.add_option("--out", o.out, "output PNG")->required()->check(writable_output());
+    c.add_option("--stats", o.stats, "write stage times, metrics and configuration as JSON")->check(writable_output());
     c.add_option("--cell-ids", o.cell_ids,
                  "write the final frame's Eclipse cell index + 1 per pixel as an RGBA8 PNG "
-                 "(R + 256 G + 65536 B + 16777216 A; 0 = no cell)");
+                 "(R + 256 G + 65536 B + 16777216 A; 0 = no cell)")
+        ->check(writable_output());
     c.add_flag("--baseline", o.baseline, "also time a plain shaded frame of the whole model (baseline_ms)");
     c.add_flag("!--no-metrics", o.metrics, "skip the image metrics (3 extra untimed frames)");
     c.add_flag("--exact-check", o.exact_check,
                "compare the strategy's cut (before the mean filter) with the exact cone field from the same seeds "
                "(stats.json cut_vs_exact)");
-    c.add_option("--warmup", o.warmup, "untimed frames first")->check(CLI::Range(0, 100));
-    c.add_option("--repeat", o.repeat, "timed frames; stats hold medians")->check(CLI::Range(1, 1000));
-    c.add_option("--egl-platform", o.egl_platform, "auto|surfaceless|device");
+    c.add_option("--warmup", o.warmup, "untimed frames first")->check(finite_in(0, 100));
+    c.add_option("--repeat", o.repeat, "timed frames; stats hold medians")->check(finite_in(1, 1000));
+    c.add_option("--egl-platform", o.egl_platform, "auto|surfaceless|device")
+        ->check(one_of({"auto", "surfaceless", "device"}));
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options) {
@@ -173,9 +216,15 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
         choice.external = grid.dynamic_property(name, std::size_t(step));
     } else if (values) {
         throw std::invalid_argument("--step: property " + name + " is static (dynamic ones: " + names_of(dynamics) + ")");
+    } else if (const std::vector<std::int32_t>* integers = grid.int_property(name); integers && options.step < 0) {
+        // Integer properties (FACIES, *NUM) colour and select as reals: every int32 class is exact
+        // up to 2^24, far beyond any class count.
+        choice.name = choice.label = name;
+        choice.owned.assign(integers->begin(), integers->end());
     } else {
         throw std::invalid_argument("--property " + name + ": not in the model (static: " + names_of(statics) +
-                                    "; dynamic: " + names_of(dynamics) + ")");
+                                    "; integer: " + names_of(grid.int_property_names()) + "; dynamic: " +
+                                    names_of(dynamics) + ")");
     }
     choice.colour_range = grid::active_value_range(grid, choice.values(), choice.name);
     return choice;
@@ -185,6 +234,9 @@ std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& gr
                                                  const RenderOptions& options) {
     if (!options.range.empty() && options.primary_fraction > 0)
         throw std::invalid_argument("give either --range or --primary-fraction, not both");
+    if (!options.range.empty() && !(options.range[0] <= options.range[1]))
+        throw std::invalid_argument("--range: expected LO <= HI, found " + number_text(options.range[0]) + " > " +
+                                    number_text(options.range[1]));
     if (!options.range.empty())
         property.primary_range = {options.range[0], options.range[1]};
     else
@@ -193,6 +245,15 @@ std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& gr
     std::optional<grid::IjkBox> box;
     if (options.ijk_box.size() == 6) {
         const auto& b = options.ijk_box;
+        const grid::GridDims& d = grid.dims();
+        const int size[3] = {d.nx, d.ny, d.nz};
+        for (int axis = 0; axis < 3; ++axis)
+            if (b[std::size_t(axis)] > b[std::size_t(axis) + 3] || b[std::size_t(axis) + 3] >= size[axis])
+                throw std::invalid_argument(
+                    "--ijk-box: expected 0 <= I0 <= I1 < NX, 0 <= J0 <= J1 < NY, 0 <= K0 <= K1 < NZ for the grid's " +
+                    std::to_string(d.nx) + " x " + std::to_string(d.ny) + " x " + std::to_string(d.nz) + " cells, found " +
+                    std::to_string(b[0]) + " " + std::to_string(b[1]) + " " + std::to_string(b[2]) + " " +
+                    std::to_string(b[3]) + " " + std::to_string(b[4]) + " " + std::to_string(b[5]));
         box = grid::IjkBox{b[0], b[1], b[2], b[3], b[4], b[5]};
     }
     return box;

@@ -15,6 +15,12 @@
 
 namespace cutaway::app {
 
+/// Host bytes a frame needs per pixel: the G-buffers (cut surface 36, scene 56, post 6, mean filter,
+/// seeds and the cut pyramid about 10; on llvmpipe GPU memory is host memory) plus the CPU
+/// read-backs of the image, the cell ids and the metrics' frames. Measured peaks were 145-150 bytes
+/// per pixel (render --size 8192 8192: 9.7 GB; 4096 4096: 2.5 GB).
+constexpr std::size_t render_target_bytes_per_pixel = 160;
+
 struct RenderOptions {
     std::vector<std::string> model;   ///< GRDECL file(s) loaded onto one grid, or preset:NAME
     std::string property;             ///< empty: PORO, else the first property
@@ -49,7 +55,11 @@ struct RenderOptions {
     std::string egl_platform = "auto";
     double memory_limit_gb = 16;
 
-    std::size_t memory_limit_bytes() const { return std::size_t(memory_limit_gb * double(std::size_t(1) << 30)); }
+    std::size_t memory_limit_bytes() const;
+    /// What the frame's targets and read-backs need for --size (render_target_bytes_per_pixel each).
+    std::size_t render_target_bytes() const;
+    /// The memory limit less the render targets: what reading or generating the model may use.
+    std::size_t model_memory_limit_bytes() const;
     gl::ContextOptions context_options() const;
     pipeline::OrbitPose camera_pose() const;
     /// Settings after the string options are checked (throws std::invalid_argument naming the

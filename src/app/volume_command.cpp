@@ -1,8 +1,8 @@
 // `cutaway volume CUBE.sgy [--tf grey|pseudo|layer] [--camera AZ EL DIST] [--size W H]
 //  [--caster gpu|cpu] [--step S] [--no-skip] ... --out IMG.png [--stats STATS.json]`
 #include <algorithm>
+#include <cfloat>
 #include <chrono>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -12,11 +12,13 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/option_checks.h"
 #include "app/run_context.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
 #include "gl/shader_library.h"
 #include "gl/stage_timer.h"
+#include "io/staged_file.h"
 #include "volume/cpu_ray_caster.h"
 #include "volume/gpu_ray_caster.h"
 #include "volume/segy_reader.h"
@@ -27,6 +29,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using volume::RayCastSettings;
+
+/// Host bytes a frame needs per pixel: the entry/exit float targets and the image on the GPU side
+/// (host memory on llvmpipe) and the read-back; measured peak about 45 bytes per pixel
+/// (volume --size 8192 8192: 3.0 GB).
+constexpr std::size_t volume_target_bytes_per_pixel = 48;
 
 struct VolumeOptions {
     std::string cube;
@@ -171,16 +178,33 @@ void apply_options(VolumeOptions& o, volume::TransferFunctionSettings& tf) {
     tf.kind = volume::parse_transfer_function(o.tf);
     tf.opacity = o.opacity;
     if (!o.layer.empty()) tf.layer = {o.layer[0], o.layer[1], o.layer[2], o.layer[3]};
-    o.read.memory_limit_bytes = std::uint64_t(o.memory_limit_gb * double(std::uint64_t(1) << 30));
+    // One budget: the frame's targets first, the cube's samples from what is left.
+    const std::size_t limit = gib_to_bytes(o.memory_limit_gb);
+    const std::size_t target_bytes = std::size_t(s.width) * std::size_t(s.height) * volume_target_bytes_per_pixel;
+    if (target_bytes > limit)
+        throw std::invalid_argument("--size: " + memory_limit_problem(target_bytes, limit,
+                                                                       "a frame of " + std::to_string(s.width) + " x " +
+                                                                           std::to_string(s.height) + " pixels"));
+    o.read.memory_limit_bytes = limit - target_bytes;
+}
+
+/// An eye inside the cube sees nothing but the voxels around it (a blank image in practice).
+void refuse_eye_inside(const volume::ViewGeometry& view) {
+    const glm::vec3& eye = view.eye_voxel;
+    if (eye.x >= 0 && eye.y >= 0 && eye.z >= 0 && eye.x <= view.box.x && eye.y <= view.box.y && eye.z <= view.box.z)
+        throw std::invalid_argument("--camera: expected DIST 0 (frame the cube) or an eye outside the cube, found DIST " +
+                                    number_text(view.distance) + " (the eye is inside the cube)");
 }
 
 int run_volume(VolumeOptions& o) {
     volume::TransferFunctionSettings tf;
     apply_options(o, tf);
+    refuse_shared_outputs({{"the cube", o.cube}, {"--out", o.out}, {"--stats", o.stats}});
 
     Clock::time_point start = Clock::now();
     const volume::VolumeCube cube = volume::load_segy(o.cube, o.read);
     const double load_ms = elapsed_ms(start);
+    refuse_eye_inside(volume::make_view(cube.dims, o.settings));
     if (!cube.missing_traces.empty())
         std::cerr << "cutaway: " << cube.source << ": irregular survey, " << cube.missing_traces.size()
                   << " missing traces filled with " << cube.null_value << '\n';
@@ -226,9 +250,7 @@ int run_volume(VolumeOptions& o) {
     stats["gl_renderer"] = runs.gl_renderer;
     stats["lp_num_threads"] = run_context::lp_num_threads();
     stats["git_revision"] = run_context::git_revision();
-    std::ofstream file(o.stats);
-    file << stats.dump(2) << '\n';
-    if (!file) throw std::runtime_error(o.stats + ": cannot write the stats");
+    io::write_file(o.stats, stats.dump(2) + '\n');
     return 0;
 }
 
@@ -237,33 +259,52 @@ int run_volume(VolumeOptions& o) {
 CommandAction add_volume_command(CLI::App& app) {
     auto o = std::make_shared<VolumeOptions>();
     CLI::App* cmd = app.add_subcommand("volume", "Ray cast a seismic SEG-Y cube (Duan & Li) into a PNG, headless");
-    cmd->add_option("cube", o->cube, "Post-stack SEG-Y cube")->required();
-    cmd->add_option("--out", o->out, "Output PNG")->required();
-    cmd->add_option("--stats", o->stats, "Write times, sample counts and the configuration as JSON");
-    cmd->add_option("--tf", o->tf, "Transfer function: grey, pseudo or layer");
-    cmd->add_option("--opacity", o->opacity, "grey/pseudo: opacity of the top level per voxel step (0..1)");
-    cmd->add_option("--layer", o->layer, "Layer highlight K R ALPHA_V F_V (levels; default 1 60 1 255)")->expected(4);
-    cmd->add_option("--camera", o->camera, "Azimuth, elevation (degrees), distance (voxels, 0 frames the cube)")
-        ->expected(3);
-    cmd->add_option("--size", o->size, "Image width and height (pixels)")->expected(2);
-    cmd->add_option("--caster", o->caster, "gpu (fragment shader) or cpu (reference, std::thread)");
-    cmd->add_option("--threads", o->threads, "CPU caster threads (0: all cores)");
-    cmd->add_option("--step", o->settings.step, "Sample distance along rays (voxels)");
-    cmd->add_option("--time-scale", o->settings.time_scale, "Display length of a time sample (0: automatic)");
-    cmd->add_option("--block-size", o->settings.block_size, "Empty-space block edge (voxels)");
-    cmd->add_option("--early-termination-alpha", o->settings.early_termination_alpha, "Stop rays at this opacity");
+    cmd->add_option("cube", o->cube, "Post-stack SEG-Y cube")->required()->check(utf8_text());
+    cmd->add_option("--out", o->out, "Output PNG")->required()->check(writable_output());
+    cmd->add_option("--stats", o->stats, "Write times, sample counts and the configuration as JSON")
+        ->check(writable_output());
+    cmd->add_option("--tf", o->tf, "Transfer function: grey, pseudo or layer")->check(one_of({"grey", "pseudo", "layer"}));
+    cmd->add_option("--opacity", o->opacity, "grey/pseudo: opacity of the top level per voxel step (0..1)")
+        ->check(finite_in(0, 1));
+    CLI::Option* layer =
+        cmd->add_option("--layer", o->layer, "Layer highlight K R ALPHA_V F_V (levels; default 1 60 1 255)")->expected(4);
+    layer->check(finite_in(0, 255, "", "K").application_index(0));
+    layer->check(finite_above(0, 255, "levels", "R").application_index(1));
+    layer->check(finite_in(0, 1, "", "ALPHA_V").application_index(2));
+    layer->check(finite_in(0, 255, "levels", "F_V").application_index(3));
+    // DIST in voxels: 1e6 is far beyond framing any cube the memory limit admits.
+    check_orbit_values(
+        *cmd->add_option("--camera", o->camera, "Azimuth, elevation (degrees), distance (voxels, 0 frames the cube)")
+             ->expected(3),
+        1e6);
+    cmd->add_option("--size", o->size, "Image width and height (pixels)")->expected(2)->check(finite_in(16, 8192, "pixels"));
+    cmd->add_option("--caster", o->caster, "gpu (fragment shader) or cpu (reference, std::thread)")
+        ->check(one_of({"gpu", "cpu"}));
+    // More threads than this only adds scheduling (100000 ran out of process resources).
+    cmd->add_option("--threads", o->threads, "CPU caster threads (0: all cores)")->check(finite_in(0, 256));
+    cmd->add_option("--step", o->settings.step, "Sample distance along rays (voxels)")->check(finite_above(0.01, 16, "voxels"));
+    // A time sample drawn 1000 voxels long already stretches any cube past the frame.
+    cmd->add_option("--time-scale", o->settings.time_scale, "Display length of a time sample (0: automatic)")
+        ->check(finite_in(0, 1000));
+    cmd->add_option("--block-size", o->settings.block_size, "Empty-space block edge (voxels)")->check(finite_in(2, 64, "voxels"));
+    cmd->add_option("--early-termination-alpha", o->settings.early_termination_alpha, "Stop rays at this opacity")
+        ->check(finite_above(0, 1));
     cmd->add_flag("--no-skip", o->no_skip, "No empty-space skipping");
     cmd->add_flag("--no-jitter", o->no_jitter, "Start every ray on the entry point");
     cmd->add_flag("--no-opacity-correction", o->no_opacity_correction, "Use table opacities whatever the step");
     cmd->add_flag("--no-early-termination", o->no_early_termination, "March every ray to its exit");
     cmd->add_flag("--no-colour-bar", o->no_colour_bar, "Leave the transfer-function bar out");
-    cmd->add_option("--warmup", o->warmup, "Untimed frames first");
-    cmd->add_option("--repeat", o->repeat, "Timed frames (stats report medians)");
-    cmd->add_option("--null-value", o->read.null_value, "Value for missing traces of irregular surveys");
-    cmd->add_option("--inline-byte", o->read.inline_byte, "Trace header byte of the inline number");
-    cmd->add_option("--crossline-byte", o->read.crossline_byte, "Trace header byte of the crossline number");
-    cmd->add_option("--memory-limit-gb", o->memory_limit_gb, "Refuse cubes needing more memory (GiB)")
-        ->check(CLI::PositiveNumber);
+    // The same bounds as `render`'s: repetitions beyond 1000 add nothing to a median.
+    cmd->add_option("--warmup", o->warmup, "Untimed frames first")->check(finite_in(0, 100));
+    cmd->add_option("--repeat", o->repeat, "Timed frames (stats report medians)")->check(finite_in(1, 1000));
+    cmd->add_option("--null-value", o->read.null_value, "Value for missing traces of irregular surveys")
+        ->check(finite_in(-FLT_MAX, FLT_MAX));
+    // A trace header is 240 bytes and a line number 4 of them.
+    cmd->add_option("--inline-byte", o->read.inline_byte, "Trace header byte of the inline number")
+        ->check(finite_in(1, 237));
+    cmd->add_option("--crossline-byte", o->read.crossline_byte, "Trace header byte of the crossline number")
+        ->check(finite_in(1, 237));
+    add_memory_limit_option(*cmd, o->memory_limit_gb, "frames and cubes");
     return [o] { return run_volume(*o); };
 }
 

@@ -5,8 +5,11 @@
 #include <stb/stb_image_write.h>
 
 #include <cstring>
+#include <string>
 
 #include "gl/gl_error.h"
+#include "io/output_error.h"
+#include "io/staged_file.h"
 
 namespace cutaway::gl {
 
@@ -29,8 +32,16 @@ RgbaImage read_rgba(unsigned framebuffer, unsigned attachment, int width, int he
 }
 
 void write_png(const RgbaImage& image, const std::filesystem::path& path) {
-    if (!stbi_write_png(path.string().c_str(), image.width, image.height, 4, image.pixels.data(), image.width * 4))
-        throw GlError("image " + path.string() + ": cannot be written");
+    // Encoded in memory first: stb's file writer ignores failed writes (a full disk gave an empty
+    // file and success).
+    std::string png;
+    const auto append = [](void* context, void* data, int size) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+    };
+    if (!stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.pixels.data(), image.width * 4))
+        throw io::OutputError(path.string() + ": cannot encode a " + std::to_string(image.width) + "x" +
+                              std::to_string(image.height) + " PNG");
+    io::write_file(path, png);
 }
 
 RgbaImage read_png(const std::filesystem::path& path) {

@@ -19,7 +19,8 @@ struct RgbaImage {
 /// bottom-up rows.
 RgbaImage read_rgba(unsigned framebuffer, unsigned attachment, int width, int height);
 
-/// Throws GlError naming the path if it cannot be written.
+/// Written under a temporary name and renamed (io::write_file); throws io::OutputError naming the
+/// path and the reason if it cannot be written, leaving no partial file.
 void write_png(const RgbaImage& image, const std::filesystem::path& path);
 
 /// Reads a PNG as RGBA (for golden-image tests); throws GlError naming the path.

@@ -48,6 +48,21 @@ std::string quote(std::string_view text) {
     return "'" + s + (text.size() > shown ? "...'" : "'");
 }
 
+/// Printable ASCII (no control characters, no bytes above 126): what keywords and the short
+/// strings of GRIDUNIT, MAPUNITS and GDORIENT may hold, so no other byte reaches a report.
+bool is_printable_ascii(std::string_view text) {
+    return std::all_of(text.begin(), text.end(), [](char c) {
+        const auto byte = static_cast<unsigned char>(c);
+        return byte >= 32 && byte <= 126;
+    });
+}
+
+/// A keyword as messages show it: at most 40 characters (a 20 MB "keyword" is not echoed whole).
+std::string shown_keyword(std::string_view keyword) {
+    constexpr std::size_t shown = 40;
+    return keyword.size() > shown ? std::string(keyword.substr(0, shown)) + "..." : std::string(keyword);
+}
+
 std::string describe(const Token& token) {
     switch (token.kind) {
         case TokenKind::end: return "end of file";
@@ -110,6 +125,7 @@ struct GrdeclReader::State {
     std::vector<std::filesystem::path> include_stack;  // files being read, outermost first
     std::string first_file;
     std::size_t bytes_reserved = 0;
+    std::size_t warnings_not_shown = 0;
 };
 
 namespace {
@@ -130,6 +146,8 @@ public:
             }
             if (token.kind == TokenKind::quoted || !looks_like_keyword_text(token.text))
                 fail(token.line, "", "a keyword", describe(token));
+            if (!is_printable_ascii(token.text))
+                fail(token.line, "", "a keyword of ASCII letters and digits", describe(token));
             keyword_ = std::string(token.text);
             keyword_line_ = token.line;
             dispatch();
@@ -151,13 +169,24 @@ private:
     }
 
     [[noreturn]] void fail(int line, const std::string& keyword, std::string expected, std::string found) const {
-        throw GrdeclError({file_, line, keyword, std::move(expected), std::move(found)});
+        throw GrdeclError({file_, line, shown_keyword(keyword), std::move(expected), std::move(found)});
     }
     [[noreturn]] void fail(int line, std::string expected, std::string found) const {
         fail(line, keyword_, std::move(expected), std::move(found));
     }
+    /// Keeps the first max_warnings notes and one last line counting the rest (a file of 500,000
+    /// unknown keywords printed 42 MB of warnings).
     void warn(int line, const std::string& text) {
-        state_.warnings.push_back(file_ + ":" + std::to_string(line) + ": " + text);
+        constexpr std::size_t max_warnings = 100;
+        std::vector<std::string>& warnings = state_.warnings;
+        if (warnings.size() < max_warnings) {
+            warnings.push_back(file_ + ":" + std::to_string(line) + ": " + text);
+            return;
+        }
+        ++state_.warnings_not_shown;
+        const std::string summary = std::to_string(state_.warnings_not_shown) + " more warnings not shown";
+        if (warnings.size() == max_warnings) warnings.push_back(summary);
+        else warnings.back() = summary;
     }
 
     void dispatch() {
@@ -220,6 +249,16 @@ private:
         if (!value) fail(token.line, "a number", describe(token));
         if (!std::isfinite(*value)) fail(token.line, "a finite number", describe(token));
         return *value;
+    }
+
+    /// A COORD or ZCORN value: beyond 1e9 model units (a million kilometres) cell volumes and
+    /// extents stop being meaningful, and single-precision rendering relative to the model's
+    /// centre cannot separate the cells.
+    double coordinate_value(const Token& token, std::string_view text) {
+        constexpr double max_coordinate = 1e9;
+        const double value = finite_value(token, text);
+        if (std::abs(value) > max_coordinate) fail(token.line, "a coordinate within +-1e9 model units", describe(token));
+        return value;
     }
 
     long long integer_value(const Token& token, std::string_view text) {
@@ -304,7 +343,7 @@ private:
         reserve(dims.coord_value_count() * sizeof(double), "COORD");
         state_.coord.reserve(dims.coord_value_count());
         read_values(dims.coord_value_count(), [&](const Token& token, std::string_view text, std::size_t count) {
-            state_.coord.insert(state_.coord.end(), count, finite_value(token, text));
+            state_.coord.insert(state_.coord.end(), count, coordinate_value(token, text));
         });
     }
 
@@ -314,13 +353,10 @@ private:
         reserve(ZcornStore::compact_bytes(dims), "ZCORN");
         ZcornStore& store = state_.zcorn.emplace(dims);
         read_values(dims.zcorn_value_count(), [&](const Token& token, std::string_view text, std::size_t count) {
-            const double z = finite_value(token, text);
-            for (std::size_t n = 0; n < count; ++n) {
-                const bool was_compact = store.is_compact();
-                store.push(z);
-                if (was_compact && !store.is_compact())
-                    reserve(store.bytes(), "ZCORN with gaps between layers (full layout)");
-            }
+            // Reserved before the store allocates its full layout (it holds both for a moment).
+            store.push_repeated(coordinate_value(token, text), count, [&] {
+                reserve(ZcornStore::full_bytes(dims), "ZCORN with gaps between layers (full layout)");
+            });
         });
     }
 
@@ -353,6 +389,7 @@ private:
         std::vector<std::string> strings;
         for (const auto& item : items) {
             const std::string_view s = item.second;
+            if (!is_printable_ascii(s)) fail(item.first.line, "a string of printable ASCII characters", describe(item.first));
             const auto b = s.find_first_not_of(' ');
             strings.push_back(b == std::string_view::npos ? std::string()
                                                           : std::string(s.substr(b, s.find_last_not_of(' ') - b + 1)));
@@ -398,12 +435,12 @@ private:
             state_.dynamic_properties[keyword_].push_back(std::move(values));
             return;
         }
-        if (state_.float_properties.count(keyword_)) warn(keyword_line_, keyword_ + " given again: the later values are kept");
+        if (state_.float_properties.count(keyword_)) warn(keyword_line_, shown_keyword(keyword_) + " given again: the later values are kept");
         state_.float_properties[keyword_] = std::move(values);
     }
 
     void store_int_property(std::vector<std::int32_t> values) {
-        if (state_.int_properties.count(keyword_)) warn(keyword_line_, keyword_ + " given again: the later values are kept");
+        if (state_.int_properties.count(keyword_)) warn(keyword_line_, shown_keyword(keyword_) + " given again: the later values are kept");
         state_.int_properties[keyword_] = std::move(values);
     }
 
@@ -411,7 +448,7 @@ private:
     void read_unknown() {
         const Token next = lexer_.peek();
         if (next.kind == TokenKind::end || (looks_like_keyword(next) && next.text != keyword_)) {
-            warn(keyword_line_, "unknown keyword " + keyword_ + " without data skipped");
+            warn(keyword_line_, "unknown keyword " + shown_keyword(keyword_) + " without data skipped");
             return;
         }
         const std::size_t cells = state_.dims ? state_.dims->cell_count() : 0;
@@ -440,10 +477,10 @@ private:
         if (numeric && cells > 0 && count == cells) {
             reserve(cells * sizeof(float), keyword_);
             store_float_property(std::vector<float>(values.begin(), values.end()));
-            warn(keyword_line_, "unknown keyword " + keyword_ + " read as a per-cell real property");
+            warn(keyword_line_, "unknown keyword " + shown_keyword(keyword_) + " read as a per-cell real property");
             return;
         }
-        warn(keyword_line_, "unknown keyword " + keyword_ + " (" + std::to_string(count) + " items) skipped");
+        warn(keyword_line_, "unknown keyword " + shown_keyword(keyword_) + " (" + std::to_string(count) + " items) skipped");
     }
 
     GrdeclReader::State& state_;
@@ -454,7 +491,23 @@ private:
     int keyword_line_ = 0;
 };
 
-std::string read_whole_file(const std::filesystem::path& path, std::size_t max_bytes, const std::string& from,
+/// A file's text counted against the memory limit while it is held (nested INCLUDEs add up).
+class HeldText {
+public:
+    HeldText(GrdeclReader::State& state, std::string text) : state_(state), text_(std::move(text)) {}
+    ~HeldText() { state_.bytes_reserved -= std::min(state_.bytes_reserved, text_.size()); }
+    HeldText(const HeldText&) = delete;
+    HeldText& operator=(const HeldText&) = delete;
+    std::string_view text() const { return text_; }
+
+private:
+    GrdeclReader::State& state_;
+    std::string text_;
+};
+
+/// Reads `path` whole after checking its size against what the memory limit leaves; `from` and
+/// `from_line` name the INCLUDE that asked for it (empty for a file given directly).
+std::string read_whole_file(const std::filesystem::path& path, GrdeclReader::State& state, const std::string& from,
                             int from_line) {
     auto fail = [&](std::string expected, std::string found) -> std::string {
         throw GrdeclError({from.empty() ? path.string() : from, from_line, from.empty() ? "" : "INCLUDE",
@@ -466,8 +519,13 @@ std::string read_whole_file(const std::filesystem::path& path, std::size_t max_b
                     std::filesystem::exists(path, error) ? "not a regular file" : "no such file");
     const auto size = std::filesystem::file_size(path, error);
     if (error) return fail("a readable GRDECL file " + path.string(), error.message());
-    if (size > max_bytes)
-        return fail("a file of at most " + byte_text(double(max_bytes)), path.string() + " of " + byte_text(double(size)));
+    const std::size_t limit = state.options.memory_limit_bytes;
+    const std::size_t left = limit - std::min(limit, state.bytes_reserved);
+    if (size > left)
+        return fail("a file within the memory limit of " + byte_text(double(limit)) + " (" +
+                        byte_text(double(state.bytes_reserved)) + " already held)",
+                    path.string() + " of " + byte_text(double(size)));
+    state.bytes_reserved += size;
     std::ifstream in(path, std::ios::binary);
     std::string text(size, '\0');
     if (!in.read(text.data(), std::streamsize(size)))
@@ -492,9 +550,9 @@ void KeywordParser::read_include() {
     }
     if (int(stack.size()) > state_.options.max_include_depth)
         fail(line, "INCLUDE nesting of at most " + std::to_string(state_.options.max_include_depth), "deeper nesting");
-    const std::string text = read_whole_file(path, state_.options.max_file_bytes, file_, line);
+    const HeldText text(state_, read_whole_file(path, state_, file_, line));
     state_.include_stack.push_back(canonical);
-    KeywordParser(state_, text, path.string(), path.parent_path()).run();
+    KeywordParser(state_, text.text(), path.string(), path.parent_path()).run();
     state_.include_stack.pop_back();
 }
 
@@ -507,17 +565,17 @@ GrdeclReader::GrdeclReader(GrdeclReadOptions options) : state_(std::make_unique<
 GrdeclReader::~GrdeclReader() = default;
 
 void GrdeclReader::read_file(const std::filesystem::path& path) {
-    const std::string text = read_whole_file(path, state_->options.max_file_bytes, "", 0);
+    const HeldText text(*state_, read_whole_file(path, *state_, "", 0));
     std::error_code error;
     state_->include_stack = {std::filesystem::weakly_canonical(path, error)};
     if (state_->first_file.empty()) state_->first_file = path.string();
-    KeywordParser(*state_, text, path.string(), path.parent_path()).run();
+    KeywordParser(*state_, text.text(), path.string(), path.parent_path()).run();
     state_->include_stack.clear();
 }
 
 void GrdeclReader::read_text(std::string_view text, const std::string& name, const std::filesystem::path& base_dir) {
-    if (text.size() > state_->options.max_file_bytes)
-        throw GrdeclError({name, 0, "", "text of at most " + byte_text(double(state_->options.max_file_bytes)),
+    if (text.size() > state_->options.memory_limit_bytes)
+        throw GrdeclError({name, 0, "", "text within the memory limit of " + byte_text(double(state_->options.memory_limit_bytes)),
                            byte_text(double(text.size()))});
     if (state_->first_file.empty()) state_->first_file = name;
     KeywordParser(*state_, text, name, base_dir).run();

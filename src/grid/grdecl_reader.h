@@ -15,10 +15,9 @@
 namespace cutaway::grid {
 
 struct GrdeclReadOptions {
-    /// Refuse a grid whose arrays would need more than this many bytes, before allocating.
+    /// Refuse input whose file text (each file and its nested INCLUDEs, held while read) and arrays
+    /// would need more than this many bytes, before allocating.
     std::size_t memory_limit_bytes = std::size_t(16) << 30;
-    /// Largest file (or in-memory text) accepted, bytes.
-    std::size_t max_file_bytes = std::size_t(8) << 30;
     /// Deepest INCLUDE nesting accepted (loops are detected regardless).
     int max_include_depth = 32;
     /// Whether INCLUDE may open files (off for in-memory parsing such as fuzzing).

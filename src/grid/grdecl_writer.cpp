@@ -4,6 +4,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "io/staged_file.h"
+
 namespace cutaway::grid {
 namespace {
 
@@ -116,11 +118,7 @@ void write_grdecl(std::ostream& out, const CornerPointGrid& grid, const GrdeclWr
 }
 
 void write_grdecl(const std::filesystem::path& path, const CornerPointGrid& grid, const GrdeclWriteOptions& options) {
-    std::ofstream out(path, std::ios::binary);
-    if (!out) throw std::runtime_error(path.string() + ": cannot open for writing");
-    write_grdecl(out, grid, options);
-    out.flush();
-    if (!out) throw std::runtime_error(path.string() + ": write failed (disk full?)");
+    io::write_stream(path, [&](std::ostream& out) { write_grdecl(out, grid, options); });
 }
 
 }  // namespace cutaway::grid

@@ -15,7 +15,8 @@ struct GrdeclWriteOptions {
 };
 
 void write_grdecl(std::ostream& out, const CornerPointGrid& grid, const GrdeclWriteOptions& options = {});
-/// Throws std::runtime_error naming the file when it cannot be written.
+/// Written under a temporary name and renamed; throws io::OutputError naming the file and the
+/// reason when it cannot be written (no partial file is left).
 void write_grdecl(const std::filesystem::path& path, const CornerPointGrid& grid,
                   const GrdeclWriteOptions& options = {});
 

@@ -1,5 +1,6 @@
 #include "grid/zcorn_store.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace cutaway::grid {
@@ -15,6 +16,8 @@ std::size_t ZcornStore::compact_bytes(GridDims dims) {
            sizeof(double);
 }
 
+std::size_t ZcornStore::full_bytes(GridDims dims) { return dims.zcorn_value_count() * sizeof(double); }
+
 ZcornStore ZcornStore::from_values(GridDims dims, const std::vector<double>& values) {
     if (values.size() != dims.zcorn_value_count())
         throw std::invalid_argument("ZcornStore::from_values: expected " +
@@ -29,12 +32,33 @@ void ZcornStore::push(double depth) {
     if (complete()) throw std::logic_error("ZcornStore::push: store is already complete");
     const std::size_t plane = pushed_ / plane_size_;
     const std::size_t offset = pushed_ % plane_size_;
-    if (compact_ && plane % 2 == 0 && plane > 0 &&
-        depths_[slot_of(plane) * plane_size_ + offset] != depth) {
-        expand_to_full();
-    }
+    if (push_expands(depth)) expand_to_full();
     depths_[slot_of(plane) * plane_size_ + offset] = depth;
     ++pushed_;
+}
+
+void ZcornStore::push_repeated(double depth, std::size_t count, const std::function<void()>& before_expanding) {
+    if (count > dims_.zcorn_value_count() - pushed_)
+        throw std::logic_error("ZcornStore::push_repeated: more depths than the grid has");
+    while (count > 0) {
+        const std::size_t plane = pushed_ / plane_size_;
+        const std::size_t run = std::min(count, plane_size_ - pushed_ % plane_size_);
+        double* slot = depths_.data() + slot_of(plane) * plane_size_ + pushed_ % plane_size_;
+        if (compact_ && plane % 2 == 0 && plane > 0) {
+            // A top plane stays compact while it repeats the bottom above (already in the slot).
+            const auto same = std::size_t(std::find_if(slot, slot + run, [depth](double d) { return d != depth; }) - slot);
+            pushed_ += same;
+            count -= same;
+            if (same < run) {
+                before_expanding();
+                expand_to_full();
+            }
+            continue;
+        }
+        std::fill(slot, slot + run, depth);
+        pushed_ += run;
+        count -= run;
+    }
 }
 
 void ZcornStore::expand_to_full() {

@@ -7,6 +7,7 @@
 // (slot k+b for plane 2k+b) and switches, exactly, to the full 2NZ planes the first time a top
 // differs from the bottom above it. Either way every value reads back bit-identical.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "grid/grid_dims.h"
@@ -23,8 +24,15 @@ public:
     /// Bytes the compact layout needs (the minimum a load allocates for ZCORN).
     static std::size_t compact_bytes(GridDims dims);
 
+    /// Bytes the full layout needs (2NZ planes).
+    static std::size_t full_bytes(GridDims dims);
+
     /// Appends the next depth in Eclipse order (x fastest, then y, then plane).
     void push(double depth);
+    /// Appends `count` copies of `depth` (an `N*value` item) a plane at a time, at memory speed;
+    /// calls `before_expanding()` (which may throw, leaving the store compact) just before
+    /// switching to the full layout allocates full_bytes().
+    void push_repeated(double depth, std::size_t count, const std::function<void()>& before_expanding);
     std::size_t pushed() const { return pushed_; }
     bool complete() const { return pushed_ == dims_.zcorn_value_count(); }
 
@@ -48,6 +56,11 @@ public:
 
 private:
     std::size_t slot_of(std::size_t plane) const { return compact_ ? (plane + 1) / 2 : plane; }
+    /// Whether push(depth) would switch the store to the full layout.
+    bool push_expands(double depth) const {
+        const std::size_t plane = pushed_ / plane_size_;
+        return compact_ && plane % 2 == 0 && plane > 0 && depths_[slot_of(plane) * plane_size_ + pushed_ % plane_size_] != depth;
+    }
     void expand_to_full();
 
     GridDims dims_{};

@@ -7,13 +7,13 @@
 
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <stdexcept>
 
 #include "app/run_context.h"
 #include "gl/gl_error.h"
 #include "gl/image.h"
+#include "io/staged_file.h"
 #include "viewer/camera_controller.h"
 #include "viewer/option_tokens.h"
 #include "viewer/timing_overlay.h"
@@ -83,7 +83,7 @@ ViewerApp::ViewerApp(ViewerOptions options)
     info_.gl_renderer = gl::gl_renderer() + " (" + window_.platform() + ")";
     window_fb_width_ = window_.framebuffer_width();
     window_fb_height_ = window_.framebuffer_height();
-    scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.memory_limit_bytes()),
+    scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.model_memory_limit_bytes()),
                                            shaders_, state_.options, render_width(), render_height());
     if (scene_->primary_count() == 0)
         info_.message = "no cell lies in the primary range; showing the context only";
@@ -317,9 +317,7 @@ void ViewerApp::write_stats() const {
     stats["git_revision"] = run_context::git_revision();
     stats["timing"] = "loop_ms: wall clock of one viewer loop pass (events, script, panel, render when something "
                       "changed, blit, swap); stages_ms: fenced wall-clock stage times of the cutaway frame";
-    std::ofstream file(options_.stats);
-    if (!file) throw std::runtime_error(options_.stats + ": cannot open for writing");
-    file << stats.dump(2) << '\n';
+    io::write_file(options_.stats, stats.dump(2) + '\n');
 }
 
 }  // namespace cutaway::viewer

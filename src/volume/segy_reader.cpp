@@ -3,6 +3,8 @@
 #include <segyio/segy.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <map>
 #include <memory>
@@ -42,6 +44,13 @@ std::string format_name(int code) {
     }
 }
 
+/// Bytes as MiB with three significant digits ("0.0889 MiB", "715 MiB").
+std::string mib_text(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g MiB", double(bytes) / double(1 << 20));
+    return text;
+}
+
 /// Everything the binary header says about the trace layout.
 struct TraceLayout {
     int format = 0;
@@ -73,71 +82,88 @@ private:
         int offset = 0;
     };
 
-    [[noreturn]] void fail(const std::string& what) const { throw VolumeError(path_.string() + ": " + what); }
+    /// "PATH: WHERE: expected EXPECTED, found FOUND" (WHERE names the header field, trace or sample).
+    [[noreturn]] void fail(const std::string& where, const std::string& expected, const std::string& found) const {
+        std::string text = path_.string();
+        text.append(": ");
+        if (!where.empty()) text.append(where).append(": ");
+        text.append("expected ").append(expected).append(", found ").append(found);
+        throw VolumeError(text);
+    }
 
     void open() {
         std::error_code error;
         const auto status = std::filesystem::status(path_, error);
-        if (!std::filesystem::exists(status)) fail("no such file");
-        if (!std::filesystem::is_regular_file(status)) fail("not a regular file");
+        if (!std::filesystem::exists(status)) fail("", "a SEG-Y file", "no such file");
+        if (!std::filesystem::is_regular_file(status)) fail("", "a SEG-Y file", "not a regular file");
         file_bytes_ = std::uint64_t(std::filesystem::file_size(path_, error));
-        if (error) fail("cannot read its size (" + error.message() + ")");
+        if (error) fail("", "a readable SEG-Y file", "its size unreadable (" + error.message() + ")");
         if (file_bytes_ < std::uint64_t(kHeadersBytes))
-            fail("not a SEG-Y file: " + std::to_string(file_bytes_) + " bytes, shorter than the " +
-                 std::to_string(kHeadersBytes) + "-byte text and binary headers");
+            fail("not a SEG-Y file", "the " + std::to_string(kHeadersBytes) + "-byte text and binary headers at least",
+                 std::to_string(file_bytes_) + " bytes");
         file_.reset(segy_open(path_.c_str(), "rb"));
-        if (!file_) fail("cannot open for reading");
+        if (!file_) fail("", "a readable SEG-Y file", "one that cannot be opened for reading");
     }
 
     /// Reads the binary header, trying big-endian first and then little-endian: the byte order
     /// whose format code is a SEG-Y code wins.
     void read_layout() {
         char binary[SEGY_BINARY_HEADER_SIZE];
-        if (segy_binheader(file_.get(), binary) != SEGY_OK) fail("cannot read the binary header");
-        layout_.format = segy_format(binary);
+        if (segy_binheader(file_.get(), binary) != SEGY_OK) fail("binary header", "400 readable bytes", "a read error");
+        layout_.format = unsigned_field(segy_format(binary));
         const int big_endian_code = layout_.format;
         if (!is_known_format(layout_.format)) {
             segy_set_format(file_.get(), int(SEGY_IBM_FLOAT_4_BYTE) | int(SEGY_LSB));
-            if (segy_binheader(file_.get(), binary) != SEGY_OK) fail("cannot read the binary header");
-            layout_.format = segy_format(binary);
+            if (segy_binheader(file_.get(), binary) != SEGY_OK) fail("binary header", "400 readable bytes", "a read error");
+            layout_.format = unsigned_field(segy_format(binary));
             layout_.little_endian = true;
         }
         if (!is_known_format(layout_.format))
-            fail("not a SEG-Y file: binary header field 'format' (bytes 3225-3226) reads " +
-                 std::to_string(big_endian_code) + " big-endian and " + std::to_string(layout_.format) +
-                 " little-endian, expected a sample format code 1-16");
+            fail("not a SEG-Y file: binary header field 'format' (bytes 3225-3226)", "a sample format code 1-16",
+                 std::to_string(big_endian_code) + " big-endian and " + std::to_string(layout_.format) + " little-endian");
         if (!is_supported_format(layout_.format))
-            fail("binary header field 'format' (bytes 3225-3226): sample format " + format_name(layout_.format) +
-                 " is not supported, expected 1 (IBM float), 2 (int32), 3 (int16), 5 (IEEE float) or 8 (int8)");
+            fail("binary header field 'format' (bytes 3225-3226)",
+                 "1 (IBM float), 2 (int32), 3 (int16), 5 (IEEE float) or 8 (int8)",
+                 "sample format " + format_name(layout_.format) + ", which is not supported");
         segy_set_format(file_.get(), layout_.format | (layout_.little_endian ? SEGY_LSB : SEGY_MSB));
 
-        layout_.samples = segy_samples(binary);
+        layout_.samples = unsigned_field(segy_samples(binary));
         if (layout_.samples <= 0)
-            fail("binary header field 'samples' (bytes 3221-3222) is " + std::to_string(layout_.samples) +
-                 ", expected a positive number of samples per trace");
+            fail("binary header field 'samples' (bytes 3221-3222)", "a positive number of samples per trace",
+                 std::to_string(layout_.samples));
         layout_.trace0 = segy_trace0(binary);
         if (layout_.trace0 < kHeadersBytes || std::uint64_t(layout_.trace0) > file_bytes_)
-            fail("binary header field 'ext_headers' (bytes 3505-3506) puts the first trace at byte " +
-                 std::to_string(layout_.trace0) + ", but the file has " + std::to_string(file_bytes_) + " bytes");
+            fail("binary header field 'ext_headers' (bytes 3505-3506)",
+                 "the first trace within the file's " + std::to_string(file_bytes_) + " bytes",
+                 "it at byte " + std::to_string(layout_.trace0));
         layout_.trace_bytes = segy_trsize(layout_.format, layout_.samples);
 
         const std::uint64_t trace_section = file_bytes_ - std::uint64_t(layout_.trace0);
         const std::uint64_t record = std::uint64_t(SEGY_TRACE_HEADER_SIZE) + std::uint64_t(layout_.trace_bytes);
         if (trace_section % record != 0)
-            fail("truncated or not a whole number of traces: " + std::to_string(trace_section) +
-                 " bytes after the headers (first trace at byte " + std::to_string(layout_.trace0) +
-                 ") are not a multiple of the " + std::to_string(record) + "-byte trace (240-byte header + " +
-                 std::to_string(layout_.samples) + " samples of " + format_name(layout_.format) + ")");
+            fail("truncated or not a whole number of traces",
+                 "a multiple of the " + std::to_string(record) + "-byte trace (240-byte header + " +
+                     std::to_string(layout_.samples) + " samples of " + format_name(layout_.format) + ")",
+                 std::to_string(trace_section) + " bytes after the headers (first trace at byte " +
+                     std::to_string(layout_.trace0) + ")");
         layout_.traces = (long long)(trace_section / record);
-        if (layout_.traces == 0) fail("no traces after the headers");
+        if (layout_.traces == 0) fail("", "traces after the headers", "none");
         // Bounded before any per-trace allocation: every sample as a float.
-        check_memory(std::uint64_t(layout_.traces) * std::uint64_t(layout_.samples) * sizeof(float), "the traces");
+        check_memory(std::uint64_t(layout_.traces) * std::uint64_t(layout_.samples), "the traces");
     }
 
-    void check_memory(std::uint64_t bytes, const std::string& what) const {
+    /// segyio reads the 2-byte binary header fields as signed: 65535 comes back as -1. SEG-Y
+    /// defines the sample count and format code as unsigned.
+    static int unsigned_field(int value) { return value & 0xFFFF; }
+
+    /// Refuses `samples` when what a render holds for them exceeds the limit: each sample as a
+    /// float, its 8-bit level and the level's copy in the 3D texture (host memory on llvmpipe).
+    void check_memory(std::uint64_t samples, const std::string& what) const {
+        constexpr std::uint64_t bytes_per_sample = sizeof(float) + 1 + 1;
+        const std::uint64_t bytes = samples * bytes_per_sample;
         if (bytes > options_.memory_limit_bytes)
-            fail(what + " need " + std::to_string(bytes >> 20) + " MiB as floats, beyond the memory limit of " +
-                 std::to_string(options_.memory_limit_bytes >> 20) + " MiB");
+            fail(what, "at most the memory limit of " + mib_text(options_.memory_limit_bytes),
+                 mib_text(bytes) + " (6 bytes a sample: float, level, texture; beyond the memory limit)");
     }
 
     std::vector<TracePosition> read_positions() {
@@ -145,14 +171,15 @@ private:
         char header[SEGY_TRACE_HEADER_SIZE];
         for (std::size_t t = 0; t < positions.size(); ++t) {
             if (segy_traceheader(file_.get(), int(t), header, layout_.trace0, layout_.trace_bytes) != SEGY_OK)
-                fail("cannot read the header of trace " + std::to_string(t));
+                fail("trace " + std::to_string(t), "a readable 240-byte header", "a read error");
             std::int32_t value = 0;
             if (segy_get_field(header, options_.inline_byte, &value) != SEGY_OK)
-                fail("trace header byte " + std::to_string(options_.inline_byte) + " is not a SEG-Y field (inline)");
+                fail("trace header byte " + std::to_string(options_.inline_byte) + " (inline)", "the first byte of a SEG-Y field",
+                     "none starting there");
             positions[t].inline_number = value;
             if (segy_get_field(header, options_.crossline_byte, &value) != SEGY_OK)
-                fail("trace header byte " + std::to_string(options_.crossline_byte) +
-                     " is not a SEG-Y field (crossline)");
+                fail("trace header byte " + std::to_string(options_.crossline_byte) + " (crossline)",
+                     "the first byte of a SEG-Y field", "none starting there");
             positions[t].crossline_number = value;
             segy_get_field(header, SEGY_TR_OFFSET, &value);
             positions[t].offset = value;
@@ -180,14 +207,14 @@ private:
                                   " share inline " + std::to_string(second.inline_number) + " crossline " +
                                   std::to_string(second.crossline_number);
         if (first.offset != second.offset)
-            fail("pre-stack data: " + where + " (offsets " + std::to_string(first.offset) + " and " +
-                 std::to_string(second.offset) + ", trace header byte 37); expected a post-stack cube with one trace "
-                 "per inline/crossline");
+            fail("pre-stack data", "a post-stack cube with one trace per inline/crossline",
+                 where + " (offsets " + std::to_string(first.offset) + " and " + std::to_string(second.offset) +
+                     ", trace header byte 37)");
         if (!any_number)
-            fail("every trace has inline (trace header byte " + std::to_string(options_.inline_byte) +
-                 ") and crossline (byte " + std::to_string(options_.crossline_byte) +
-                 ") 0; expected survey line numbers");
-        fail("duplicate traces: " + where + "; expected one trace per inline/crossline");
+            fail("trace header bytes " + std::to_string(options_.inline_byte) + " (inline) and " +
+                     std::to_string(options_.crossline_byte) + " (crossline)",
+                 "survey line numbers", "0 and 0 in every trace");
+        fail("duplicate traces", "one trace per inline/crossline", where);
     }
 
     VolumeCube make_grid(const std::vector<TracePosition>& positions) {
@@ -214,7 +241,7 @@ private:
             numbers->erase(std::unique(numbers->begin(), numbers->end()), numbers->end());
         }
         cube.dims = {int(cube.inline_numbers.size()), int(cube.crossline_numbers.size()), layout_.samples};
-        check_memory(std::uint64_t(cube.dims.count()) * sizeof(float),
+        check_memory(std::uint64_t(cube.dims.count()),
                      "the " + std::to_string(cube.dims.inlines) + "x" + std::to_string(cube.dims.crosslines) + "x" +
                          std::to_string(cube.dims.samples) + " cube");
         cube.samples.assign(cube.dims.count(), options_.null_value);
@@ -230,11 +257,13 @@ private:
         std::vector<char> raw(std::size_t(layout_.trace_bytes) + 4);
         for (std::size_t t = 0; t < positions.size(); ++t) {
             if (segy_readtrace(file_.get(), int(t), raw.data(), layout_.trace0, layout_.trace_bytes) != SEGY_OK)
-                fail("cannot read the samples of trace " + std::to_string(t));
+                fail("trace " + std::to_string(t), "readable samples", "a read error");
             segy_to_native(layout_.format, layout_.samples, raw.data());
             const int i = index_of(cube.inline_numbers, positions[t].inline_number);
             const int x = index_of(cube.crossline_numbers, positions[t].crossline_number);
-            to_floats(raw.data(), &cube.samples[cube.index(i, x, 0)]);
+            float* trace = &cube.samples[cube.index(i, x, 0)];
+            to_floats(raw.data(), trace);
+            refuse_non_finite(trace, t);
             cube.trace_present[std::size_t(i) * std::size_t(cube.dims.crosslines) + std::size_t(x)] = 1;
         }
         for (int i = 0; i < cube.dims.inlines; ++i)
@@ -242,6 +271,15 @@ private:
                 if (!cube.trace_present[std::size_t(i) * std::size_t(cube.dims.crosslines) + std::size_t(x)])
                     cube.missing_traces.emplace_back(cube.inline_numbers[std::size_t(i)],
                                                      cube.crossline_numbers[std::size_t(x)]);
+    }
+
+    /// NaN or infinite amplitudes (IEEE or IBM float formats) have no place on the 256 levels: one
+    /// +inf made every other level 0 and the render blank.
+    void refuse_non_finite(const float* trace, std::size_t trace_index) const {
+        for (int k = 0; k < layout_.samples; ++k)
+            if (!std::isfinite(trace[k]))
+                fail("trace " + std::to_string(trace_index) + " sample " + std::to_string(k), "a finite amplitude",
+                     std::isnan(trace[k]) ? "NaN" : trace[k] > 0 ? "+inf" : "-inf");
     }
 
     /// Native samples of the file's format (after segy_to_native) to floats.

@@ -14,7 +14,8 @@ struct SegyReadOptions {
     float null_value = 0;             ///< written into missing traces
     int inline_byte = 189;            ///< trace header byte of the inline number (SEG-Y rev 1)
     int crossline_byte = 193;         ///< trace header byte of the crossline number
-    /// Refuse cubes whose float samples would need more than this many bytes, before allocating.
+    /// Refuse cubes whose samples would need more than this many bytes (6 a sample: the float,
+    /// its 8-bit level and the 3D texture's copy), before allocating.
     std::uint64_t memory_limit_bytes = std::uint64_t(4) << 30;
 };
 

@@ -68,3 +68,39 @@ TEST(ZcornStore, CornerDepthUsesTheZcornCornerOrder) {
 TEST(ZcornStore, RefusesTheWrongNumberOfValues) {
     EXPECT_THROW(ZcornStore::from_values(GridDims{1, 1, 1}, std::vector<double>(7)), std::invalid_argument);
 }
+
+// N*value items go in a plane at a time: the store must read back exactly what value-by-value
+// pushes give, and ask before (and only before) allocating the full layout.
+TEST(ZcornStore, RepeatedPushesMatchSinglePushesAndWarnBeforeExpanding) {
+    const GridDims d{2, 3, 4};  // planes of 24 depths
+    const std::vector<std::pair<double, std::size_t>> stacked = {{0, 30}, {1, 42}, {1, 24}, {2, 48}, {3, 48}};
+    const std::vector<std::pair<double, std::size_t>> gapped = {{0, 24}, {1, 30}, {1.5, 42}, {2, 96}};
+    for (const auto& items : {stacked, gapped}) {
+        std::vector<double> values;
+        for (const auto& [depth, count] : items) values.insert(values.end(), count, depth);
+        ZcornStore store(d);
+        int warnings = 0;
+        bool compact_when_warned = false;
+        for (const auto& [depth, count] : items)
+            store.push_repeated(depth, count, [&] {
+                ++warnings;
+                compact_when_warned = store.is_compact();
+            });
+        const ZcornStore single = ZcornStore::from_values(d, values);
+        EXPECT_EQ(store.is_compact(), single.is_compact());
+        EXPECT_EQ(warnings, single.is_compact() ? 0 : 1);
+        if (warnings) {
+            EXPECT_TRUE(compact_when_warned);
+        }
+        expect_reads_back(store, values);
+    }
+}
+
+TEST(ZcornStore, RefusalBeforeExpandingLeavesTheStoreCompact) {
+    const GridDims d{2, 2, 2};  // planes of 16 depths; plane 2 differs from plane 1
+    ZcornStore store(d);
+    store.push_repeated(0, 32, [] {});
+    EXPECT_THROW(store.push_repeated(5, 16, [] { throw std::length_error("over the limit"); }), std::length_error);
+    EXPECT_TRUE(store.is_compact());
+    EXPECT_EQ(store.bytes(), ZcornStore::compact_bytes(d));
+}

@@ -1,0 +1,50 @@
+#pragma once
+// Validators every numeric and output option of `cutaway` shares (CLI11 runs them while parsing,
+// before any file is read): a value must be a finite number inside the option's real range, an
+// output must be writable where it is named, and two outputs of one run must differ. A refusal
+// reads "--option: expected ..., found ..." and exits with code 2.
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace cutaway::app {
+
+/// `value` as printf's %g writes it (1e-09, 0.5, 2.5e+06): how messages show numbers.
+std::string number_text(double value);
+
+/// A finite number in [low, high] (`unit` appended to the range in the message, e.g. "pixels";
+/// `name` names the value within a multi-value option, e.g. "EL").
+CLI::Validator finite_in(double low, double high, const std::string& unit = "", const std::string& name = "");
+/// A finite number in (low, high]: for quantities that must be strictly positive.
+CLI::Validator finite_above(double low, double high, const std::string& unit = "", const std::string& name = "");
+/// Any finite number (for options whose range the consumer checks).
+CLI::Validator finite_number();
+/// Checks AZ EL DIST of an orbit camera option: AZ in [-360, 360] degrees, EL in [-89, 89] degrees
+/// (straight up or down has no defined image "up"), DIST in [0, max_distance].
+void check_orbit_values(CLI::Option& option, double max_distance);
+/// One of `names` ("expected one of a|b|c, found 'x'").
+CLI::Validator one_of(const std::vector<std::string>& names);
+/// Text that is valid UTF-8: input paths end up in JSON reports, which hold UTF-8 only.
+CLI::Validator utf8_text();
+/// A path an output can be written to (checked before any work: see io::output_path_problem).
+CLI::Validator writable_output();
+
+/// Throws std::invalid_argument when two of the (option, path) pairs given (non-empty) name the
+/// same file: one output would silently overwrite the other (or an input, listed first).
+void refuse_shared_outputs(const std::vector<std::pair<std::string, std::string>>& outputs);
+
+/// The largest --memory-limit-gb accepted (GiB): far above any machine this runs on, small enough
+/// that the byte count cannot overflow.
+constexpr double max_memory_limit_gib = 1 << 20;
+/// GiB (2^30 bytes, as every `cutaway` command reads --memory-limit-gb) to bytes.
+std::size_t gib_to_bytes(double gib);
+/// Registers --memory-limit-gb on `command`, bound to `gib` and checked to be in (0, max].
+void add_memory_limit_option(CLI::App& command, double& gib, const std::string& what);
+
+/// "expected WHAT within the memory limit of L GiB (--memory-limit-gb), found N GiB needed".
+std::string memory_limit_problem(std::size_t bytes_needed, std::size_t limit_bytes, const std::string& what);
+
+}  // namespace cutaway::app

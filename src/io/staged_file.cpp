@@ -1,0 +1,124 @@
+#include "io/staged_file.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "io/output_error.h"
+
+namespace cutaway::io {
+namespace {
+
+/// True when `path` names an existing file that is not a regular file (device, FIFO, socket).
+bool is_special_file(const std::filesystem::path& path) {
+    struct stat status {};
+    return ::stat(path.c_str(), &status) == 0 && !S_ISREG(status.st_mode) && !S_ISDIR(status.st_mode);
+}
+
+}  // namespace
+
+void fail_output(const std::filesystem::path& path, int error_number) {
+    const std::string reason = error_number != 0 ? std::strerror(error_number) : "unknown reason";
+    throw OutputError(path.string() + ": expected the output written whole, found an error: " + reason);
+}
+
+StagedFile::StagedFile(std::filesystem::path target) : target_(std::move(target)) {
+    if (target_.empty()) throw OutputError("output path: expected a file name, found an empty path");
+    if (is_special_file(target_)) {
+        in_place_ = true;
+        write_path_ = target_;
+        return;
+    }
+    const std::filesystem::path directory = target_.has_parent_path() ? target_.parent_path() : ".";
+    // Appended piece by piece: GCC 12 reports a false -Wrestrict on "literal" + std::string.
+    std::string hidden_name(".");
+    hidden_name.append(target_.filename().string()).append(".partial-XXXXXX");
+    const std::string name = (directory / hidden_name).string();
+    std::vector<char> buffer(name.begin(), name.end());
+    buffer.push_back('\0');
+    const int fd = ::mkstemp(buffer.data());
+    if (fd < 0) fail_output(target_, errno);
+    // mkstemp makes 0600; an output gets what open(..., 0666) would give under the umask.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+    ::close(fd);
+    write_path_ = buffer.data();
+}
+
+StagedFile::~StagedFile() {
+    if (!in_place_ && !committed_) ::unlink(write_path_.c_str());
+}
+
+void StagedFile::commit() {
+    if (in_place_) return;
+    if (::rename(write_path_.c_str(), target_.c_str()) != 0) fail_output(target_, errno);
+    committed_ = true;
+}
+
+void write_file(const std::filesystem::path& path, std::string_view bytes) {
+    StagedFile staged(path);
+    const int fd = ::open(staged.write_path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+    if (fd < 0) fail_output(path, errno);
+    std::size_t written = 0;
+    while (written < bytes.size()) {
+        const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            const int error_number = n < 0 ? errno : ENOSPC;
+            ::close(fd);
+            fail_output(path, error_number);
+        }
+        written += std::size_t(n);
+    }
+    if (::close(fd) != 0) fail_output(path, errno);
+    staged.commit();
+}
+
+void write_stream(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
+    StagedFile staged(path);
+    std::ofstream out(staged.write_path(), std::ios::binary | std::ios::trunc);
+    if (!out) fail_output(path, errno);
+    write(out);
+    if (!out) fail_output(path, errno);  // a write failed: its errno is still the last one set
+    errno = 0;
+    out.flush();
+    if (!out) fail_output(path, errno);
+    out.close();
+    if (!out) fail_output(path, errno);
+    staged.commit();
+}
+
+std::string output_path_problem(const std::filesystem::path& path) {
+    if (path.empty()) return "expected a file name, found an empty path";
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) return "expected a file, found the directory '" + path.string() + "'";
+    if (is_special_file(path)) {  // written in place (/dev/null): only the file itself must be writable
+        if (::access(path.c_str(), W_OK) == 0) return {};
+        return "expected a writable file, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+    }
+    const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
+    if (!std::filesystem::is_directory(directory, error)) {
+        std::string text("expected a file in an existing directory, found '");
+        text.append(path.string()).append("' (");
+        if (std::filesystem::exists(directory, error))
+            text.append("'").append(directory.string()).append("' is not a directory)");
+        else
+            text.append("no directory '").append(directory.string()).append("')");
+        return text;
+    }
+    if (::access(directory.c_str(), W_OK | X_OK) != 0)
+        return "expected a file in a writable directory, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+    if (std::filesystem::exists(path, error) && ::access(path.c_str(), W_OK) != 0)
+        return "expected a writable file, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+    return {};
+}
+
+}  // namespace cutaway::io
