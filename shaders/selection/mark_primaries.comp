@@ -7,7 +7,7 @@ layout(local_size_x = 64) in;
 
 uniform vec2 value_range;
 uniform bool use_box;
-uniform uvec3 box_min, box_max;  // inclusive IJK box
+uniform ivec3 box_min, box_max;  // inclusive IJK box (may reach outside the grid, or be empty)
 
 void main() {
     uint word = word_index();
@@ -19,7 +19,7 @@ void main() {
         float value = texelFetch(cell_value_texels, int(compact)).r;
         bool primary = value >= value_range.x && value <= value_range.y;
         if (primary && use_box) {
-            uvec3 c = cell_ijk(eclipse_of_compact[compact]);
+            ivec3 c = ivec3(cell_ijk(eclipse_of_compact[compact]));
             primary = all(greaterThanEqual(c, box_min)) && all(lessThanEqual(c, box_max));
         }
         if (primary) bits |= 1u << b;

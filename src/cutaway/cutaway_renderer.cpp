@@ -137,7 +137,7 @@ void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::o
 
 void CutawayRenderer::sync_selection_to_cpu() {
     if (selection_on_cpu_) return;
-    primary_flags_ = primary_flags();
+    primary_flags_ = pipeline::primary_flags(layout_, buffers_.read_primary_bits(), grid_.cell_count());
     primary_centroid_ = primary_centroid(grid_, frame_, primary_flags_);
     selection_on_cpu_ = true;
 }
@@ -150,10 +150,6 @@ void CutawayRenderer::selection_changed() {
 }
 
 std::size_t CutawayRenderer::primary_cell_count() const { return buffers_.primary_cells().count; }
-
-std::vector<std::uint8_t> CutawayRenderer::primary_flags() const {
-    return pipeline::primary_flags(layout_, buffers_.read_primary_bits(), grid_.cell_count());
-}
 
 const FaceBuffer& CutawayRenderer::secondary_face_list() {
     if (!secondary_list_built_) {

@@ -83,8 +83,6 @@ public:
     /// inside `box`). Uploads nothing: a range change costs a few compute passes.
     void select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box = std::nullopt);
     std::size_t primary_cell_count() const;
-    /// The current primary set, one flag per Eclipse cell (read back from the GPU).
-    std::vector<std::uint8_t> primary_flags() const;
     /// Bytes the last frame's cut-surface strategy read back from the GPU (stats.json readback_bytes).
     std::size_t cut_readback_bytes() const { return cut_readback_bytes_; }
 

@@ -20,6 +20,9 @@ inline void set_uniform(const Program& p, const char* name, const glm::ivec2& v)
 inline void set_uniform(const Program& p, const char* name, const glm::uvec2& v) {
     glProgramUniform2ui(p.id(), p.uniform(name), v.x, v.y);
 }
+inline void set_uniform(const Program& p, const char* name, const glm::ivec3& v) {
+    glProgramUniform3i(p.id(), p.uniform(name), v.x, v.y, v.z);
+}
 inline void set_uniform(const Program& p, const char* name, const glm::uvec3& v) {
     glProgramUniform3ui(p.id(), p.uniform(name), v.x, v.y, v.z);
 }

@@ -65,12 +65,8 @@ void GpuPrimarySelection::select_range(GridBuffers& grid, const grid::PrimaryRan
     gl::set_uniform(mark_, "value_range", glm::vec2(range.min, range.max));
     gl::set_uniform(mark_, "use_box", box.has_value());
     if (box) {
-        // An empty or negative box selects nothing: its clamped corners cross.
-        const auto clamp_low = [](int v) { return unsigned(std::max(v, 0)); };
-        const auto clamp_high = [](int v) { return v < 0 ? 0u : unsigned(v); };
-        const bool empty = box->i1 < 0 || box->j1 < 0 || box->k1 < 0;
-        gl::set_uniform(mark_, "box_min", empty ? glm::uvec3(1) : glm::uvec3(clamp_low(box->i0), clamp_low(box->j0), clamp_low(box->k0)));
-        gl::set_uniform(mark_, "box_max", empty ? glm::uvec3(0) : glm::uvec3(clamp_high(box->i1), clamp_high(box->j1), clamp_high(box->k1)));
+        gl::set_uniform(mark_, "box_min", glm::ivec3(box->i0, box->j0, box->k0));
+        gl::set_uniform(mark_, "box_max", glm::ivec3(box->i1, box->j1, box->k1));
     }
     bind_inputs(grid);
     dispatch_words(mark_);
@@ -82,13 +78,12 @@ void GpuPrimarySelection::select_bits(GridBuffers& grid, const std::vector<std::
         throw std::invalid_argument("primary bits: " + std::to_string(bits.size()) + " words, expected " +
                                     std::to_string(word_count(active_cells_)));
     grid.upload_primary_bits(bits);
+    bind_inputs(grid);
     build_lists(grid);
 }
 
 void GpuPrimarySelection::build_lists(GridBuffers& grid) {
-    bind_inputs(grid);
     dispatch_words(count_);
-    word_counts_.bind_base(GL_SHADER_STORAGE_BUFFER, word_counts_binding);
     totals_.bind_base(GL_SHADER_STORAGE_BUFFER, totals_binding);
     scan_.use();
     glDispatchCompute(1, 1, 1);
@@ -96,7 +91,6 @@ void GpuPrimarySelection::build_lists(GridBuffers& grid) {
     std::uint32_t totals[2] = {0, 0};
     glGetNamedBufferSubData(totals_.id(), 0, sizeof(totals), totals);
     grid.resize_primary_lists(totals[0], totals[1]);
-    bind_inputs(grid);
     grid.primary_cells().buffer.bind_base(GL_SHADER_STORAGE_BUFFER, primary_cells_out_binding);
     grid.primary_faces().buffer.bind_base(GL_SHADER_STORAGE_BUFFER, primary_faces_out_binding);
     dispatch_words(write_);

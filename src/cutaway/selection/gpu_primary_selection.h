@@ -25,7 +25,7 @@ public:
     std::size_t memory_bytes() const;
 
 private:
-    /// Counts, scans and writes the primary cell and face lists from the bits on the GPU.
+    /// Counts, scans and writes the primary cell and face lists from the bits on the GPU (inputs bound).
     void build_lists(GridBuffers& grid);
     void bind_inputs(const GridBuffers& grid) const;
     void dispatch_words(const gl::Program& program) const;
