@@ -20,7 +20,7 @@ def _count(value):
 
 
 def markdown(document):
-    """The table: per model and our draw mode, VTK's and our frame times and faces, and the ratios."""
+    """The table: per model and our configuration, VTK's and our frame times and faces, and the ratios."""
     context, proto = document["context"], document["protocol"]
     width, height = proto["size"]
     lines = [
@@ -35,8 +35,10 @@ def markdown(document):
         "surface filter + cell edges (drawn polygons as faces); VTK clip = clip by the plane through the centre facing "
         "the camera + surface filter, re-executed every frame. Ours plain = `baseline_ms`, ours cutaway = "
         "`stages_ms.total` (1% primaries, 9x9 mean filter, SSAO, ray-cast borders). Faces: ours as stats.json "
-        "reports them (`baseline_faces_drawn`; `faces_drawn` per stage), n/a where it does not.", "",
-        "| model | active cells | draw | VTK surface ms | VTK faces | VTK clip ms | VTK clip faces | ours plain ms | "
+        "reports them (`baseline_faces_drawn`; `faces_drawn` per stage), n/a where it does not. Ours: `visible` = the "
+        "default renderer (GPU-culled faces, one frustum per IJK box of adjacent primaries); `per-cell frustum` = the "
+        "paper's one frustum per primary; `all-faces` = every face of every cell (the paper's path).", "",
+        "| model | active cells | ours | VTK surface ms | VTK faces | VTK clip ms | VTK clip faces | ours plain ms | "
         "ours plain faces | ours cutaway ms | ours cutaway faces | plain / VTK surface | cutaway / VTK clip |",
         "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|"]
     for model in document["models"]:

@@ -26,14 +26,13 @@ Protocol:
 - Ours: `cutaway render FILE --camera AZ EL DIST --size W H --baseline` with the main job's
   settings (scripts/run-main.sh: 1% primaries by PORO, 9x9 mean filter, SSAO on, ray-cast
   borders); `baseline_ms` is the plain frame, `stages_ms.total` the cutaway frame (fenced wall
-  clock medians). Once per `--draw` mode when `cutaway render --help` offers --draw, else once.
+  clock medians). Once per configuration (CONFIGURATIONS: default, per-cell frustum, paper path).
 - Rounds interleave the sides (VTK surface + clip, then ours per draw mode, repeated); each round
   gives medians over its timed frames after warm-up; reported: median over rounds, min, max, and
   ours/VTK ratios (plain frame vs surface, cutaway vs clip).
 """
 import json
 import os
-import re
 import statistics
 import subprocess
 import sys
@@ -55,7 +54,11 @@ MODELS = ("petra", "sapphire")
 SEED = 1  # generator_parameters.h default: the seed preset:NAME renders with
 DEFAULT_POSE = (35.0, 30.0)  # render_options.h: --camera 35 30 0
 PAPER_FLAGS = ("--primary-fraction", "0.01", "--mean-filter", "9", "--ssao", "on", "--border", "raycast")
-DRAW_MODES = ("visible", "all-faces")
+# Ours, by name (the column "draw" of the table): the default renderer (visible faces, one frustum
+# per IJK box of adjacent primaries), the same with the paper's one frustum per primary, and the
+# paper's path (every face of every cell, one frustum per primary).
+CONFIGURATIONS = (("visible", ()), ("visible, per-cell frustum", ("--strategy", "frustum")),
+                  ("all-faces, per-cell frustum (paper)", ("--draw", "all-faces", "--strategy", "frustum")))
 # Volume agreement of the VTK grid with `cutaway inspect` (relative): the numpy trilinear volume is
 # the same formula as ours (only rounding differs); vtkMeshQuality's hexahedron volume and
 # vtkCellSizeFilter's (tetrahedra) approximate a trilinear cell with non-planar faces.
@@ -70,17 +73,9 @@ def protocol(quick):
     return {"size": [1920, 1080], "vtk_warmup": 2, "vtk_repeat": 5, "ours_warmup": 1, "ours_repeat": 5, "rounds": 3}
 
 
-def draw_modes(exp):
-    """The `--draw` modes `cutaway render` offers, or [None] (one run, the default) without --draw."""
-    help_text = subprocess.run([exp.cutaway, "render", "--help"], capture_output=True, text=True).stdout
-    if not re.search(r"--draw\b", help_text):
-        return [None]
-    return [mode for mode in DRAW_MODES if mode in help_text] or [None]
-
-
-def draw_name(draw):
-    """A draw mode's name in the results: the mode, or "default" when `cutaway render` has no --draw."""
-    return draw or "default"
+def configurations():
+    """Our configurations, by name: flags added to PAPER_FLAGS."""
+    return dict(CONFIGURATIONS)
 
 
 def run_json(command, out_path, **kwargs):
@@ -150,13 +145,13 @@ def camera_flags(camera):
     return ["--camera", camera["azimuth_deg"], camera["elevation_deg"], repr(camera["distance"])]
 
 
-def ours_round(exp, grdecl, camera, proto, draw):
+def ours_round(exp, grdecl, camera, proto, flags):
     """One `cutaway render --baseline` run; returns plain and cutaway medians (ms), face counts as
     stats.json gives them (`baseline_faces_drawn`, `faces_drawn` per stage; None when absent) and
     the renderer string."""
     stats = exp.render(grdecl, *camera_flags(camera), "--size", *camera["size"], *PAPER_FLAGS, "--baseline",
                        "--warmup", proto["ours_warmup"], "--repeat", proto["ours_repeat"],
-                       *(["--draw", draw] if draw else []))
+                       *flags)
     return {"plain_ms": stats["baseline_ms"], "cutaway_ms": stats["stages_ms"]["total"],
             "stages_ms": stats["stages_ms"], "plain_faces_drawn": stats.get("baseline_faces_drawn"),
             "cutaway_faces_drawn": stats.get("faces_drawn"),
@@ -233,12 +228,12 @@ def measure_model(exp, preset, proto, draws, scratch):
     checks = check_model(inspected, prepared)
     camera = prepared["camera"]
     camera_result = camera_check(exp, grdecl, prepared_path, camera, scratch)
-    vtk_rounds, ours_rounds = [], {draw_name(d): [] for d in draws}
+    vtk_rounds, ours_rounds = [], {name: [] for name in draws}
     for index in range(proto["rounds"]):
         print(f"{preset}: round {index + 1}/{proto['rounds']}", flush=True)
         vtk_rounds.append(vtk_round(prepared_path, scratch, proto["vtk_warmup"], proto["vtk_repeat"]))
-        for draw in draws:
-            ours_rounds[draw_name(draw)].append(ours_round(exp, grdecl, camera, proto, draw))
+        for name, flags in draws.items():
+            ours_rounds[name].append(ours_round(exp, grdecl, camera, proto, flags))
     vtk = summarise_vtk(vtk_rounds)
     ours = {draw: summarise_ours(rounds) for draw, rounds in ours_rounds.items()}
     ratios = {draw: {"plain_over_vtk_surface": s["plain_ms"]["median"] / vtk["surface"]["median"],
@@ -268,12 +263,12 @@ def machine_context(exp, models):
 def compute(exp):
     """Measures every model; returns the whole result document."""
     proto = protocol(exp.quick)
-    draws = draw_modes(exp)
+    draws = configurations()
     with tempfile.TemporaryDirectory(prefix="cutaway-peer-vtk-") as scratch:
         models = [measure_model(exp, preset, proto, draws, scratch) for preset in MODELS]
     return {"experiment": "peer_vtk", "quick": exp.quick,
             "protocol": {**proto, "camera_pose_deg": DEFAULT_POSE, "fovy_deg": models[0]["camera"]["fovy_deg"],
-                         "ours_flags": list(PAPER_FLAGS) + ["--baseline"], "draw_modes": [draw_name(d) for d in draws],
+                         "ours_flags": list(PAPER_FLAGS) + ["--baseline"], "configurations": {name: list(flags) for name, flags in draws.items()},
                          "vtk_modes": {"surface": "vtkDataSetSurfaceFilter, PORO cell colours, edges on; executes once",
                                        "clip": "vtkTableBasedClipDataSet (plane through the centre, normal away from "
                                                "the eye) -> vtkDataSetSurfaceFilter, re-executed every frame"},

@@ -16,7 +16,10 @@ enum class SeedSource { boxes, geometry };
 enum class DrawMode { visible, all_faces };
 
 struct FrameSettings {
-    std::string strategy = "frustum";      ///< cut-surface strategy (cut_surface_registry.h)
+    /// Cut-surface strategy (cut_surface_registry.h). The default draws one frustum per IJK box of
+    /// adjacent primaries (the same exposure as the paper's per-cell `frustum`, a fraction of its
+    /// cost); `frustum` is the paper's one frustum per primary cell (Table 1 uses it).
+    std::string strategy = "frustum-clusters";
     DrawMode draw = DrawMode::visible;
     SeedSource seeds = SeedSource::boxes;  ///< seeds of the distance-transform strategies
     /// Full opening angles (the paper's aperture), degrees 0..180: each wall leans out by half of
