@@ -29,6 +29,7 @@ const std::vector<GeneratorParameters>& presets() {
         preset("sapphire", {124, 84, 20}, 80, 150, 6),
         preset("scale-1m", {200, 250, 20}, 50, 150, 8),
         preset("scale-10m", {500, 500, 40}, 25, 200, 10),
+        preset("scale-100m", {1000, 1000, 100}, 15, 300, 12),
     };
     return table;
 }

@@ -9,7 +9,8 @@
 namespace cutaway::generators {
 
 /// zaphirus (30x50x5 = 7,500), petra (39x42x20 = 32,760), opharine (95x80x10 = 76,000),
-/// sapphire (124x84x20 = 208,320), scale-1m (200x250x20), scale-10m (500x500x40).
+/// sapphire (124x84x20 = 208,320), scale-1m (200x250x20), scale-10m (500x500x40),
+/// scale-100m (1000x1000x100).
 const std::vector<GeneratorParameters>& presets();
 
 /// The preset called `name`; throws std::invalid_argument listing the known names.

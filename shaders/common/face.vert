@@ -1,9 +1,11 @@
 #version 450 core
-// One face record -> two triangles (6 vertices, gl_VertexID / 6 = face). Each vertex rebuilds
+// One face record -> one indexed quad (src/cutaway/quad_draw.h: 4 vertices, gl_VertexID / 4 =
+// face, gl_VertexID % 4 = corner, triangles (0, 1, 2), (0, 2, 3)). Each vertex rebuilds
 // the face's 4 corners so it can give the window-space distance to the quad's 4 edges
 // (single-pass wireframe, Baerentzen et al. 2006) without a geometry shader.
 // Variants: CULL_FRONT_INTERIOR (secondaries: an interior face seen from outside its cell always
-// coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries, shell).
+// coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries, shell),
+// CULL_FRONT (the rear shell: only faces seen from inside their cell).
 #include "common/grid.glsl"
 #include "common/face_frame.glsl"
 
@@ -19,8 +21,6 @@ out FaceVaryings {
 #include "common/face_varyings.glsl"
 } v_out;
 
-const uint triangle_corner[6] = uint[](0u, 1u, 2u, 0u, 2u, 3u);
-
 vec2 to_window(vec4 clip) { return (clip.xy / clip.w * 0.5 + 0.5) * viewport_size; }
 
 float distance_to_line(vec2 p, vec2 a, vec2 b) {
@@ -30,7 +30,7 @@ float distance_to_line(vec2 p, vec2 a, vec2 b) {
 }
 
 void main() {
-    uint record = faces[gl_VertexID / 6];
+    uint record = faces[gl_VertexID / 4];
     uint cell = face_record_cell(record);
     uint side = face_record_side(record);
     uint face_class = face_record_class(record);
@@ -45,8 +45,11 @@ void main() {
 #ifdef CULL_BACK
     culled = culled || back_facing;
 #endif
+#ifdef CULL_FRONT
+    culled = culled || !back_facing;
+#endif
     if (culled) {
-        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // all 6 vertices outside the clip volume
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // all 4 vertices outside the clip volume
         v_out.world_position = vec3(0.0);
         v_out.face_normal = vec3(0.0, 0.0, 1.0);
         v_out.compact_cell = 0u;
@@ -62,7 +65,7 @@ void main() {
         clip[k] = view_projection * vec4(q[k], 1.0);
         in_front = in_front && clip[k].w > 0.0;
     }
-    uint me = triangle_corner[gl_VertexID % 6];
+    uint me = uint(gl_VertexID) % 4u;
     vec4 distances = vec4(1e6);
     if (in_front) {
         vec2 w[4];

@@ -2,8 +2,8 @@
 // (src/cutaway/grid_layout.h describes the buffers). Render space: X east, Y north, Z up.
 // Read through buffer textures (src/cutaway/grid_buffers.h says why).
 layout(binding = 8) uniform samplerBuffer pillar_texels;        // top, bottom per pillar
-layout(binding = 9) uniform samplerBuffer corner_depth_texels;  // 8 per active cell
-layout(binding = 10) uniform usamplerBuffer cell_texels;        // pillar of corner 0 | flip bit
+layout(binding = 9) uniform samplerBuffer corner_depth_texels;  // per depth plane slot and (i, j): 4 corner depths
+layout(binding = 10) uniform usamplerBuffer cell_texels;        // pillar of corner 0 | flip bit, top-face texel
 layout(binding = 11) uniform samplerBuffer cell_value_texels;  // property per active cell
 
 uniform uvec2 grid_size;  // NX, NY
@@ -28,10 +28,13 @@ const uint face_corners[24] = uint[](0u, 4u, 6u, 2u,  1u, 3u, 7u, 5u,  0u, 1u, 5
 vec3 corner_position(uint compact_cell, uint corner) {
     // The pillar index is stored, not derived from the cell's I, J: integer division is slow on
     // SIMD CPUs (llvmpipe) and this runs 4 times per vertex.
-    uint pillar = (texelFetch(cell_texels, int(compact_cell)).r & 0x7fffffffu) + ((corner >> 1) & 1u) * (grid_size.x + 1u) + (corner & 1u);
+    uvec2 record = texelFetch(cell_texels, int(compact_cell)).rg;
+    uint pillar = (record.r & 0x7fffffffu) + ((corner >> 1) & 1u) * (grid_size.x + 1u) + (corner & 1u);
     vec3 top = texelFetch(pillar_texels, int(2u * pillar)).xyz;
     vec3 bottom = texelFetch(pillar_texels, int(2u * pillar + 1u)).xyz;
-    float z = texelFetch(corner_depth_texels, int(8u * compact_cell + corner)).r;
+    // The bottom face's plane slot follows the top's (grid_buffers.cpp upload_corner_planes).
+    uint plane_texel = record.g + (corner >> 2) * grid_size.x * grid_size.y;
+    float z = texelFetch(corner_depth_texels, int(plane_texel))[corner & 3u];
     float dz = bottom.z - top.z;
     vec2 xy = dz == 0.0 ? top.xy : top.xy + ((z - top.z) / dz) * (bottom.xy - top.xy);
     return vec3(xy, up_sign * z * z_scale);

@@ -18,10 +18,6 @@ layout(std430, binding = 8) readonly buffer BrickBoxes { vec4 brick_boxes[]; }; 
 layout(std430, binding = 9) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 2 bits per side
 layout(std430, binding = 10) readonly buffer PrimaryBits { uint primary_bits[]; };  // 1 bit per compact cell
 layout(std430, binding = 11) buffer Culling {
-    uint vertex_count;  // DrawArraysIndirectCommand
-    uint instance_count;
-    uint first_vertex;
-    uint base_instance;
     uint bricks_culled;
     uint cells_culled;
     uint cells_behind;

@@ -80,7 +80,7 @@ CommandAction add_generate_command(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("generate", "Write a synthetic faulted corner-point model (GRDECL) with PORO, "
                                                    "PERMX, NTG, FACIES and SWAT time steps");
     cmd->add_option("--preset", options->preset,
-                    "zaphirus, petra, opharine, sapphire, scale-1m, scale-10m (options below override it)");
+                    "zaphirus, petra, opharine, sapphire, scale-1m, scale-10m, scale-100m (options below override it)");
     cmd->add_option("--dims", options->dims, "Cells NX NY NZ")->expected(3);
     cmd->add_option("--extent", options->extent, "Model size east, north and thickness (metres)")->expected(3);
     cmd->add_option("--out", options->out, "Output GRDECL file")->check(writable_output());

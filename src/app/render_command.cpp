@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 
 #include "app/commands.h"
 #include "app/model_source.h"
@@ -123,17 +124,23 @@ int run_render(const RenderOptions& options) {
     for (const std::string& model : options.model) files.emplace_back("the model", model);
     files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
     refuse_shared_outputs(files);
-    const LoadedModel model = load_model(options.model, options.model_memory_limit_bytes());
+    LoadedModel model = load_model(options.model, options.model_memory_limit_bytes());
+    PropertyChoice property = choose_property(model.grid, options);
+    const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
+    // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
+    if (property.external) property.owned = *std::exchange(property.external, nullptr);
+    model.grid.clear_properties();
     const grid::CornerPointGrid& grid = model.grid;
-    PropertyChoice property = choose_property(grid, options);
-    const std::optional<grid::IjkBox> box = choose_primary_range(grid, property, options);
 
     std::unique_ptr<gl::GlContext> context = gl::create_context(options.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
+    const auto setup_started = std::chrono::steady_clock::now();
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height);
     check_view(renderer.frame(), options);
     renderer.set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
     renderer.select_range(property.primary_range, box);
+    glFinish();
+    const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
     const std::size_t primary_count = renderer.primary_cell_count();
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
@@ -200,6 +207,7 @@ int run_render(const RenderOptions& options) {
     stats["gpu_memory_bytes"] = renderer.gpu_memory_bytes();
     stats["model"] = model.description;
     stats["model_load_s"] = model.load_seconds;
+    stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set
     stats["property"] = {{"name", property.label}, {"primary_range", {property.primary_range.min, property.primary_range.max}},
                          {"colour_range", {property.colour_range.min, property.colour_range.max}}};
     stats["configuration"] = options.describe();

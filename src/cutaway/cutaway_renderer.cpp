@@ -88,7 +88,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       frame_(make_model_frame(grid, z_scale)),
       layout_(layout_for(grid, frame_)),
       grid_(grid),
-      buffers_(layout_, grid.dims(), frame_),
+      buffers_(layout_, grid.zcorn(), frame_),
       visible_(make_visible_faces(shaders, grid, layout_, frame_)),
       selection_(shaders, layout_, grid.dims()),
       colour_map_(make_colour_map_texture()),
@@ -104,8 +104,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       ssao_(shaders),
       composite_(shaders),
       colour_bar_(shaders) {
-    // The GPU holds the corner geometry now; the CPU copy (36 bytes per active cell) is not read again.
-    layout_.corner_depths = {};
+    // The GPU holds the pillars now; the CPU copy is not read again.
     layout_.pillars = {};
     set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));
     set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1});
@@ -162,10 +161,10 @@ const FaceBuffer& CutawayRenderer::secondary_face_list() {
 
 void CutawayRenderer::draw_secondary_faces(DrawMode draw) {
     if (draw == DrawMode::visible) {
-        visible_.draw();
+        visible_.draw(buffers_);
         return;
     }
-    GridBuffers::draw_faces(secondary_face_list());
+    buffers_.draw_faces(secondary_face_list());
 }
 
 CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
@@ -304,8 +303,8 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode dr
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         const auto submit = [&] {
-            if (draw == DrawMode::visible) visible_.draw();
-            else GridBuffers::draw_faces(buffers_.all_faces());
+            if (draw == DrawMode::visible) visible_.draw(buffers_);
+            else buffers_.draw_faces(buffers_.all_faces());
         };
         secondary_.draw(context, submit, plain, cut_, camera);
     });

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <span>
+#include <stdexcept>
+#include <string>
 
 namespace cutaway::pipeline {
 
@@ -17,26 +19,72 @@ std::vector<std::uint32_t> packed_face_classes(const GridLayout& layout) {
         for (std::size_t s = 0; s < 6; ++s) packed[c] |= std::uint32_t(layout.face_classes[6 * c + s]) << (2 * s);
     return packed;
 }
-/// Per active cell as the shaders read it (common/grid.glsl): the pillar index of its corner 0
-/// (bits 0-30) and the flip bit of GridLayout::cells (bit 31).
-std::vector<std::uint32_t> gpu_cell_records(const GridLayout& layout, const grid::GridDims& dims) {
-    std::vector<std::uint32_t> records(layout.cells.size());
-    for (std::size_t c = 0; c < records.size(); ++c) {
+/// Depth plane slots of the corner-plane texels: the store's own (ZcornStore), NZ+1 when compact
+/// (a layer's bottom is the next layer's top), 2NZ otherwise.
+std::size_t corner_plane_slots(const grid::ZcornStore& zcorn) {
+    const int nz = zcorn.dims().nz;
+    return std::size_t(zcorn.is_compact() ? nz + 1 : 2 * nz);
+}
+
+/// Per active cell as the shaders read it (common/grid.glsl), two words: the pillar index of its
+/// corner 0 (bits 0-30) with the flip bit of GridLayout::cells (bit 31), and the corner-plane texel
+/// of its top face (its bottom face's is one slot, NX * NY texels, further).
+std::vector<std::uint32_t> gpu_cell_records(const GridLayout& layout, const grid::ZcornStore& zcorn) {
+    const grid::GridDims& dims = zcorn.dims();
+    const std::size_t nx = std::size_t(dims.nx), ny = std::size_t(dims.ny);
+    const std::size_t slots_per_layer = zcorn.is_compact() ? 1 : 2;
+    std::vector<std::uint32_t> records(2 * layout.cells.size());
+    for (std::size_t c = 0; c < layout.cells.size(); ++c) {
         const std::size_t eclipse = layout.cells[c] & 0x7fffffffu;
-        const std::size_t i = eclipse % std::size_t(dims.nx), j = eclipse / std::size_t(dims.nx) % std::size_t(dims.ny);
-        records[c] = std::uint32_t(j * std::size_t(dims.nx + 1) + i) | (layout.cells[c] & 0x80000000u);
+        const std::size_t i = eclipse % nx, j = eclipse / nx % ny, k = eclipse / (nx * ny);
+        records[2 * c] = std::uint32_t(j * (nx + 1) + i) | (layout.cells[c] & 0x80000000u);
+        records[2 * c + 1] = std::uint32_t((slots_per_layer * k * ny + j) * nx + i);
     }
     return records;
 }
+
+/// ZCORN as the shaders read it: one RGBA32F texel per depth plane slot and cell column (i, j),
+/// slot-major then j, i, holding the depths of the column's 4 corners in that plane (component
+/// bit 0: i+1, bit 1: j+1), centred model units. Filled a slot at a time, so the CPU never holds
+/// more than one plane. Shared layer interfaces are stored once (16 bytes per cell for a compact
+/// ZCORN instead of 32 for 8 depths per cell) and the texel count stays within the GL limit up
+/// to ~134M cells. Throws std::invalid_argument when it does not.
+gl::Buffer upload_corner_planes(const grid::ZcornStore& zcorn, double centre_z) {
+    const grid::GridDims& dims = zcorn.dims();
+    const std::size_t slots = corner_plane_slots(zcorn), columns = std::size_t(dims.nx) * std::size_t(dims.ny);
+    GLint64 max_texels = 0;
+    glGetInteger64v(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+    if (slots * columns > std::size_t(max_texels))
+        throw std::invalid_argument("model of " + std::to_string(dims.nx) + "x" + std::to_string(dims.ny) + "x" +
+                                    std::to_string(dims.nz) + " cells needs " + std::to_string(slots * columns) +
+                                    " corner-plane texels (" + (zcorn.is_compact() ? "compact" : "full") +
+                                    " ZCORN); GL_MAX_TEXTURE_BUFFER_SIZE is " + std::to_string(max_texels));
+    const std::size_t slot_bytes = 4 * columns * sizeof(float);
+    gl::Buffer buffer(slots * slot_bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    std::vector<float> plane(4 * columns);
+    for (std::size_t s = 0; s < slots; ++s) {
+        // Compact: slot s < NZ is layer s's top, slot NZ the last layer's bottom. Full: slot 2k + b.
+        const bool compact = zcorn.is_compact();
+        const int k = compact ? int(std::min<std::size_t>(s, std::size_t(dims.nz - 1))) : int(s / 2);
+        const int bottom = (compact ? s == std::size_t(dims.nz) : s % 2 == 1) ? 4 : 0;
+        for (int j = 0; j < dims.ny; ++j)
+            for (int i = 0; i < dims.nx; ++i)
+                for (int c = 0; c < 4; ++c)
+                    plane[4 * (std::size_t(j) * std::size_t(dims.nx) + std::size_t(i)) + std::size_t(c)] =
+                        float(zcorn.corner_depth(i, j, k, c | bottom) - centre_z);
+        glNamedBufferSubData(buffer.id(), GLintptr(s * slot_bytes), GLsizeiptr(slot_bytes), plane.data());
+    }
+    return buffer;
+}
 }  // namespace
 
-GridBuffers::GridBuffers(const GridLayout& layout, const grid::GridDims& dims, const ModelFrame& frame)
+GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn, const ModelFrame& frame)
     : layout_(layout),
-      grid_size_(unsigned(dims.nx), unsigned(dims.ny)),
+      grid_size_(unsigned(zcorn.dims().nx), unsigned(zcorn.dims().ny)),
       frame_(frame),
       pillars_(gl::Buffer::from(std::span<const float>(layout.pillars))),
-      corner_depths_(gl::Buffer::from(std::span<const float>(layout.corner_depths))),
-      cells_(gl::Buffer::from(std::span<const std::uint32_t>(gpu_cell_records(layout, dims)))),
+      corner_planes_(upload_corner_planes(zcorn, frame.centre.z)),
+      cells_(gl::Buffer::from(std::span<const std::uint32_t>(gpu_cell_records(layout, zcorn)))),
       values_(layout.cells.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT),
       cell_face_classes_(gl::Buffer::from(std::span<const std::uint32_t>(packed_face_classes(layout)))),
       primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
@@ -44,8 +92,8 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::GridDims& dims, c
       shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
       outer_(FaceBuffer::from(pipeline::outer_faces(layout))),
       pillar_texels_(pillars_, GL_RGBA32F),
-      corner_depth_texels_(corner_depths_, GL_R32F),
-      cell_texels_(cells_, GL_R32UI),
+      corner_plane_texels_(corner_planes_, GL_RGBA32F),
+      cell_texels_(cells_, GL_RG32UI),
       value_texels_(values_, GL_R32F) {}
 
 const FaceBuffer& GridBuffers::all_faces() const {
@@ -55,7 +103,7 @@ const FaceBuffer& GridBuffers::all_faces() const {
 
 std::size_t GridBuffers::memory_bytes() const {
     std::size_t bytes = 0;
-    for (const gl::Buffer* b : std::initializer_list<const gl::Buffer*>{&pillars_, &corner_depths_, &cells_, &values_, &cell_face_classes_, &primary_bits_,
+    for (const gl::Buffer* b : std::initializer_list<const gl::Buffer*>{&pillars_, &corner_planes_, &cells_, &values_, &cell_face_classes_, &primary_bits_,
                                 &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &shell_.buffer, &outer_.buffer, &all_.buffer})
         bytes += b->size_bytes();
     return bytes;
@@ -91,7 +139,7 @@ void GridBuffers::resize_primary_lists(std::size_t cells, std::size_t faces) {
 
 void GridBuffers::bind_geometry() const {
     pillar_texels_.bind(pillar_texture_unit);
-    corner_depth_texels_.bind(corner_depth_texture_unit);
+    corner_plane_texels_.bind(corner_depth_texture_unit);
     cell_texels_.bind(cell_texture_unit);
     value_texels_.bind(value_texture_unit);
 }
@@ -101,14 +149,14 @@ void GridBuffers::bind_culling_inputs() const {
     primary_bits_.bind_base(GL_SHADER_STORAGE_BUFFER, primary_bits_binding);
 }
 
-void GridBuffers::draw_faces(const FaceBuffer& faces) {
+void GridBuffers::draw_faces(const FaceBuffer& faces) const {
     if (faces.count == 0) return;
-    // gl_VertexID / 6 indexes the bound range; chunks of 2^27 faces keep 6 x count within GLsizei.
-    constexpr std::size_t chunk_faces = std::size_t(1) << 27;
-    for (std::size_t first = 0; first < faces.count; first += chunk_faces) {
-        const std::size_t count = std::min(chunk_faces, faces.count - first);
+    // gl_VertexID / 4 indexes the bound range; ranges of 2^27 faces keep 4 x count within GLint.
+    constexpr std::size_t range_faces = std::size_t(1) << 27;
+    for (std::size_t first = 0; first < faces.count; first += range_faces) {
+        const std::size_t count = std::min(range_faces, faces.count - first);
         glBindBufferRange(GL_SHADER_STORAGE_BUFFER, faces_binding, faces.buffer.id(), GLintptr(first * 4), GLsizeiptr(count * 4));
-        glDrawArrays(GL_TRIANGLES, 0, GLsizei(6 * count));
+        quads_.draw(count);
     }
 }
 

@@ -4,7 +4,9 @@
 #include <glm/glm.hpp>
 
 #include "cutaway/grid_layout.h"
+#include "cutaway/quad_draw.h"
 #include "gl/gl_objects.h"
+#include "grid/zcorn_store.h"
 
 namespace cutaway::pipeline {
 
@@ -23,8 +25,9 @@ struct FaceBuffer {
 
 class GridBuffers {
 public:
-    /// Keeps a reference to `layout`, which must outlive it.
-    GridBuffers(const GridLayout& layout, const grid::GridDims& dims, const ModelFrame& frame);
+    /// Keeps a reference to `layout`, which must outlive it; reads the corner depths from `zcorn`.
+    /// Throws std::invalid_argument when the geometry exceeds the GL buffer-texture limit.
+    GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn, const ModelFrame& frame);
 
     /// One value per active cell (compact order).
     void set_values(const std::vector<float>& compact_values);
@@ -41,8 +44,9 @@ public:
     void bind_geometry() const;
     /// Binds the per-cell face classes and primary bits (visibility/cull_cells.comp).
     void bind_culling_inputs() const;
-    /// Draws `faces` as 2 triangles each with the bound face program.
-    static void draw_faces(const FaceBuffer& faces);
+    /// Draws `faces` as indexed quads (quad_draw.h) with the bound face program.
+    void draw_faces(const FaceBuffer& faces) const;
+    const QuadDraw& quads() const { return quads_; }
 
     glm::uvec2 grid_size() const { return grid_size_; }
     const ModelFrame& frame() const { return frame_; }
@@ -61,12 +65,13 @@ private:
     const GridLayout& layout_;
     glm::uvec2 grid_size_;
     ModelFrame frame_;
-    gl::Buffer pillars_, corner_depths_, cells_, values_, cell_face_classes_, primary_bits_;
+    gl::Buffer pillars_, corner_planes_, cells_, values_, cell_face_classes_, primary_bits_;
     FaceBuffer secondary_, primary_, primary_cells_, shell_, outer_;
     /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
     /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
-    gl::BufferTexture pillar_texels_, corner_depth_texels_, cell_texels_, value_texels_;
+    gl::BufferTexture pillar_texels_, corner_plane_texels_, cell_texels_, value_texels_;
     mutable FaceBuffer all_;
+    QuadDraw quads_;
 };
 
 }  // namespace cutaway::pipeline

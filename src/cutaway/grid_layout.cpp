@@ -50,7 +50,6 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
     const bool render_flips = frame.up_sign < 0;
     layout.compact_of_cell.assign(grid.cell_count(), no_cell);
     layout.cells.reserve(grid.active_count());
-    layout.corner_depths.reserve(8 * grid.active_count());
     layout.face_classes.reserve(6 * grid.active_count());
     for (std::size_t cell = 0; cell < grid.cell_count(); ++cell) {
         if (!grid.active(cell)) continue;
@@ -59,7 +58,6 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
         const bool negative = grid::signed_volume(corners) < 0;
         layout.compact_of_cell[cell] = std::uint32_t(layout.cells.size());
         layout.cells.push_back(std::uint32_t(cell) | ((negative != render_flips) ? 0x80000000u : 0u));
-        for (const grid::Point3& p : corners) layout.corner_depths.push_back(float(p.z - frame.centre.z));
         for (int side = 0; side < 6; ++side) layout.face_classes.push_back(classes.at(cell, grid::FaceSide(side)));
     }
     return layout;

@@ -1,7 +1,8 @@
 #pragma once
-// The grid as the GPU reads it, built on the CPU without expanding to triangles: pillars, the 8
-// corner depths of each active cell, one 32-bit record per active cell and one per face. The
-// vertex shader rebuilds corner positions from pillars and depths (shaders/common/grid.glsl).
+// The grid as the GPU reads it, built on the CPU without expanding to triangles: pillars, one
+// 32-bit record per active cell and one per face; the corner depths go to the GPU straight from
+// the grid's ZCORN store (grid_buffers.h). The vertex shader rebuilds corner positions from
+// pillars and depths (shaders/common/grid.glsl).
 #include <cstdint>
 #include <vector>
 
@@ -21,10 +22,8 @@ inline std::uint32_t pack_face(std::uint32_t compact_cell, grid::FaceSide side, 
 
 struct GridLayout {
     /// 2 x vec4 per pillar (top xyz, 0; bottom xyz, 0), centred model units (not flipped).
-    /// The renderer frees pillars and corner_depths once GridBuffers has uploaded them.
+    /// The renderer frees them once GridBuffers has uploaded them.
     std::vector<float> pillars;
-    /// 8 per active cell, ZCORN order (corner bits: 1 = i+1, 2 = j+1, 4 = bottom), centred depth.
-    std::vector<float> corner_depths;
     /// Per active cell: Eclipse cell index (bits 0-30) and bit 31 set when the face corner order
     /// of shaders/common/grid.glsl gives inward normals in render space for this cell.
     std::vector<std::uint32_t> cells;

@@ -13,13 +13,13 @@ PrimaryPass::PrimaryPass(const gl::ShaderLibrary& shaders)
 void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings) {
     prepare_face_program(primaries_, context);
     gl::set_uniform(primaries_, "line_width", settings.line_width_px);
-    GridBuffers::draw_faces(faces);
+    context.grid.draw_faces(faces);
 }
 
 void PrimaryPass::draw_shell_depth(const FaceDrawContext& context, const SceneTargets& scene) {
     scene.shell_framebuffer.bind();
     prepare_face_program(shell_depth_, context);
-    GridBuffers::draw_faces(context.grid.shell_faces());
+    context.grid.draw_faces(context.grid.shell_faces());
 }
 
 }  // namespace cutaway::pipeline

@@ -9,7 +9,11 @@ namespace cutaway::pipeline {
 
 RearShellDepth::RearShellDepth(const gl::ShaderLibrary& shaders, int width, int height)
     // The seed shader writes exactly this: the cut camera's depth encoding, depth only.
-    : program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}})),
+    // Only back faces: where a ray leaves the closed outer surface it crosses a face whose cell lies
+    // in front of it, so the farthest hit is always back-facing; culling the front half halves the
+    // faces rasterised and binned.
+    : program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}},
+                             {{"CULL_FRONT", ""}})),
       primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})),
       depth_(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
     framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
@@ -27,9 +31,9 @@ void RearShellDepth::render(const GridBuffers& grid, const Camera& cut_camera) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
-    GridBuffers::draw_faces(grid.outer_faces());
+    grid.draw_faces(grid.outer_faces());
     prepare_face_program(primaries_program_, FaceDrawContext{grid, cut_camera});
-    GridBuffers::draw_faces(grid.primary_faces());
+    grid.draw_faces(grid.primary_faces());
     glDepthFunc(GL_LESS);
 }
 

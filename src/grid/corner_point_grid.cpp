@@ -69,6 +69,12 @@ std::vector<std::string> CornerPointGrid::property_names() const { return keys_o
 std::vector<std::string> CornerPointGrid::int_property_names() const { return keys_of(int_properties_); }
 std::vector<std::string> CornerPointGrid::dynamic_property_names() const { return keys_of(dynamic_properties_); }
 
+void CornerPointGrid::clear_properties() {
+    float_properties_.clear();
+    int_properties_.clear();
+    dynamic_properties_.clear();
+}
+
 void CornerPointGrid::add_dynamic_step(const std::string& name, std::vector<float> values) {
     require_cell_sized(name, values.size());
     dynamic_properties_[name].push_back(std::move(values));

@@ -67,6 +67,10 @@ public:
     const std::vector<float>* dynamic_property(const std::string& name, std::size_t step) const;
     std::vector<std::string> dynamic_property_names() const;
 
+    /// Removes every property, static and dynamic (a one-frame render keeps only the array it
+    /// colours by, which it holds itself: 4 bytes per cell instead of all of them).
+    void clear_properties();
+
     /// Bytes held by COORD, ZCORN and ACTNUM (properties excluded).
     std::size_t geometry_bytes() const;
     /// Bytes held by all property arrays.

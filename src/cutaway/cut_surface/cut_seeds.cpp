@@ -59,7 +59,7 @@ const gl::Texture& CutSeedPass::render_on_gpu(const CutSurfaceInputs& inputs) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_GREATER);
         glDepthMask(GL_TRUE);
-        GridBuffers::draw_faces(inputs.grid.primary_faces());
+        inputs.grid.draw_faces(inputs.grid.primary_faces());
         glDepthFunc(GL_LESS);
     }
     return depth_;

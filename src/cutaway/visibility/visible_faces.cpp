@@ -10,10 +10,12 @@ namespace cutaway::pipeline {
 namespace {
 
 enum CullingBinding : unsigned { brick_cells_binding = 6, brick_begin_binding = 7, brick_boxes_binding = 8,
-                                 culling_binding = 11, visible_faces_binding = 12 };
+                                 culling_binding = 11, visible_faces_binding = 12, draw_commands_binding = 14 };
 
-/// DrawArraysIndirectCommand followed by the counters of visibility/cull_cells.comp.
-constexpr std::array<std::uint32_t, 9> cleared_counters{0, 1, 0, 0, 0, 0, 0, 0, 0};
+/// The counters of visibility/cull_cells.comp.
+constexpr std::array<std::uint32_t, 5> cleared_counters{0, 0, 0, 0, 0};
+/// DrawElementsIndirectCommand: count, instance count, first index, base vertex, base instance.
+constexpr std::size_t draw_command_bytes = 5 * sizeof(std::uint32_t);
 
 }  // namespace
 
@@ -27,7 +29,9 @@ VisibleFaces::VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& b
       brick_count_(bricks.brick_count()),
       face_capacity_(std::max<std::size_t>(face_capacity, 1)),
       counters_(sizeof(cleared_counters), cleared_counters.data(), GL_DYNAMIC_STORAGE_BIT),
-      faces_(face_capacity_ * sizeof(std::uint32_t), nullptr) {}
+      faces_(face_capacity_ * sizeof(std::uint32_t), nullptr),
+      chunks_(QuadDraw::chunks_for(face_capacity_)),
+      commands_(chunks_ * draw_command_bytes, nullptr) {}
 
 void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera) {
     if (cut) pyramid_.build(cut->surface);
@@ -61,27 +65,28 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
     glDispatchCompute(GLuint(groups_x), GLuint(groups_y), 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gl::set_uniform(finish_, "face_capacity", unsigned(face_capacity_));
+    gl::set_uniform(finish_, "chunk_count", unsigned(chunks_));
+    gl::set_uniform(finish_, "quads_per_chunk", QuadDraw::quads_per_chunk);
+    commands_.bind_base(GL_SHADER_STORAGE_BUFFER, draw_commands_binding);
     finish_.use();
-    glDispatchCompute(1, 1, 1);
+    glDispatchCompute(GLuint((chunks_ + 63) / 64), 1, 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void VisibleFaces::draw() const {
+void VisibleFaces::draw(const GridBuffers& grid) const {
     faces_.bind_base(GL_SHADER_STORAGE_BUFFER, faces_binding);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, counters_.id());
-    glDrawArraysIndirect(GL_TRIANGLES, nullptr);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    grid.quads().draw_indirect(commands_, chunks_);
 }
 
 CullingCounts VisibleFaces::read_counts() const {
     std::array<std::uint32_t, cleared_counters.size()> c{};
     glGetNamedBufferSubData(counters_.id(), 0, sizeof(c), c.data());
-    return {c[0] / 6u, c[8], brick_count_, c[4], c[5], c[6], c[7]};
+    return {std::min<std::uint64_t>(c[4], face_capacity_), c[4], brick_count_, c[0], c[1], c[2], c[3]};
 }
 
 std::size_t VisibleFaces::memory_bytes() const {
     return brick_cells_.size_bytes() + brick_begin_.size_bytes() + brick_boxes_.size_bytes() + faces_.size_bytes() +
-           counters_.size_bytes() + pyramid_.memory_bytes();
+           counters_.size_bytes() + commands_.size_bytes() + pyramid_.memory_bytes();
 }
 
 }  // namespace cutaway::pipeline

@@ -33,8 +33,8 @@ public:
     /// Builds the cut's min/max pyramid (from `cut`, the texture stage 2 reads; null: no cut) and
     /// selects the faces of secondary cells for the model `camera`.
     void select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera);
-    /// Draws the selected faces with the bound face program (2 triangles each).
-    void draw() const;
+    /// Draws the selected faces with the bound face program, as `grid`'s indexed quads.
+    void draw(const GridBuffers& grid) const;
     /// Reads the counters of the last selection back (a GPU->CPU sync: not in timed frames).
     CullingCounts read_counts() const;
     std::size_t memory_bytes() const;
@@ -47,6 +47,8 @@ private:
     std::size_t brick_count_ = 0;
     std::size_t face_capacity_ = 0;
     gl::Buffer counters_, faces_;
+    std::size_t chunks_ = 0;  ///< draw commands: QuadDraw chunks of the face capacity
+    gl::Buffer commands_;     ///< DrawElementsIndirectCommand per chunk (finish_culling.comp)
 };
 
 }  // namespace cutaway::pipeline
