@@ -118,12 +118,13 @@ int run_inspect(const InspectOptions& options) {
     const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
 
     const nlohmann::json j = summary_json(options, grid, summary, warnings, ms(t0, t1), ms(t1, t2));
+    // The CSV first: a failed write ends the command before a report that would look like success.
+    if (!options.cells_csv.empty())
+        io::write_stream(options.cells_csv, [&grid](std::ostream& out) { write_cells_csv(out, grid); });
     if (options.json)
         std::cout << j.dump(2) << '\n';
     else
         print_text(std::cout, j);
-    if (!options.cells_csv.empty())
-        io::write_stream(options.cells_csv, [&grid](std::ostream& out) { write_cells_csv(out, grid); });
     return 0;
 }
 

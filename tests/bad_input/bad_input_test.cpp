@@ -90,6 +90,18 @@ TEST_F(BadInput, SamePathForTwoOutputsIsRefusedBeforeRendering) {
     // An output naming an input would overwrite it.
     expect_refused(cutaway({"inspect", grid, "--cells-csv", grid}), {"--cells-csv", "the model", "same path"});
     EXPECT_EQ(fs::file_size(grid), std::string(kTinyGrid).size()) << "the model was overwritten";
+    // The viewer refuses before it opens a window (no display is needed to see the refusal).
+    expect_refused(cutaway({"view", grid, "--screenshot", out("v.png"), "--stats", out("v.png")}),
+                   {"--stats", "--screenshot", "same path"});
+    expect_no_output();
+}
+
+TEST_F(BadInput, FailedCellsCsvWritePrintsNoReport) {
+    // A report on stdout followed by exit 2 would read as half a success.
+    const fs::path grid = file("tiny.grdecl", kTinyGrid);
+    const ProcessResult r = cutaway({"inspect", grid, "--cells-csv", "/dev/full"});
+    expect_refused(r, {"/dev/full", "No space left on device"});
+    EXPECT_EQ(r.out, "") << "the report was printed before the failed write";
 }
 
 TEST_F(BadInput, MissingOutputDirectoryIsRefusedBeforeReadingTheModel) {
