@@ -125,6 +125,8 @@ int run_render(const RenderOptions& options) {
     files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
     refuse_shared_outputs(files);
     LoadedModel model = load_model(options.model, options.model_memory_limit_bytes());
+    // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
+    json memory{{"resident_after_load", run_context::resident_bytes()}};
     PropertyChoice property = choose_property(model.grid, options);
     const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
@@ -141,6 +143,7 @@ int run_render(const RenderOptions& options) {
     renderer.select_range(property.primary_range, box);
     glFinish();
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
+    memory["resident_after_setup"] = run_context::resident_bytes();
     const std::size_t primary_count = renderer.primary_cell_count();
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
@@ -155,6 +158,7 @@ int run_render(const RenderOptions& options) {
     for (int i = 0; i < options.warmup; ++i) renderer.render(settings, camera);
     std::vector<pipeline::FrameTimes> runs;
     for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
+    memory["resident_after_frames"] = run_context::resident_bytes();
     gl::write_png(renderer.read_image(), options.out);
     if (!options.cell_ids.empty())
         gl::write_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width, options.height), options.cell_ids);
@@ -205,6 +209,10 @@ int run_render(const RenderOptions& options) {
     stats["active_cells"] = grid.active_count();
     stats["primary_cells"] = primary_count;
     stats["gpu_memory_bytes"] = renderer.gpu_memory_bytes();
+    memory["peak_resident"] = run_context::peak_resident_bytes();
+    memory["gpu_buffers"] = renderer.gpu_memory_bytes();
+    memory["render_target_budget"] = options.render_target_bytes();
+    stats["memory_bytes"] = memory;
     stats["model"] = model.description;
     stats["model_load_s"] = model.load_seconds;
     stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set

@@ -1,8 +1,11 @@
 #pragma once
 // Machine and build context every run records (benchmarks, render stats): git revision, uname, environment.
+#include <sys/resource.h>
 #include <sys/utsname.h>
+#include <unistd.h>
 
 #include <array>
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -57,6 +60,26 @@ namespace cutaway::run_context {
 inline std::string lp_num_threads() {
     const std::string value = env_or_empty("LP_NUM_THREADS");
     return value.empty() ? "unset" : value;
+}
+
+}  // namespace cutaway::run_context
+
+namespace cutaway::run_context {
+
+/// The largest resident set this process has had so far (getrusage's ru_maxrss, KiB on Linux), bytes.
+inline std::size_t peak_resident_bytes() {
+    struct rusage usage {};
+    return ::getrusage(RUSAGE_SELF, &usage) == 0 ? std::size_t(usage.ru_maxrss) * 1024 : 0;
+}
+
+/// The resident set now (second field of /proc/self/statm, in pages), bytes; 0 where unavailable.
+inline std::size_t resident_bytes() {
+    std::size_t pages_total = 0, pages_resident = 0;
+    FILE* statm = std::fopen("/proc/self/statm", "r");
+    if (!statm) return 0;
+    const bool read = std::fscanf(statm, "%zu %zu", &pages_total, &pages_resident) == 2;
+    std::fclose(statm);
+    return read ? pages_resident * std::size_t(::sysconf(_SC_PAGESIZE)) : 0;
 }
 
 }  // namespace cutaway::run_context

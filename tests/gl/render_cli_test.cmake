@@ -27,6 +27,17 @@ foreach(key gl_query_ms gl_query_valid gl_renderer lp_num_threads size cells pri
     message(FATAL_ERROR "stats.json has no ${key}")
   endif()
 endforeach()
+# Memory by phase: resident bytes after load, set-up and frames never exceed the peak, which is non-zero.
+string(JSON peak GET "${stats}" memory_bytes peak_resident)
+if(NOT peak GREATER 0)
+  message(FATAL_ERROR "memory_bytes.peak_resident ${peak}, expected > 0")
+endif()
+foreach(phase resident_after_load resident_after_setup resident_after_frames)
+  string(JSON resident GET "${stats}" memory_bytes ${phase})
+  if(NOT resident GREATER 0 OR resident GREATER peak)
+    message(FATAL_ERROR "memory_bytes.${phase} ${resident}, expected in (0, peak ${peak}]")
+  endif()
+endforeach()
 string(JSON readback GET "${stats}" readback_bytes)
 if(NOT readback EQUAL 0)  # the default strategy (frustum) runs on the GPU
   message(FATAL_ERROR "readback_bytes ${readback}, expected 0")
