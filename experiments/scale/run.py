@@ -54,7 +54,7 @@ def row_for(preset, stats, wall, peak):
             "faces_drawn": stats.get("faces_drawn"), "model_load_s": stats.get("model_load_s"),
             "renderer_setup_s": stats.get("renderer_setup_s"), "strategy": (stats.get("strategy") or {}).get("name"),
             "command_wall_s": wall, "peak_resident_bytes": peak, "peak_bytes_per_active_cell": peak / cells,
-            "gpu_memory_bytes": stats.get("gpu_memory_bytes")}
+            "gpu_memory_bytes": stats.get("gpu_memory_bytes"), "memory_bytes": stats.get("memory_bytes")}
 
 
 def markdown(rows, context, size):
@@ -73,6 +73,18 @@ def markdown(rows, context, size):
                      f"{s['secondary']:.0f} | {r['faces_drawn']['secondary']:,} | {r['model_load_s']:.1f} | "
                      f"{r['renderer_setup_s']:.1f} | {r['command_wall_s']:.1f} | "
                      f"{r['peak_resident_bytes'] / 2**20:.0f} | {r['peak_bytes_per_active_cell']:.0f} |")
+    lines += ["", "Where the memory goes (render's stats.json `memory_bytes`, bytes per active cell; on llvmpipe GPU "
+              "memory is host memory): resident after the model is loaded or generated, what the renderer's set-up "
+              "added (its GPU buffers, listed apart, and the 1080p render targets, about "
+              f"{rows[0]['memory_bytes']['render_target_budget'] / 2**20:.0f} MB budgeted), what the timed frames added, "
+              "and the peak.", "",
+              "| model | after load | set-up added | of which GPU buffers | frames added | peak |",
+              "|---|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        m, cells = r["memory_bytes"], r["active_cells"]
+        lines.append(f"| {r['preset']} | {m['resident_after_load'] / cells:.0f} | "
+                     f"{(m['resident_after_setup'] - m['resident_after_load']) / cells:.0f} | {m['gpu_buffers'] / cells:.0f} | "
+                     f"{(m['resident_after_frames'] - m['resident_after_setup']) / cells:.0f} | {m['peak_resident'] / cells:.0f} |")
     return "\n".join(lines) + "\n"
 
 
