@@ -1,29 +1,20 @@
 #include "generator_parameters.h"
 
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
 
+#include "generators/parameter_check.h"
+
 namespace cutaway::generators {
 namespace {
 
-std::string text(double value) {
-    char buffer[32];
-    return std::string(buffer, std::to_chars(buffer, buffer + sizeof buffer, value).ptr);
+void require_fraction(double value, const std::string& option) {
+    require_parameter(std::isfinite(value) && value >= 0 && value < 1, option, "a share of the cells in [0, 1)", value);
 }
 
-void require(bool ok, const std::string& message) {
-    if (!ok) throw std::invalid_argument("generate: " + message);
-}
-
-void require_fraction(double value, const std::string& name) {
-    require(std::isfinite(value) && value >= 0 && value < 1,
-            name + " must lie in [0, 1) (a share of the cells), got " + text(value));
-}
-
-void require_positive(double value, const std::string& name, const std::string& unit) {
-    require(std::isfinite(value) && value > 0, name + " must be positive (" + unit + "), got " + text(value));
+void require_positive(double value, const std::string& option, const std::string& what) {
+    require_parameter(std::isfinite(value) && value > 0, option, what, value);
 }
 
 }  // namespace
@@ -34,21 +25,21 @@ std::vector<std::string> describe(const GeneratorParameters& p) {
         "preset = " + p.name,
         "dims = " + std::to_string(p.dims.nx) + " " + std::to_string(p.dims.ny) + " " + std::to_string(p.dims.nz) +
             " (" + std::to_string(p.dims.cell_count()) + " cells)",
-        "extent_m = " + text(p.length_x) + " " + text(p.length_y) + " " + text(p.thickness),
-        "top_depth_m = " + text(p.top_depth),
+        "extent_m = " + parameter_text(p.length_x) + " " + parameter_text(p.length_y) + " " + parameter_text(p.thickness),
+        "top_depth_m = " + parameter_text(p.top_depth),
         "seed = " + std::to_string(p.seed),
         "faults = " + std::to_string(p.fault_count),
-        "throw_range_m = " + text(p.throw_range.first) + " " + text(p.throw_range.second),
-        "fault_dip_deg = " + text(p.fault_dip_deg),
-        "fault_azimuth_deg = " + text(p.fault_azimuth_deg),
-        "fault_azimuth_spread_deg = " + text(p.fault_azimuth_spread_deg),
+        "throw_range_m = " + parameter_text(p.throw_range.first) + " " + parameter_text(p.throw_range.second),
+        "fault_dip_deg = " + parameter_text(p.fault_dip_deg),
+        "fault_azimuth_deg = " + parameter_text(p.fault_azimuth_deg),
+        "fault_azimuth_spread_deg = " + parameter_text(p.fault_azimuth_spread_deg),
         "lean_spread_pillars = " + std::to_string(p.lean_spread_pillars),
-        "horizon_roughness_m = " + text(p.horizon_roughness),
-        "pinch_out_fraction = " + text(p.pinch_out_fraction),
-        "inactive_fraction = " + text(p.inactive_fraction),
-        "poro_mean = " + text(p.poro_mean),
-        "poro_std = " + text(p.poro_std),
-        "poro_correlation_length_m = " + text(p.poro_correlation_length),
+        "horizon_roughness_m = " + parameter_text(p.horizon_roughness),
+        "pinch_out_fraction = " + parameter_text(p.pinch_out_fraction),
+        "inactive_fraction = " + parameter_text(p.inactive_fraction),
+        "poro_mean = " + parameter_text(p.poro_mean),
+        "poro_std = " + parameter_text(p.poro_std),
+        "poro_correlation_length_m = " + parameter_text(p.poro_correlation_length),
         "time_steps = " + std::to_string(p.time_steps),
         "injectors = " + std::to_string(p.injector_count),
     };
@@ -71,52 +62,55 @@ std::size_t estimated_peak_bytes(const GeneratorParameters& p) {
 }
 
 void validate(const GeneratorParameters& p, std::size_t memory_limit_bytes) {
-    require(p.dims.nx > 0 && p.dims.ny > 0 && p.dims.nz > 0,
-            "dims must be positive, got " + std::to_string(p.dims.nx) + " " + std::to_string(p.dims.ny) + " " +
-                std::to_string(p.dims.nz));
-    require(p.dims.cell_count() <= std::size_t(std::numeric_limits<std::int32_t>::max()),
-            "at most 2^31-1 cells, got " + std::to_string(p.dims.cell_count()));
-    require_positive(p.length_x, "extent x", "metres");
-    require_positive(p.length_y, "extent y", "metres");
-    require_positive(p.thickness, "thickness", "metres");
-    require(std::isfinite(p.top_depth), "top depth must be finite");
-    require(p.fault_count >= 0 && p.fault_count <= 64,
-            "faults must be between 0 and 64, got " + std::to_string(p.fault_count));
-    require(std::isfinite(p.throw_range.first) && std::isfinite(p.throw_range.second) && p.throw_range.first >= 0 &&
-                p.throw_range.first <= p.throw_range.second,
-            "throw range must satisfy 0 <= min <= max (metres), got " + text(p.throw_range.first) + " " +
-                text(p.throw_range.second));
-    require(p.throw_range.second < p.thickness,
-            "throw " + text(p.throw_range.second) + " m is larger than the model (thickness " + text(p.thickness) +
-                " m): a fault would offset a block past the whole reservoir");
-    require(std::isfinite(p.fault_dip_deg) && p.fault_dip_deg >= 30 && p.fault_dip_deg <= 90,
-            "fault dip must lie in [30, 90] degrees from horizontal, got " + text(p.fault_dip_deg));
-    require(std::isfinite(p.fault_azimuth_deg), "fault azimuth must be finite");
-    require(std::isfinite(p.fault_azimuth_spread_deg) && p.fault_azimuth_spread_deg >= 0 &&
-                p.fault_azimuth_spread_deg <= 90,
-            "fault azimuth spread must lie in [0, 90] degrees, got " + text(p.fault_azimuth_spread_deg));
-    require(p.lean_spread_pillars >= 0 && p.lean_spread_pillars <= 16,
-            "lean spread must be 0..16 pillars, got " + std::to_string(p.lean_spread_pillars));
-    require(std::isfinite(p.horizon_roughness) && p.horizon_roughness >= 0 && p.horizon_roughness <= 10 * p.thickness,
-            "horizon roughness must lie in [0, 10 x thickness] metres, got " + text(p.horizon_roughness));
-    require_fraction(p.pinch_out_fraction, "pinch-out fraction");
-    require_fraction(p.inactive_fraction, "inactive fraction");
-    require(p.pinch_out_fraction + p.inactive_fraction < 1,
-            "pinch-out fraction + inactive fraction must be below 1 (some cells must stay active)");
-    require(std::isfinite(p.poro_mean) && p.poro_mean > 0 && p.poro_mean < 1,
-            "porosity mean must lie in (0, 1), got " + text(p.poro_mean));
-    require(std::isfinite(p.poro_std) && p.poro_std >= 0 && p.poro_std < 1,
-            "porosity std must lie in [0, 1), got " + text(p.poro_std));
-    require_positive(p.poro_correlation_length, "porosity correlation length", "metres");
-    require(p.time_steps >= 0 && p.time_steps <= 1000,
-            "time steps must be 0..1000, got " + std::to_string(p.time_steps));
-    require(p.injector_count >= 1 && p.injector_count <= 64,
-            "injectors must be 1..64, got " + std::to_string(p.injector_count));
+    const std::string dims =
+        std::to_string(p.dims.nx) + " " + std::to_string(p.dims.ny) + " " + std::to_string(p.dims.nz);
+    require_parameter(p.dims.nx > 0 && p.dims.ny > 0 && p.dims.nz > 0, "--dims", "NX NY NZ, each at least 1", dims);
+    require_parameter(p.dims.cell_count() <= std::size_t(std::numeric_limits<std::int32_t>::max()), "--dims",
+                      "at most 2^31-1 cells", dims + " = " + std::to_string(p.dims.cell_count()) + " cells");
+    require_positive(p.length_x, "--extent", "a positive east extent in metres");
+    require_positive(p.length_y, "--extent", "a positive north extent in metres");
+    require_positive(p.thickness, "--extent", "a positive thickness in metres");
+    require_parameter(std::isfinite(p.top_depth), "--top-depth", "a finite depth in metres", p.top_depth);
+    require_parameter(p.fault_count >= 0 && p.fault_count <= 64, "--faults", "an integer in [0, 64]", p.fault_count);
+    const std::string throws = parameter_text(p.throw_range.first) + " " + parameter_text(p.throw_range.second);
+    require_parameter(std::isfinite(p.throw_range.first) && std::isfinite(p.throw_range.second) &&
+                          p.throw_range.first >= 0 && p.throw_range.first <= p.throw_range.second,
+                      "--throw", "MIN MAX in metres with 0 <= MIN <= MAX", throws);
+    require_parameter(p.throw_range.second < p.thickness, "--throw",
+                      "MAX below the model's thickness of " + parameter_text(p.thickness) +
+                          " m (a larger throw offsets a block past the whole reservoir)",
+                      throws);
+    require_parameter(std::isfinite(p.fault_dip_deg) && p.fault_dip_deg >= 30 && p.fault_dip_deg <= 90, "--dip",
+                      "a dip in [30, 90] degrees from horizontal", p.fault_dip_deg);
+    require_parameter(std::isfinite(p.fault_azimuth_deg), "--azimuth", "a finite angle in degrees", p.fault_azimuth_deg);
+    require_parameter(std::isfinite(p.fault_azimuth_spread_deg) && p.fault_azimuth_spread_deg >= 0 &&
+                          p.fault_azimuth_spread_deg <= 90,
+                      "--azimuth-spread", "an angle in [0, 90] degrees", p.fault_azimuth_spread_deg);
+    require_parameter(p.lean_spread_pillars >= 0 && p.lean_spread_pillars <= 16, "--lean-spread",
+                      "an integer in [0, 16] pillars", p.lean_spread_pillars);
+    require_parameter(std::isfinite(p.horizon_roughness) && p.horizon_roughness >= 0 &&
+                          p.horizon_roughness <= 10 * p.thickness,
+                      "--roughness", "a relief in [0, 10 x thickness] = [0, " + parameter_text(10 * p.thickness) + "] metres",
+                      p.horizon_roughness);
+    require_fraction(p.pinch_out_fraction, "--pinch-fraction");
+    require_fraction(p.inactive_fraction, "--inactive-fraction");
+    require_parameter(p.pinch_out_fraction + p.inactive_fraction < 1, "--pinch-fraction + --inactive-fraction",
+                      "a sum below 1 (some cells must stay active)", p.pinch_out_fraction + p.inactive_fraction);
+    require_parameter(std::isfinite(p.poro_mean) && p.poro_mean > 0 && p.poro_mean < 1, "--poro-mean",
+                      "a porosity mean in (0, 1)", p.poro_mean);
+    require_parameter(std::isfinite(p.poro_std) && p.poro_std >= 0 && p.poro_std < 1, "--poro-std",
+                      "a porosity standard deviation in [0, 1)", p.poro_std);
+    require_positive(p.poro_correlation_length, "--poro-correlation", "a positive correlation length in metres");
+    require_parameter(p.time_steps >= 0 && p.time_steps <= 1000, "--time-steps", "an integer in [0, 1000]", p.time_steps);
+    require_parameter(p.injector_count >= 1 && p.injector_count <= 64, "--injectors", "an integer in [1, 64]",
+                      p.injector_count);
     const std::size_t needed = estimated_peak_bytes(p);
-    require(needed <= memory_limit_bytes,
-            std::to_string(p.dims.cell_count()) + " cells need about " + text(double(needed) / 1e9) +
-                " GB, beyond the memory limit of " + text(double(memory_limit_bytes) / 1e9) +
-                " GB (lower dims or time steps, or raise --memory-limit-gb)");
+    const double gib = double(1u << 30);
+    require_parameter(needed <= memory_limit_bytes, "--memory-limit-gb",
+                      "room for " + std::to_string(p.dims.cell_count()) + " cells (about " +
+                          parameter_text(std::round(double(needed) / gib * 100) / 100) +
+                          " GiB needed: lower --dims or --time-steps, or raise the memory limit)",
+                      parameter_text(std::round(double(memory_limit_bytes) / gib * 100) / 100) + " GiB");
 }
 
 }  // namespace cutaway::generators

@@ -34,13 +34,16 @@ const std::vector<GeneratorParameters>& presets() {
     return table;
 }
 
+std::string preset_names() {
+    std::string names;
+    for (const GeneratorParameters& p : presets()) names += (names.empty() ? "" : ", ") + p.name;
+    return names;
+}
+
 GeneratorParameters find_preset(const std::string& name) {
-    std::string known;
-    for (const GeneratorParameters& p : presets()) {
+    for (const GeneratorParameters& p : presets())
         if (p.name == name) return p;
-        known += (known.empty() ? "" : ", ") + p.name;
-    }
-    throw std::invalid_argument("generate: unknown preset '" + name + "' (known: " + known + ")");
+    throw std::invalid_argument("--preset: expected one of " + preset_names() + ", found '" + name + "'");
 }
 
 }  // namespace cutaway::generators

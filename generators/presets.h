@@ -13,7 +13,11 @@ namespace cutaway::generators {
 /// scale-100m (1000x1000x100).
 const std::vector<GeneratorParameters>& presets();
 
-/// The preset called `name`; throws std::invalid_argument listing the known names.
+/// The preset names, comma-separated ("zaphirus, petra, ...").
+std::string preset_names();
+
+/// The preset called `name`; throws std::invalid_argument ("--preset: expected one of NAMES, found
+/// 'NAME'") for another name.
 GeneratorParameters find_preset(const std::string& name);
 
 }  // namespace cutaway::generators

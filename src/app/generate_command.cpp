@@ -31,7 +31,7 @@ struct GenerateOptions {
 
 GeneratorParameters effective_parameters(const GenerateOptions& options) {
     if (options.preset.empty() && options.dims.empty())
-        throw std::invalid_argument("generate: give --preset NAME or --dims NX NY NZ");
+        throw std::invalid_argument("--preset: expected a preset NAME or --dims NX NY NZ, found neither");
     GeneratorParameters p = options.preset.empty() ? GeneratorParameters{} : generators::find_preset(options.preset);
     if (options.preset.empty()) p.name = "custom";
     if (!options.dims.empty()) p.dims = {options.dims[0], options.dims[1], options.dims[2]};
@@ -51,7 +51,7 @@ int run_generate(const GenerateOptions& options) {
                       << p.dims.cell_count() << " cells\n";
         return 0;
     }
-    if (options.out.empty()) throw std::invalid_argument("generate: --out FILE.grdecl is required");
+    if (options.out.empty()) throw std::invalid_argument("--out: expected an output FILE.grdecl, found none");
     const GeneratorParameters parameters = effective_parameters(options);
     std::ostream* log = options.quiet ? nullptr : &std::cerr;
     generators::ProgressLog progress(log);

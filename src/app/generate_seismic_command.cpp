@@ -33,7 +33,7 @@ int format_code(const std::string& name) {
     static const std::map<std::string, int> codes{{"ibm", 1}, {"int32", 2}, {"int16", 3}, {"ieee", 5}, {"int8", 8}};
     const auto it = codes.find(name);
     if (it == codes.end())
-        throw std::invalid_argument("generate-seismic: --format " + name + ": expected ibm, ieee, int32, int16 or int8");
+        throw std::invalid_argument("--format: expected one of ibm, ieee, int32, int16, int8, found '" + name + "'");
     return it->second;
 }
 
@@ -43,9 +43,9 @@ int run_generate_seismic(const GenerateSeismicOptions& options) {
             std::cout << p.name << ": " << p.inlines << " x " << p.crosslines << " x " << p.samples << '\n';
         return 0;
     }
-    if (options.out.empty()) throw std::invalid_argument("generate-seismic: --out FILE.sgy is required");
+    if (options.out.empty()) throw std::invalid_argument("--out: expected an output FILE.sgy, found none");
     if (options.preset.empty() && options.dims.empty())
-        throw std::invalid_argument("generate-seismic: give --preset NAME or --dims INLINES CROSSLINES SAMPLES");
+        throw std::invalid_argument("--preset: expected a preset NAME or --dims INLINES CROSSLINES SAMPLES, found neither");
     SeismicParameters p = options.preset.empty() ? SeismicParameters{} : generators::find_seismic_preset(options.preset);
     if (!options.dims.empty()) {
         p.inlines = options.dims[0];

@@ -1,5 +1,6 @@
 #include "app/model_source.h"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 
@@ -16,7 +17,12 @@ LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory
     if (model.empty()) throw std::invalid_argument("no model given: expected a GRDECL file or preset:NAME");
     if (model.front().rfind(prefix, 0) == 0) {
         if (model.size() > 1) throw std::invalid_argument(model.front() + ": a preset takes no further files");
-        const generators::GeneratorParameters parameters = generators::find_preset(model.front().substr(prefix.size()));
+        const std::string name = model.front().substr(prefix.size());
+        const auto& known = generators::presets();
+        if (std::none_of(known.begin(), known.end(), [&](const auto& p) { return p.name == name; }))
+            throw std::invalid_argument(model.front() + ": expected preset:NAME with NAME one of " +
+                                        generators::preset_names() + ", found '" + name + "'");
+        const generators::GeneratorParameters parameters = generators::find_preset(name);
         generators::ProgressLog quiet(nullptr);
         loaded.grid = generators::generate_model(parameters, quiet, memory_limit_bytes).grid;
         loaded.description = model.front() + " (seed " + std::to_string(parameters.seed) + ")";
