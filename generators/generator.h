@@ -20,6 +20,9 @@ struct GeneratedModel {
     std::vector<double> column_offsets;
 };
 
+/// The dynamic property the generator writes (one array per time step, GeneratorParameters::time_steps).
+inline const std::string generated_dynamic_property = "SWAT";
+
 /// Default memory limit of the generator (bytes): the 10M-cell preset's budget.
 constexpr std::size_t kDefaultGeneratorMemoryLimit = std::size_t(4) << 30;
 

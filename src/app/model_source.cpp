@@ -10,7 +10,8 @@
 
 namespace cutaway::app {
 
-LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes) {
+LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes,
+                       const std::optional<std::string>& only_property) {
     const auto started = std::chrono::steady_clock::now();
     LoadedModel loaded;
     const std::string prefix = "preset:";
@@ -22,10 +23,13 @@ LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory
         if (std::none_of(known.begin(), known.end(), [&](const auto& p) { return p.name == name; }))
             throw std::invalid_argument(model.front() + ": expected preset:NAME with NAME one of " +
                                         generators::preset_names() + ", found '" + name + "'");
-        const generators::GeneratorParameters parameters = generators::find_preset(name);
+        generators::GeneratorParameters parameters = generators::find_preset(name);
+        const bool without_flood = only_property && *only_property != generators::generated_dynamic_property;
+        if (without_flood) parameters.time_steps = 0;
         generators::ProgressLog quiet(nullptr);
         loaded.grid = generators::generate_model(parameters, quiet, memory_limit_bytes).grid;
-        loaded.description = model.front() + " (seed " + std::to_string(parameters.seed) + ")";
+        loaded.description = model.front() + " (seed " + std::to_string(parameters.seed) +
+                             (without_flood ? ", no " + generators::generated_dynamic_property + " steps: not asked for" : "") + ")";
     } else {
         grid::GrdeclReadOptions options;
         options.memory_limit_bytes = memory_limit_bytes;

@@ -1,6 +1,7 @@
 #pragma once
 // MODEL arguments: a GRDECL file, or `preset:NAME` for a synthetic model generated in memory.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,7 +16,12 @@ struct LoadedModel {
 };
 
 /// Loads `model` (files read onto one grid, or one preset:NAME); throws GrdeclError for bad files, std::invalid_argument for unknown presets.
-/// `memory_limit_bytes` bounds what reading or generating may allocate.
-LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes);
+/// `memory_limit_bytes` bounds what reading or generating may allocate. `only_property`: the one
+/// property the caller will use (empty: the default, PORO), so a preset skips its water flood (the
+/// SWAT steps: about a quarter of a generation's time and 4 bytes per cell and step) unless SWAT is
+/// asked for; the other arrays are the same bit for bit (each stage has its own random stream).
+/// std::nullopt keeps every property (the viewer switches between them).
+LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes,
+                       const std::optional<std::string>& only_property = std::nullopt);
 
 }  // namespace cutaway::app

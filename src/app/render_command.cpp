@@ -124,7 +124,7 @@ int run_render(const RenderOptions& options) {
     for (const std::string& model : options.model) files.emplace_back("the model", model);
     files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
     refuse_shared_outputs(files);
-    LoadedModel model = load_model(options.model, options.model_memory_limit_bytes());
+    LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), options.property);
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::resident_bytes()}};
     PropertyChoice property = choose_property(model.grid, options);
