@@ -141,6 +141,8 @@ int run_render(const RenderOptions& options) {
     check_view(renderer.frame(), options);
     renderer.set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
     renderer.select_range(property.primary_range, box);
+    // The corner depths live on the GPU now and nothing reads them on the CPU again.
+    model.grid.release_corner_depths();
     glFinish();
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
     memory["resident_after_setup"] = run_context::resident_bytes();

@@ -11,7 +11,6 @@
 #include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "gl/gl_error.h"
-#include "grid/cell_geometry.h"
 #include "grid/face_classification.h"
 
 namespace cutaway::pipeline {
@@ -41,21 +40,6 @@ FloatImage read_alpha(const gl::Texture& texture, int width, int height) {
     FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
     for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + 3];
     return image;
-}
-
-/// Render-space mean of the centres of the cells flagged in `flags` (the origin without any).
-glm::vec3 primary_centroid(const grid::CornerPointGrid& grid, const ModelFrame& frame, const std::vector<std::uint8_t>& flags) {
-    const grid::GridDims& d = grid.dims();
-    glm::dvec3 sum(0);
-    std::size_t count = 0;
-    for (std::size_t cell = 0; cell < flags.size(); ++cell) {
-        if (!flags[cell]) continue;
-        const int i = int(cell % std::size_t(d.nx)), j = int(cell / std::size_t(d.nx) % std::size_t(d.ny)),
-                  k = int(cell / (std::size_t(d.nx) * std::size_t(d.ny)));
-        sum += glm::dvec3(frame.to_render(grid::cell_centre(grid::cell_corners(grid, i, j, k))));
-        ++count;
-    }
-    return count ? glm::vec3(sum / double(count)) : glm::vec3(0);
 }
 
 /// Depth (along the view axis) of the nearest corner of the model's box: nothing lies in front
@@ -91,6 +75,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       buffers_(layout_, grid.zcorn(), frame_),
       visible_(make_visible_faces(shaders, grid, layout_, frame_)),
       selection_(shaders, layout_, grid.dims()),
+      centroid_(shaders),
       colour_map_(make_colour_map_texture()),
       cut_(width, height),
       filtered_cut_(width, height),
@@ -125,7 +110,7 @@ void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
     selection_.select_bits(buffers_, primary_bits(layout_, flags));
     selection_changed();
     primary_flags_ = flags;  // known here: no read-back needed
-    primary_centroid_ = primary_centroid(grid_, frame_, flags);
+    primary_centroid_ = centroid_.compute(buffers_);
     selection_on_cpu_ = true;
 }
 
@@ -137,7 +122,7 @@ void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::o
 void CutawayRenderer::sync_selection_to_cpu() {
     if (selection_on_cpu_) return;
     primary_flags_ = pipeline::primary_flags(layout_, buffers_.read_primary_bits(), grid_.cell_count());
-    primary_centroid_ = primary_centroid(grid_, frame_, primary_flags_);
+    primary_centroid_ = centroid_.compute(buffers_);
     selection_on_cpu_ = true;
 }
 

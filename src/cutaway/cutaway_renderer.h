@@ -21,6 +21,7 @@
 #include "cutaway/primary_pass.h"
 #include "cutaway/rear_shell_depth.h"
 #include "cutaway/selection/gpu_primary_selection.h"
+#include "cutaway/selection/primary_centroid.h"
 #include "cutaway/secondary_pass.h"
 #include "cutaway/visibility/visible_faces.h"
 #include "gl/image.h"
@@ -67,7 +68,8 @@ inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border 
 class CutawayRenderer {
 public:
     /// Uploads the grid. Throws std::invalid_argument for an empty model or a size above the GL
-    /// limit, gl::GlError for GL failures.
+    /// limit, gl::GlError for GL failures. After construction only the grid's dimensions and
+    /// ACTNUM are read again: its corner depths may be released (CornerPointGrid::release_corner_depths).
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale, int width,
                     int height);
 
@@ -148,6 +150,7 @@ private:
     GridBuffers buffers_;
     VisibleFaces visible_;
     GpuPrimarySelection selection_;
+    PrimaryCentroid centroid_;
     bool secondary_list_built_ = false;
     FacesDrawn last_drawn_;
     bool visible_used_ = false;  ///< the last frame's stage 2 used the culling pass

@@ -6,9 +6,7 @@ namespace cutaway::pipeline {
 
 void prepare_face_program(const gl::Program& p, const FaceDrawContext& context) {
     const Camera& camera = context.camera;
-    gl::set_uniform(p, "grid_size", context.grid.grid_size());
-    gl::set_uniform(p, "up_sign", float(context.grid.frame().up_sign));
-    gl::set_uniform(p, "z_scale", float(context.grid.frame().z_scale));
+    context.grid.set_geometry_uniforms(p);
     gl::set_uniform(p, "view_projection", camera.view_projection());
     gl::set_uniform(p, "model_view", camera.view);
     gl::set_uniform(p, "eye_position", camera.eye);

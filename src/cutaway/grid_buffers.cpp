@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "gl/uniforms.h"
+
 namespace cutaway::pipeline {
 
 FaceBuffer FaceBuffer::from(const std::vector<std::uint32_t>& records) {
@@ -99,6 +101,12 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
 const FaceBuffer& GridBuffers::all_faces() const {
     if (!all_.buffer) all_ = FaceBuffer::from(pipeline::all_faces(layout_));
     return all_;
+}
+
+void GridBuffers::set_geometry_uniforms(const gl::Program& program) const {
+    gl::set_uniform(program, "grid_size", grid_size_);
+    gl::set_uniform(program, "up_sign", float(frame_.up_sign));
+    gl::set_uniform(program, "z_scale", float(frame_.z_scale));
 }
 
 std::size_t GridBuffers::memory_bytes() const {

@@ -42,6 +42,8 @@ public:
     void set_secondary_faces(const std::vector<std::uint32_t>& records) { secondary_ = FaceBuffer::from(records); }
     /// Binds the buffer textures of pillars, corner depths, cells and values.
     void bind_geometry() const;
+    /// Sets the uniforms common/grid.glsl reads (grid_size, up_sign, z_scale) on `program`.
+    void set_geometry_uniforms(const gl::Program& program) const;
     /// Binds the per-cell face classes and primary bits (visibility/cull_cells.comp).
     void bind_culling_inputs() const;
     /// Draws `faces` as indexed quads (quad_draw.h) with the bound face program.

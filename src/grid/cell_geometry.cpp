@@ -1,6 +1,7 @@
 #include "grid/cell_geometry.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace cutaway::grid {
 
@@ -12,6 +13,7 @@ Point3 point_on_pillar(const Pillar& pillar, double z) {
 }
 
 CellCorners cell_corners(const CornerPointGrid& grid, int i, int j, int k) {
+    if (!grid.has_corner_depths()) throw std::logic_error("cell_corners: the grid's corner depths were released");
     CellCorners corners;
     for (int c = 0; c < 8; ++c) {
         const Pillar pillar = grid.pillar(i + (c & 1), j + ((c >> 1) & 1));

@@ -70,6 +70,11 @@ public:
     /// Removes every property, static and dynamic (a one-frame render keeps only the array it
     /// colours by, which it holds itself: 4 bytes per cell instead of all of them).
     void clear_properties();
+    /// Frees ZCORN (the largest array: 32 bytes per cell compact, 64 full) once its depths live
+    /// elsewhere, e.g. on the GPU (a one-frame render after the renderer's set-up). Corners cannot
+    /// be read afterwards: cell_corners throws std::logic_error.
+    void release_corner_depths() { zcorn_ = ZcornStore(); }
+    bool has_corner_depths() const { return zcorn_.dims().cell_count() == dims_.cell_count(); }
 
     /// Bytes held by COORD, ZCORN and ACTNUM (properties excluded).
     std::size_t geometry_bytes() const;

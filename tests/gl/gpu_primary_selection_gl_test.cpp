@@ -12,6 +12,8 @@
 
 #include "cutaway/grid_buffers.h"
 #include "cutaway/selection/gpu_primary_selection.h"
+#include "cutaway/selection/primary_centroid.h"
+#include "grid/cell_geometry.h"
 #include "gl_test_support.h"
 
 namespace cutaway::test {
@@ -108,6 +110,52 @@ TEST(GpuPrimarySelection, NanValuesAreNeverPrimaryAndEmptySelectionsHaveEmptyLis
     scene.selection.select_range(scene.buffers, {1000, 2000}, std::nullopt);
     EXPECT_EQ(scene.buffers.primary_cells().count, 0u);
     EXPECT_EQ(scene.buffers.primary_faces().count, 0u);
+}
+
+/// Render-space mean of the flagged cells' centres in double from the CPU grid (the reference).
+glm::dvec3 cpu_centroid(const grid::CornerPointGrid& grid, const pipeline::ModelFrame& frame,
+                        const std::vector<std::uint8_t>& flags) {
+    glm::dvec3 sum(0);
+    std::size_t count = 0;
+    for (std::size_t c = 0; c < flags.size(); ++c) {
+        if (!flags[c]) continue;
+        const grid::CellIjk ijk = grid::cell_ijk(grid.dims(), c);
+        sum += glm::dvec3(frame.to_render(grid::cell_centre(grid::cell_corners(grid, ijk.i, ijk.j, ijk.k))));
+        ++count;
+    }
+    return count ? sum / double(count) : sum;
+}
+
+TEST(PrimaryCentroid, GpuCentroidEqualsTheCpuMeanOfCellCentres) {
+    // The GPU rebuilds corners from float depths and sums 256 centres in float; against the
+    // double reference that leaves float rounding: 1e-5 of the model's radius bounds it (float
+    // holds 7 digits; partial sums of 256 lose at most 8 bits of it).
+    const grid::CornerPointGrid faulted = faulted_model_with_inactive_cells({23, 19, 7}, 0.3, 11);
+    for (const grid::CornerPointGrid* grid : {&petra(), &faulted}) {
+        SelectionScene scene(*grid, tied_values(grid->cell_count()));
+        pipeline::PrimaryCentroid centroid(GlEnvironment::shaders());
+        std::mt19937 random(5);
+        for (int round = 0; round < 6; ++round) {
+            std::vector<std::uint8_t> flags(grid->cell_count(), 0);
+            // round 0: one cell; then denser sets up to every active cell (more than 256: several groups).
+            for (std::size_t c = 0; c < flags.size(); ++c)
+                flags[c] = grid->active(c) && (round == 5 || (round == 0 ? c == 1234 : random() % (8u >> (round % 4)) == 0));
+            scene.selection.select_bits(scene.buffers, pipeline::primary_bits(scene.layout, flags));
+            const glm::dvec3 expected = cpu_centroid(*grid, scene.frame, flags);
+            const glm::dvec3 got(centroid.compute(scene.buffers));
+            EXPECT_LE(glm::length(got - expected), 1e-5 * scene.frame.radius()) << "round " << round;
+        }
+        scene.selection.select_range(scene.buffers, {1000, 2000}, std::nullopt);
+        EXPECT_EQ(centroid.compute(scene.buffers), glm::vec3(0)) << "no primary: the origin";
+    }
+}
+
+TEST(PrimaryCentroid, ReleasedCornerDepthsAreRefusedNotRead) {
+    grid::CornerPointGrid grid = faulted_model_with_inactive_cells({6, 5, 3}, 0.2, 3);
+    ASSERT_TRUE(grid.has_corner_depths());
+    grid.release_corner_depths();
+    EXPECT_FALSE(grid.has_corner_depths());
+    EXPECT_THROW(grid::cell_corners(grid, 0, 0, 0), std::logic_error);
 }
 
 }  // namespace

@@ -24,9 +24,7 @@ void draw_cell_boxes(const gl::Program& p, const CutSurfaceInputs& in, const gl:
     const std::size_t boxes = clusters ? clusters->count : cells.count;
     if (boxes == 0) return;
     const Camera& camera = in.cut_camera;
-    gl::set_uniform(p, "grid_size", in.grid.grid_size());
-    gl::set_uniform(p, "up_sign", float(in.grid.frame().up_sign));
-    gl::set_uniform(p, "z_scale", float(in.grid.frame().z_scale));
+    in.grid.set_geometry_uniforms(p);
     gl::set_uniform(p, "cut_view", camera.view);
     gl::set_uniform(p, "near_plane", camera.near_plane);
     gl::set_uniform(p, "far_plane", camera.far_plane);
