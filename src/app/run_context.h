@@ -5,6 +5,8 @@
 #include <array>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace cutaway::run_context {
@@ -57,6 +59,19 @@ namespace cutaway::run_context {
 inline std::string lp_num_threads() {
     const std::string value = env_or_empty("LP_NUM_THREADS");
     return value.empty() ? "unset" : value;
+}
+
+/// A memory field of /proc/self/status in bytes (VmHWM: peak resident, VmRSS: resident now); 0 if absent.
+inline std::size_t proc_status_bytes(const std::string& field) {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind(field + ":", 0) == 0) {
+            std::istringstream in(line.substr(field.size() + 1));
+            std::size_t kb = 0;
+            in >> kb;
+            return kb * 1024;
+        }
+    return 0;
 }
 
 }  // namespace cutaway::run_context

@@ -1,9 +1,11 @@
 #pragma once
 // One cutaway frame, stage by stage (SPEC.md section 2): cut surface, mean filter, secondaries,
 // primaries and feature lines, SSAO, composite. Every stage is fenced and timed.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cutaway/camera.h"
@@ -62,6 +64,21 @@ struct FacesDrawn {
     std::optional<CullingCounts> culling;
 };
 
+/// Hooks through which a caller runs one frame across several renderers, each drawing one block of
+/// the model (src/distributed/). The renderer calls them at fixed points and never knows who
+/// combines what; with no hooks set the frame is the single-process one.
+struct FrameHooks {
+    /// After stage 1's strategy (and the rear shell, unless see-through), before the cut is
+    /// resolved and filtered: replaces `cut_depth` (the strategy's DEPTH32F image) and
+    /// `rear_shell_depth` (null when see-through) by their combination over all renderers.
+    /// Timed as stage "cut_combine" (with the resolve pass that follows it).
+    std::function<void(const gl::Texture& cut_depth, const gl::Texture* rear_shell_depth)> combine_cut;
+    /// After stage 3, before SSAO and post: combines the G-buffer over all renderers and returns
+    /// whether this renderer runs the screen-space passes on it (false: its final image is left
+    /// unwritten). Timed as stage "composite".
+    std::function<bool(const SceneTargets& scene)> combine_scene;
+};
+
 inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border = 4, flag_edge = 8, flag_shell_cut = 16;
 
 class CutawayRenderer {
@@ -70,6 +87,13 @@ public:
     /// limit, gl::GlError for GL failures.
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale, int width,
                     int height);
+    /// One block of a larger model (src/distributed/): `frame` is the whole model's (every block
+    /// draws in the same render space and camera), `classes` the block's faces classified with the
+    /// cells around the block, so its cut boundary is not drawn as shell.
+    CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
+                    const grid::FaceClassification& classes, int width, int height);
+
+    void set_hooks(FrameHooks hooks) { hooks_ = std::move(hooks); }
 
     const ModelFrame& frame() const { return frame_; }
     int width() const { return width_; }
@@ -177,6 +201,7 @@ private:
     bool frozen_valid_ = false;
     bool last_filtered_ = false;
     gl::StageTimer timer_;
+    FrameHooks hooks_;
 };
 
 /// Largest image side the current context can render (GL_MAX_TEXTURE_SIZE, GL_MAX_VIEWPORT_DIMS).
