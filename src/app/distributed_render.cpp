@@ -144,10 +144,12 @@ std::string message_of(const std::exception_ptr& error) {
 
 /// Per-frame exchange measurements of one rank.
 struct ExchangeTimes {
-    std::vector<double> allreduce_ms, icet_ms, icet_bytes, reduce_bytes;
+    std::vector<double> allreduce_ms, allreduce_wait_ms, icet_ms, icet_wait_ms, icet_bytes, reduce_bytes;
     void add(const distributed::ExchangeCosts& c) {
         allreduce_ms.push_back(c.allreduce_ms);
+        allreduce_wait_ms.push_back(c.allreduce_wait_ms);
         icet_ms.push_back(c.composite_ms);
+        icet_wait_ms.push_back(c.composite_wait_ms);
         icet_bytes.push_back(double(c.icet_bytes_sent));
         reduce_bytes.push_back(double(c.reduce_bytes_sent));
     }
@@ -171,7 +173,9 @@ std::vector<double> rank_numbers(const RankScene& scene, const json& stages, con
                                 median(exchange.allreduce_ms),
                                 median(exchange.icet_ms),
                                 median(exchange.icet_bytes),
-                                median(exchange.reduce_bytes)};
+                                median(exchange.reduce_bytes),
+                                median(exchange.allreduce_wait_ms),
+                                median(exchange.icet_wait_ms)};
     const grid::IjkBox& b = rank.block().box;
     for (int bound : {b.i0, b.j0, b.k0, b.i1, b.j1, b.k1}) numbers.push_back(double(bound));
     for (const std::string& name : stage_order) numbers.push_back(stages["stages_ms"][name].get<double>());
@@ -182,7 +186,7 @@ const std::vector<std::string> rank_fields{"cells", "active_cells", "primary_cel
                                            "block_geometry_bytes", "peak_rss_bytes", "rss_bytes_after_frames",
                                            "load_peak_bytes", "model_load_s", "renderer_setup_s",
                                            "allreduce_mpi_ms", "icet_composite_ms", "icet_bytes_sent",
-                                           "shell_reduce_bytes_sent", "box_i0", "box_j0", "box_k0", "box_i1",
+                                           "shell_reduce_bytes_sent", "allreduce_wait_ms", "icet_wait_ms", "box_i0", "box_j0", "box_k0", "box_i1",
                                            "box_j1", "box_k1"};
 
 /// Position of `field` in rank_fields.
@@ -194,7 +198,7 @@ json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene
                       const std::vector<std::string>& stage_order, std::size_t allreduce_message_bytes) {
     const std::size_t per_rank = rank_fields.size() + stage_order.size();
     json ranks = json::array();
-    std::vector<double> allreduce, icet, composite, cut_combine;
+    std::vector<double> allreduce, icet, composite, cut_combine, allreduce_wait, icet_wait;
     double icet_bytes = 0, reduce_bytes = 0;
     for (int r = 0; r < mpi.size(); ++r) {
         const double* n = &gathered[std::size_t(r) * per_rank];
@@ -206,6 +210,8 @@ json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene
         ranks.push_back(rank);
         allreduce.push_back(n[field_index("allreduce_mpi_ms")]);
         icet.push_back(n[field_index("icet_composite_ms")]);
+        allreduce_wait.push_back(n[field_index("allreduce_wait_ms")]);
+        icet_wait.push_back(n[field_index("icet_wait_ms")]);
         icet_bytes += n[field_index("icet_bytes_sent")];
         reduce_bytes += n[field_index("shell_reduce_bytes_sent")];
         cut_combine.push_back(stages["cut_combine"].get<double>());
@@ -217,6 +223,8 @@ json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene
             {"per_rank", ranks},
             {"allreduce_ms", max_of(allreduce)},
             {"composite_ms", max_of(icet)},
+            {"allreduce_wait_ms", max_of(allreduce_wait)},
+            {"composite_wait_ms", max_of(icet_wait)},
             {"cut_combine_stage_ms", max_of(cut_combine)},
             {"composite_stage_ms", max_of(composite)},
             {"bytes_per_frame",
@@ -225,7 +233,9 @@ json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene
               {"icet_sent_all_ranks", icet_bytes},
               {"shell_reduce_sent_all_ranks", reduce_bytes}}},
             {"notes",
-             {{"allreduce_ms", "slowest rank's median MPI_Allreduce(MAX) of the cut and rear-shell depth (the MPI call only)"},
+             {{"allreduce_ms", "slowest rank's median MPI_Allreduce(MAX) of the cut and rear-shell depth (the MPI call only, after a barrier)"},
+              {"allreduce_wait_ms", "longest median wait in the barrier before the allreduce: load imbalance of stage 1"},
+              {"composite_wait_ms", "longest median wait in the barrier before IceT: load imbalance of stages 2 and 3"},
               {"composite_ms", "slowest rank's median of the two IceT Z-buffer composites plus the shell-depth MPI_Reduce(MIN)"},
               {"cut_combine_stage_ms", "the fenced stage: GPU read-back, allreduce, upload and the cut resolve pass"},
               {"composite_stage_ms", "the fenced stage: G-buffer read-back, packing, IceT, upload at rank 0"},

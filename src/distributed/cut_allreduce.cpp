@@ -25,7 +25,10 @@ void CutAllreduce::combine(const gl::Texture& cut_depth, const gl::Texture* rear
     read_depth(cut_depth, depths_.data(), pixels);
     if (rear_shell) read_depth(*rear_shell, depths_.data() + pixels, pixels);
     message_bytes_ = depths_.size() * sizeof(float);
+    const auto waited = std::chrono::steady_clock::now();
+    MPI_Barrier(MPI_COMM_WORLD);
     const auto started = std::chrono::steady_clock::now();
+    last_wait_ms_ = std::chrono::duration<double, std::milli>(started - waited).count();
     MPI_Allreduce(MPI_IN_PLACE, depths_.data(), int(depths_.size()), MPI_FLOAT, MPI_MAX, MPI_COMM_WORLD);
     last_mpi_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
     write_depth(cut_depth, depths_.data(), width_, height_);

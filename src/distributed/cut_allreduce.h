@@ -18,14 +18,17 @@ public:
     void combine(const gl::Texture& cut_depth, const gl::Texture* rear_shell);
     /// Bytes of the reduced message per rank and frame (4 per pixel per image).
     std::size_t message_bytes() const { return message_bytes_; }
-    /// Wall time of the last MPI_Allreduce alone (ms), without the texture read-back and upload.
+    /// Wall time of the last MPI_Allreduce alone (ms), without the texture read-back and upload,
+    /// and of the barrier before it: the wait for the slowest rank's stage 1 (load imbalance).
     double last_mpi_ms() const { return last_mpi_ms_; }
+    double last_wait_ms() const { return last_wait_ms_; }
 
 private:
     int width_, height_;
     std::vector<float> depths_;
     std::size_t message_bytes_ = 0;
     double last_mpi_ms_ = 0;
+    double last_wait_ms_ = 0;
 };
 
 }  // namespace cutaway::distributed

@@ -41,8 +41,9 @@ void RankRenderer::select_range(const grid::PrimaryRange& range, const std::opti
 
 pipeline::FrameTimes RankRenderer::render(const pipeline::FrameSettings& settings, const pipeline::Camera& camera) {
     pipeline::FrameTimes times = renderer_.render(settings, camera);
-    exchange_ = {allreduce_.last_mpi_ms(), compositor_.last_exchange_ms(), allreduce_.message_bytes(),
-                 compositor_.icet_bytes_sent(), compositor_.reduce_bytes_sent()};
+    exchange_ = {allreduce_.last_mpi_ms(),          allreduce_.last_wait_ms(),         compositor_.last_exchange_ms(),
+                 compositor_.last_wait_ms(),        allreduce_.message_bytes(),        compositor_.icet_bytes_sent(),
+                 compositor_.reduce_bytes_sent()};
     return times;
 }
 

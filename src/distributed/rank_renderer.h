@@ -19,7 +19,9 @@ namespace cutaway::distributed {
 /// Exchange costs of the last frame on this rank.
 struct ExchangeCosts {
     double allreduce_ms = 0;         ///< the MPI_Allreduce of the cut alone
+    double allreduce_wait_ms = 0;    ///< waiting for the slowest rank's stage 1 before it
     double composite_ms = 0;         ///< the IceT composites and the shell reduction alone
+    double composite_wait_ms = 0;    ///< waiting for the slowest rank's stages 2 and 3 before them
     std::size_t allreduce_bytes = 0; ///< message size per rank
     std::size_t icet_bytes_sent = 0;
     std::size_t reduce_bytes_sent = 0;

@@ -38,7 +38,7 @@ struct SceneCompositor::Impl {
     std::vector<std::uint8_t> colour;
     std::vector<std::uint32_t> id_pairs, ids;
     std::size_t icet_bytes = 0, reduce_bytes = 0;
-    double exchange_ms = 0;
+    double exchange_ms = 0, wait_ms = 0;
 
     /// One Z-buffer composite of an RGBA32F buffer keyed by `depth`; at rank 0 `colour_out`
     /// (and, when given, `depth_out`) receive the result.
@@ -104,7 +104,10 @@ bool SceneCompositor::composite(const pipeline::SceneTargets& scene, const std::
     for (float& s : m.shell)
         if (s == 0.0f) s = FLT_MAX;
 
+    const auto waited = std::chrono::steady_clock::now();
+    MPI_Barrier(MPI_COMM_WORLD);
     const auto started = std::chrono::steady_clock::now();
+    m.wait_ms = std::chrono::duration<double, std::milli>(started - waited).count();
     m.icet_bytes = 0;
     std::vector<float> normal_depth_out, packed_out, depth_out, shell_out(m.rank == 0 ? pixels : 0);
     m.composite(m.normal_depth, normal_depth_out, &depth_out);
@@ -139,5 +142,6 @@ const std::vector<std::uint32_t>& SceneCompositor::composited_ids() const { retu
 std::size_t SceneCompositor::icet_bytes_sent() const { return impl_->icet_bytes; }
 std::size_t SceneCompositor::reduce_bytes_sent() const { return impl_->reduce_bytes; }
 double SceneCompositor::last_exchange_ms() const { return impl_->exchange_ms; }
+double SceneCompositor::last_wait_ms() const { return impl_->wait_ms; }
 
 }  // namespace cutaway::distributed

@@ -38,8 +38,10 @@ public:
     /// bytes this rank sent for the shell-depth reduction.
     std::size_t icet_bytes_sent() const;
     std::size_t reduce_bytes_sent() const;
-    /// Wall time of the last frame's IceT calls and shell reduction alone (ms).
+    /// Wall time of the last frame's IceT calls and shell reduction alone (ms), and of the barrier
+    /// before them: the wait for the slowest rank's stages 2 and 3 (load imbalance).
     double last_exchange_ms() const;
+    double last_wait_ms() const;
 
 private:
     struct Impl;
