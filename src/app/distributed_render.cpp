@@ -41,17 +41,9 @@ using nlohmann::json;
 /// Stages a distributed frame adds (CutawayRenderer's FrameHooks).
 const std::vector<std::string> combine_stages{"cut_combine", "composite"};
 
-/// The cut strategies whose per-rank cuts combine exactly by a per-pixel max.
-bool combines_by_max(const std::string& strategy) { return strategy == "frustum" || strategy == "frustum-clusters"; }
-
 void check_distributed_options(const RenderOptions& options) {
-    const pipeline::FrameSettings settings = options.frame_settings();
-    if (!combines_by_max(settings.strategy))
-        throw std::invalid_argument(
-            "--strategy " + settings.strategy +
-            ": under mpirun expected frustum or frustum-clusters (their cuts combine by a per-pixel max); the "
-            "cone-field strategies need every rank's seeds before their transform, which is not supported yet");
-    if (options.exact_check) throw std::invalid_argument("--exact-check: not supported under mpirun (cone-field strategies only)");
+    if (options.exact_check)
+        throw std::invalid_argument("--exact-check: not supported under mpirun (it recomputes the cut on one renderer)");
     if (options.baseline) throw std::invalid_argument("--baseline: not supported under mpirun");
 }
 

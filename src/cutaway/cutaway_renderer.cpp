@@ -38,11 +38,11 @@ FloatImage read_alpha(const gl::Texture& texture, int width, int height) {
     return image;
 }
 
-/// Render-space mean of the centres of the cells flagged in `flags` (the origin without any).
-glm::vec3 primary_centroid(const grid::CornerPointGrid& grid, const ModelFrame& frame, const std::vector<std::uint8_t>& flags) {
+/// Render-space sum of the centres of the cells flagged in `flags`.
+CentreSum primary_centre_sum(const grid::CornerPointGrid& grid, const ModelFrame& frame, const std::vector<std::uint8_t>& flags) {
     const grid::GridDims& d = grid.dims();
     glm::dvec3 sum(0);
-    std::size_t count = 0;
+    std::uint64_t count = 0;
     for (std::size_t cell = 0; cell < flags.size(); ++cell) {
         if (!flags[cell]) continue;
         const int i = int(cell % std::size_t(d.nx)), j = int(cell / std::size_t(d.nx) % std::size_t(d.ny)),
@@ -50,7 +50,7 @@ glm::vec3 primary_centroid(const grid::CornerPointGrid& grid, const ModelFrame& 
         sum += glm::dvec3(frame.to_render(grid::cell_centre(grid::cell_corners(grid, i, j, k))));
         ++count;
     }
-    return count ? glm::vec3(sum / double(count)) : glm::vec3(0);
+    return {sum, count};
 }
 
 /// Depth (along the view axis) of the nearest corner of the model's box: nothing lies in front
@@ -125,7 +125,7 @@ void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
     selection_.select_bits(buffers_, primary_bits(layout_, flags));
     selection_changed();
     primary_flags_ = flags;  // known here: no read-back needed
-    primary_centroid_ = primary_centroid(grid_, frame_, flags);
+    set_primary_centroid();
     selection_on_cpu_ = true;
 }
 
@@ -137,8 +137,14 @@ void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::o
 void CutawayRenderer::sync_selection_to_cpu() {
     if (selection_on_cpu_) return;
     primary_flags_ = pipeline::primary_flags(layout_, buffers_.read_primary_bits(), grid_.cell_count());
-    primary_centroid_ = primary_centroid(grid_, frame_, primary_flags_);
+    set_primary_centroid();
     selection_on_cpu_ = true;
+}
+
+void CutawayRenderer::set_primary_centroid() {
+    CentreSum centres = primary_centre_sum(grid_, frame_, primary_flags_);
+    if (hooks_.sum_centres) centres = hooks_.sum_centres(centres);
+    primary_centroid_ = centres.count ? glm::vec3(centres.sum / double(centres.count)) : glm::vec3(0);
 }
 
 void CutawayRenderer::selection_changed() {
@@ -211,19 +217,26 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
     const bool keep_frozen_cut = frozen_camera_ && frozen_valid_;
     if (!keep_frozen_cut) {
         last_filtered_ = cut_drawn && s.mean_filter >= 3;
-        const bool combined = cut_drawn && hooks_.combine_cut;
+        const bool combined = cut_drawn && hooks_.combine_max;
+        // Cone-field strategies combine their seeds; the others their cut (a max either way).
+        const bool seeds_combined = combined && bool(find_cut_surface(s.strategy).cpu_reference);
         gl::timed_stage(timer_, "cut_surface", [&] {
             cut_.clear();
             if (!cut_drawn) return;
             CutSurfaceStrategy& cut_strategy = strategy(s.strategy);
-            cut_strategy.render(cut_inputs(s, cut_camera), cut_);
+            CutSurfaceInputs inputs = cut_inputs(s, cut_camera);
+            if (seeds_combined) inputs.combine_seeds = [&](const gl::Texture& seeds) { hooks_.combine_max({&seeds}); };
+            cut_strategy.render(inputs, cut_);
             cut_readback_bytes_ = cut_strategy.readback_bytes();
             if (!s.see_through) rear_shell_.render(buffers_, cut_camera);
             if (!combined && !last_filtered_) resolve_cut(cut_, s, cut_camera);
         });
         if (combined)
             gl::timed_stage(timer_, "cut_combine", [&] {
-                hooks_.combine_cut(cut_.depth, s.see_through ? nullptr : &rear_shell_.depth());
+                std::vector<const gl::Texture*> images;
+                if (!seeds_combined) images.push_back(&cut_.depth);
+                if (!s.see_through) images.push_back(&rear_shell_.depth());
+                if (!images.empty()) hooks_.combine_max(images);
                 if (!last_filtered_) resolve_cut(cut_, s, cut_camera);
             });
         if (last_filtered_)

@@ -67,12 +67,22 @@ struct FacesDrawn {
 /// Hooks through which a caller runs one frame across several renderers, each drawing one block of
 /// the model (src/distributed/). The renderer calls them at fixed points and never knows who
 /// combines what; with no hooks set the frame is the single-process one.
+/// Sum of the render-space centres of a set of primary cells, and their count.
+struct CentreSum {
+    glm::dvec3 sum{0};
+    std::uint64_t count = 0;
+};
+
 struct FrameHooks {
-    /// After stage 1's strategy (and the rear shell, unless see-through), before the cut is
-    /// resolved and filtered: replaces `cut_depth` (the strategy's DEPTH32F image) and
-    /// `rear_shell_depth` (null when see-through) by their combination over all renderers.
-    /// Timed as stage "cut_combine" (with the resolve pass that follows it).
-    std::function<void(const gl::Texture& cut_depth, const gl::Texture* rear_shell_depth)> combine_cut;
+    /// Replaces each DEPTH32F image by its per-pixel max over all renderers. Called after stage 1
+    /// (timed as stage "cut_combine", with the resolve pass that follows) on the strategy's cut
+    /// and the rear shell (unless see-through), before the cut is resolved and filtered; for the
+    /// cone-field strategies on their seed image instead of the cut (inside stage 1, before the
+    /// transform), so every renderer transforms the same seeds.
+    std::function<void(const std::vector<const gl::Texture*>& depth_images)> combine_max;
+    /// Sums the primaries' centres over all renderers (the cone-field strategies' slope is taken
+    /// at the centroid of all primaries). Called whenever the selection changes.
+    std::function<CentreSum(const CentreSum& own)> sum_centres;
     /// After stage 3, before SSAO and post: combines the G-buffer over all renderers and returns
     /// whether this renderer runs the screen-space passes on it (false: its final image is left
     /// unwritten). Timed as stage "composite".
@@ -163,6 +173,8 @@ private:
     void selection_changed();
     /// Reads the selection back to primary_flags_ and primary_centroid_ if a GPU selection changed it.
     void sync_selection_to_cpu();
+    /// primary_centroid_ from primary_flags_ (summed over renderers by the hooks, if set).
+    void set_primary_centroid();
 
     const gl::ShaderLibrary& shaders_;
     int width_, height_;

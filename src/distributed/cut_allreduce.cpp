@@ -19,20 +19,28 @@ void write_depth(const gl::Texture& texture, const float* values, int width, int
 
 CutAllreduce::CutAllreduce(int width, int height) : width_(width), height_(height) {}
 
-void CutAllreduce::combine(const gl::Texture& cut_depth, const gl::Texture* rear_shell) {
+void CutAllreduce::start_frame() {
+    message_bytes_ = 0;
+    last_mpi_ms_ = last_wait_ms_ = 0;
+}
+
+void CutAllreduce::combine(const std::vector<const gl::Texture*>& images) {
     const std::size_t pixels = std::size_t(width_) * std::size_t(height_);
-    depths_.resize(rear_shell ? 2 * pixels : pixels);
-    read_depth(cut_depth, depths_.data(), pixels);
-    if (rear_shell) read_depth(*rear_shell, depths_.data() + pixels, pixels);
-    message_bytes_ = depths_.size() * sizeof(float);
+    depths_.resize(images.size() * pixels);
+    for (std::size_t i = 0; i < images.size(); ++i) read_depth(*images[i], depths_.data() + i * pixels, pixels);
+    message_bytes_ += depths_.size() * sizeof(float);
     const auto waited = std::chrono::steady_clock::now();
     MPI_Barrier(MPI_COMM_WORLD);
     const auto started = std::chrono::steady_clock::now();
-    last_wait_ms_ = std::chrono::duration<double, std::milli>(started - waited).count();
     MPI_Allreduce(MPI_IN_PLACE, depths_.data(), int(depths_.size()), MPI_FLOAT, MPI_MAX, MPI_COMM_WORLD);
-    last_mpi_ms_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
-    write_depth(cut_depth, depths_.data(), width_, height_);
-    if (rear_shell) write_depth(*rear_shell, depths_.data() + pixels, width_, height_);
+    const auto finished = std::chrono::steady_clock::now();
+    last_wait_ms_ += std::chrono::duration<double, std::milli>(started - waited).count();
+    last_mpi_ms_ += std::chrono::duration<double, std::milli>(finished - started).count();
+    for (std::size_t i = 0; i < images.size(); ++i) write_depth(*images[i], depths_.data() + i * pixels, width_, height_);
+}
+
+void CutAllreduce::sum(std::vector<double>& values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_SUM, MPI_COMM_WORLD);
 }
 
 }  // namespace cutaway::distributed

@@ -1,6 +1,7 @@
 #include "distributed/rank_renderer.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace cutaway::distributed {
 
@@ -11,12 +12,19 @@ RankRenderer::RankRenderer(const gl::ShaderLibrary& shaders, const grid::CornerP
       renderer_(shaders, block_.grid, frame, block_.classes, width, height),
       allreduce_(width, height),
       compositor_(width, height) {
-    renderer_.set_hooks({[this](const gl::Texture& cut, const gl::Texture* rear_shell) { allreduce_.combine(cut, rear_shell); },
-                         [this](const pipeline::SceneTargets& scene) {
-                             std::vector<std::uint32_t> ids = renderer_.read_eclipse_ids();
-                             for (std::uint32_t& id : ids) id = block_.whole_id(id);
-                             return compositor_.composite(scene, ids);
-                         }});
+    pipeline::FrameHooks hooks;
+    hooks.combine_max = [this](const std::vector<const gl::Texture*>& images) { allreduce_.combine(images); };
+    hooks.sum_centres = [this](const pipeline::CentreSum& own) {
+        std::vector<double> values{own.sum.x, own.sum.y, own.sum.z, double(own.count)};
+        allreduce_.sum(values);
+        return pipeline::CentreSum{{values[0], values[1], values[2]}, std::uint64_t(values[3])};
+    };
+    hooks.combine_scene = [this](const pipeline::SceneTargets& scene) {
+        std::vector<std::uint32_t> ids = renderer_.read_eclipse_ids();
+        for (std::uint32_t& id : ids) id = block_.whole_id(id);
+        return compositor_.composite(scene, ids);
+    };
+    renderer_.set_hooks(std::move(hooks));
 }
 
 void RankRenderer::set_colouring(const std::vector<float>& whole_values, const pipeline::ColourBarLabel& label) {
@@ -40,6 +48,7 @@ void RankRenderer::select_range(const grid::PrimaryRange& range, const std::opti
 }
 
 pipeline::FrameTimes RankRenderer::render(const pipeline::FrameSettings& settings, const pipeline::Camera& camera) {
+    allreduce_.start_frame();
     pipeline::FrameTimes times = renderer_.render(settings, camera);
     exchange_ = {allreduce_.last_mpi_ms(),          allreduce_.last_wait_ms(),         compositor_.last_exchange_ms(),
                  compositor_.last_wait_ms(),        allreduce_.message_bytes(),        compositor_.icet_bytes_sent(),

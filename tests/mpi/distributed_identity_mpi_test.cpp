@@ -1,6 +1,7 @@
 // The distributed frame against the single-process frame (SPEC.md section 7), run under
 // `mpirun -np 2` and `-np 4`: every rank draws its K slab (distributed::RankRenderer), rank 0 also
-// renders the whole model alone, and on 10 random cameras, selections and apertures per model the
+// renders the whole model alone, and on 10 random cameras, selections, apertures and cut strategies
+// (frustum, jfa, chamfer-34, frustum-sweep) per model the
 // composited cell-id image must equal the single-process one except at pixels explained as ties:
 //   - the single-process depth test itself is a tie there: drawing the frame again with ties going
 //     to the last-drawn fragment (GL_LEQUAL) shows the distributed frame's cell; or
@@ -33,6 +34,7 @@ namespace {
 constexpr int width = 400, height = 225;  // reduced frames: 4 ranks share 2 cores in CI
 constexpr int cameras = 10;
 constexpr double tie_relative_depth = 2e-5;
+constexpr const char* strategies[] = {"frustum", "jfa", "frustum", "chamfer-34", "frustum-sweep"};
 
 struct Frame {
     std::vector<std::uint32_t> cells;  ///< whole-model Eclipse id + 1, rows bottom to top
@@ -95,7 +97,10 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
         if (trial % 3 == 2) pose.distance = frame.radius() * (1.2f + 1.5f * unit(random));
         const pipeline::Camera camera = pipeline::make_orbit_camera(frame, pose, width, height);
         pipeline::FrameSettings settings = invariant_settings(random);
-        settings.strategy = "frustum";  // frustum-clusters merges primaries across slabs differently
+        // Per-cell frustums (their union is a max of the ranks' cuts) and the cone-field strategies
+        // (their seeds are max-reduced, then every rank runs the same transform). Not
+        // frustum-clusters: its clusters are built per slab, so its cut differs on purpose.
+        settings.strategy = strategies[std::size_t(trial) % std::size(strategies)];
         if (trial % 4 == 3) settings.mean_filter = 9;
         if (trial % 5 == 4) settings.ssao = true;
 
