@@ -12,4 +12,11 @@ inline bool launched_by_mpi() {
     return false;
 }
 
+/// This process's rank as the launcher set it (before MPI starts), 0 without a launcher.
+inline int mpi_rank_from_launcher() {
+    for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMIX_RANK", "PMI_RANK", "MV2_COMM_WORLD_RANK"})
+        if (const char* value = std::getenv(name)) return std::atoi(value);
+    return 0;
+}
+
 }  // namespace cutaway::app
