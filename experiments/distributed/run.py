@@ -119,13 +119,15 @@ def table(rows, title):
 
 
 def memory_table(rows):
-    lines = ["| ranks | per rank: active cells | slab geometry MB | renderer GPU buffers MB | resident MB after frames | "
-             "peak resident MB (includes loading the whole model) |", "|---|---:|---:|---:|---:|---:|"]
+    lines = ["| ranks | per rank: active cells | primary cells | slab geometry MB | renderer GPU buffers MB | "
+             "resident MB after frames | peak resident MB (includes loading the whole model) |",
+             "|---|---:|---:|---:|---:|---:|---:|"]
     for r in rows:
         if r["ranks"] == 0:
             continue
         for p in r["per_rank"]:
-            lines.append(f"| {r['ranks']} (rank {p['rank']}) | {p['active_cells']:,.0f} | {mb(p['block_geometry_bytes'])} | "
+            lines.append(f"| {r['ranks']} (rank {p['rank']}) | {p['active_cells']:,.0f} | {p['primary_cells']:,.0f} | "
+                         f"{mb(p['block_geometry_bytes'])} | "
                          f"{mb(p['gpu_memory_bytes'])} | {mb(p['rss_bytes_after_frames'])} | {mb(p['peak_rss_bytes'])} |")
     return lines
 
@@ -243,7 +245,9 @@ def main():
     lines += table(weak, "Weak scaling: generated " + ", ".join("%dx%dx%d" % d for d in weak_dims) + " on 1, 2, 4 ranks") + [""]
     lines += [f"### Memory per rank: {memory_model}", "", *memory_table(strong[memory_model]), "",
               "Resident memory after the frames falls with the slab; the peak includes every rank's load of the whole "
-              "model (the reader and the generator do not read or generate a slab alone yet).", ""]
+              "model (the reader and the generator do not read or generate a slab alone yet). Slabs are balanced by "
+              "active cells, not primaries: stage 1 (one frustum per primary) follows the primary column, so the rank "
+              "holding most primaries sets the pace of stage 1 (the waits before the allreduce).", ""]
     if largest:
         lines += [f"### Largest model across 4 ranks: {largest['model']}", "",
                   f"{largest['active_cells']:,} active cells; frame {largest['stages_ms']['total']:.0f} ms; resident "
