@@ -64,15 +64,15 @@ struct FacesDrawn {
     std::optional<CullingCounts> culling;
 };
 
-/// Hooks through which a caller runs one frame across several renderers, each drawing one block of
-/// the model (src/distributed/). The renderer calls them at fixed points and never knows who
-/// combines what; with no hooks set the frame is the single-process one.
 /// Sum of the render-space centres of a set of primary cells, and their count.
 struct CentreSum {
     glm::dvec3 sum{0};
     std::uint64_t count = 0;
 };
 
+/// Hooks through which a caller runs one frame across several renderers, each drawing one block of
+/// the model (src/distributed/). The renderer calls them at fixed points and never knows who
+/// combines what; with no hooks set the frame is the single-process one.
 struct FrameHooks {
     /// Replaces each DEPTH32F image by its per-pixel max over all renderers. Called after stage 1
     /// (timed as stage "cut_combine", with the resolve pass that follows) on the strategy's cut
