@@ -204,6 +204,10 @@ def main():
         return
     if not shutil.which("mpirun"):
         raise SystemExit("mpirun not found (apt-get install openmpi-bin; build with CUTAWAY_MPI=ON)")
+    cache = os.path.join(os.path.dirname(os.path.dirname(exp.cutaway)), "CMakeCache.txt")
+    if os.path.exists(cache) and "CUTAWAY_MPI:BOOL=OFF" in open(cache).read():
+        print(f"skipped: {os.path.relpath(cache, cx.REPO)} says CUTAWAY_MPI=OFF (this cutaway refuses mpirun)")
+        return
     size = "480x270" if exp.quick else "1920x1080"
     repeat = 1 if exp.quick else 3
     strong_models = ["preset:petra"] if exp.quick else ["preset:sapphire", "preset:scale-1m"]
