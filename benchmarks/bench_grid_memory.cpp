@@ -92,18 +92,6 @@ Options parse_options(int argc, char** argv) {
 }
 
 /// A "VmXXX:   1234 kB" line of /proc/self/status, in bytes (0 if absent).
-std::size_t proc_status_bytes(const std::string& field) {
-    std::ifstream status("/proc/self/status");
-    for (std::string line; std::getline(status, line);)
-        if (line.rfind(field + ":", 0) == 0) {
-            std::istringstream in(line.substr(field.size() + 1));
-            std::size_t kb = 0;
-            in >> kb;
-            return kb * 1024;
-        }
-    return 0;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -148,13 +136,13 @@ int run_write(const Options& o) {
 
 int run_load(const Options& o) {
     // Baseline first: nothing big has been touched yet in this fresh process.
-    const std::size_t hwm_before = proc_status_bytes("VmHWM");
-    const std::size_t rss_before = proc_status_bytes("VmRSS");
+    const std::size_t hwm_before = cutaway::run_context::proc_status_bytes("VmHWM");
+    const std::size_t rss_before = cutaway::run_context::proc_status_bytes("VmRSS");
     const auto start = std::chrono::steady_clock::now();
     const cutaway::grid::CornerPointGrid grid = cutaway::grid::load_grdecl({o.file});
     const double load_seconds = seconds_since(start);
-    const std::size_t hwm_after = proc_status_bytes("VmHWM");
-    const std::size_t rss_after = proc_status_bytes("VmRSS");
+    const std::size_t hwm_after = cutaway::run_context::proc_status_bytes("VmHWM");
+    const std::size_t rss_after = cutaway::run_context::proc_status_bytes("VmRSS");
 
     const double cells = double(grid.cell_count());
     const std::size_t peak = hwm_after - hwm_before;

@@ -16,6 +16,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libopm-common-dev libboost-test-dev clang libclang-rt-14-dev
   # plots
   python3 python3-matplotlib python3-vtk9
+  # distributed rendering (src/distributed/, CUTAWAY_MPI): OpenMPI and ParaView's IceT compositor
+  libopenmpi-dev openmpi-bin paraview-dev
 )
 
 missing=()

@@ -2,8 +2,10 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <sstream>
 
 #include "app/commands.h"
+#include "app/mpi_launch.h"
 #include "gl/gl_error.h"
 #include "grid/grdecl_error.h"
 #include "io/output_error.h"
@@ -28,8 +30,11 @@ int main(int argc, char** argv) {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
         // CLI11 prints "--option: expected ..., found ..."; every refused command line is bad
-        // input (exit 2) whatever CLI11's own code; --help stays 0.
-        return app.exit(error) == 0 ? 0 : 2;
+        // input (exit 2) whatever CLI11's own code; --help stays 0. Under mpirun rank 0 alone
+        // prints it (every rank parses the same command line).
+        std::ostringstream silenced;
+        const bool quiet = cutaway::app::mpi_rank_from_launcher() > 0;
+        return (quiet ? app.exit(error, silenced, silenced) : app.exit(error)) == 0 ? 0 : 2;
     }
     try {
         if (app.got_subcommand("inspect")) return inspect();

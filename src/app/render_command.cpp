@@ -10,9 +10,12 @@
 #include <utility>
 
 #include "app/commands.h"
+#include "app/distributed_render.h"
+#include "app/mpi_launch.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
 #include "app/render_options.h"
+#include "app/render_report.h"
 #include "app/run_context.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
@@ -28,40 +31,6 @@ namespace cutaway::app {
 namespace {
 
 using nlohmann::json;
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-/// Median over repetitions of each stage's wall and query times, plus validity of all.
-json stage_statistics(const std::vector<pipeline::FrameTimes>& runs) {
-    json wall = json::object(), query = json::object(), valid = json::object();
-    std::vector<std::string> names(std::begin(pipeline::stage_names), std::end(pipeline::stage_names));
-    names.push_back("total");
-    for (const std::string& name : names) {
-        std::vector<double> walls, queries;
-        bool all_valid = true;
-        for (const pipeline::FrameTimes& run : runs) {
-            const gl::StageTime* found = name == "total" ? &run.total : nullptr;
-            for (const gl::StageTime& stage : run.stages)
-                if (stage.stage == name) found = &stage;
-            walls.push_back(found ? found->wall_ms : 0.0);
-            queries.push_back(found ? found->gl_query_ms : 0.0);
-            all_valid = all_valid && (!found || found->gl_query_valid);
-        }
-        wall[name] = median(walls);
-        query[name] = median(queries);
-        valid[name] = all_valid;
-    }
-    json all_runs = json::array();
-    for (const pipeline::FrameTimes& run : runs) all_runs.push_back(run.total.wall_ms);
-    return {{"stages_ms", wall}, {"gl_query_ms", query}, {"gl_query_valid_by_stage", valid},
-            {"gl_query_valid", std::all_of(valid.begin(), valid.end(), [](const json& v) { return v.get<bool>(); })},
-            {"total_ms_per_run", all_runs}};
-}
 
 /// The last frame's cut against the exact cone field from the same seeds (SPEC section 2).
 json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
@@ -80,45 +49,8 @@ json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSetti
             {"exact_seconds", seconds}};
 }
 
-json faces_drawn_json(const pipeline::FacesDrawn& drawn) {
-    json faces = {{"secondary", drawn.secondary}, {"primary", drawn.primary}, {"shell_contours", drawn.shell_contours}};
-    if (drawn.culling) {
-        const pipeline::CullingCounts& c = *drawn.culling;
-        faces["culling"] = {{"bricks", c.bricks}, {"bricks_culled", c.bricks_culled}, {"cells_culled", c.cells_culled},
-                            {"cells_behind_cut", c.cells_behind}, {"cells_straddling_cut", c.cells_straddling},
-                            {"faces_selected", c.faces_requested}};
-    }
-    return faces;
-}
-
-/// A metric's value, or null with KEY_absent saying why when its denominator is zero (0/0 is not 1).
-void put_metric(json& stats, const std::string& key, double fraction, std::size_t denominator, const std::string& why_absent) {
-    if (denominator > 0) {
-        stats[key] = fraction;
-        return;
-    }
-    stats[key] = nullptr;
-    stats[key + "_absent"] = why_absent;
-}
-
-/// Refuses a camera that would see nothing: a model without extent (all pillars at one x, y, or
-/// coordinates whose extent overflows single precision) or a DIST inside the model.
-void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options) {
-    const glm::vec3 extent = frame.render_max - frame.render_min;
-    const bool finite = std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z) &&
-                        std::isfinite(frame.radius());
-    if (!finite || !(std::max(extent.x, extent.y) > 0))
-        throw std::invalid_argument(
-            options.model.front() + ": expected a model with a finite, non-zero horizontal extent in single precision " +
-            "(render units), found " + number_text(extent.x) + " x " + number_text(extent.y) + " x " + number_text(extent.z));
-    for (const auto& [option, pose] : {std::pair{"--camera", std::optional(options.camera_pose())},
-                                       std::pair{"--freeze-camera", options.freeze_pose}})
-        if (pose && pose->distance > 0 && pose->distance < frame.radius())
-            throw std::invalid_argument(std::string(option) + ": expected DIST 0 (frame the model) or at least the model's radius " +
-                                        number_text(frame.radius()) + " (outside it), found " + number_text(pose->distance));
-}
-
 int run_render(const RenderOptions& options) {
+    if (launched_by_mpi()) return run_distributed_render(options);
     // Inputs first: an output naming a model file would overwrite it.
     std::vector<std::pair<std::string, std::string>> files;
     for (const std::string& model : options.model) files.emplace_back("the model", model);
@@ -126,7 +58,7 @@ int run_render(const RenderOptions& options) {
     refuse_shared_outputs(files);
     LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), options.property);
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
-    json memory{{"resident_after_load", run_context::resident_bytes()}};
+    json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, options);
     const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
@@ -145,7 +77,7 @@ int run_render(const RenderOptions& options) {
     model.grid.release_corner_depths();
     glFinish();
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
-    memory["resident_after_setup"] = run_context::resident_bytes();
+    memory["resident_after_setup"] = run_context::proc_status_bytes("VmRSS");
     const std::size_t primary_count = renderer.primary_cell_count();
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
@@ -160,7 +92,7 @@ int run_render(const RenderOptions& options) {
     for (int i = 0; i < options.warmup; ++i) renderer.render(settings, camera);
     std::vector<pipeline::FrameTimes> runs;
     for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
-    memory["resident_after_frames"] = run_context::resident_bytes();
+    memory["resident_after_frames"] = run_context::proc_status_bytes("VmRSS");
     gl::write_png(renderer.read_image(), options.out);
     if (!options.cell_ids.empty())
         gl::write_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width, options.height), options.cell_ids);
@@ -211,7 +143,7 @@ int run_render(const RenderOptions& options) {
     stats["active_cells"] = grid.active_count();
     stats["primary_cells"] = primary_count;
     stats["gpu_memory_bytes"] = renderer.gpu_memory_bytes();
-    memory["peak_resident"] = run_context::peak_resident_bytes();
+    memory["peak_resident"] = run_context::proc_status_bytes("VmHWM");
     memory["gpu_buffers"] = renderer.gpu_memory_bytes();
     memory["render_target_budget"] = options.render_target_bytes();
     stats["memory_bytes"] = memory;

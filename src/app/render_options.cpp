@@ -186,6 +186,9 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--repeat", o.repeat, "timed frames; stats hold medians")->check(finite_in(1, 1000));
     c.add_option("--egl-platform", o.egl_platform, "auto|surfaceless|device")
         ->check(one_of({"auto", "surfaceless", "device"}));
+    c.add_option("--rank-slabs", o.rank_slabs,
+                 "under mpirun: cut the model into one slab of whole layers per rank along i, j or k")
+        ->check(one_of({"i", "j", "k"}));
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options) {

@@ -54,6 +54,7 @@ struct RenderOptions {
     int repeat = 3;
     std::string egl_platform = "auto";
     double memory_limit_gb = 16;
+    std::string rank_slabs = "k";     ///< under mpirun: the axis the model is cut along into slabs
 
     std::size_t memory_limit_bytes() const;
     /// What the frame's targets and read-backs need for --size (render_target_bytes_per_pixel each).

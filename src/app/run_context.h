@@ -1,13 +1,13 @@
 #pragma once
 // Machine and build context every run records (benchmarks, render stats): git revision, uname, environment.
-#include <sys/resource.h>
 #include <sys/utsname.h>
-#include <unistd.h>
 
 #include <array>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace cutaway::run_context {
@@ -62,24 +62,18 @@ inline std::string lp_num_threads() {
     return value.empty() ? "unset" : value;
 }
 
-}  // namespace cutaway::run_context
-
-namespace cutaway::run_context {
-
-/// The largest resident set this process has had so far (getrusage's ru_maxrss, KiB on Linux), bytes.
-inline std::size_t peak_resident_bytes() {
-    struct rusage usage {};
-    return ::getrusage(RUSAGE_SELF, &usage) == 0 ? std::size_t(usage.ru_maxrss) * 1024 : 0;
-}
-
-/// The resident set now (second field of /proc/self/statm, in pages), bytes; 0 where unavailable.
-inline std::size_t resident_bytes() {
-    std::size_t pages_total = 0, pages_resident = 0;
-    FILE* statm = std::fopen("/proc/self/statm", "r");
-    if (!statm) return 0;
-    const bool read = std::fscanf(statm, "%zu %zu", &pages_total, &pages_resident) == 2;
-    std::fclose(statm);
-    return read ? pages_resident * std::size_t(::sysconf(_SC_PAGESIZE)) : 0;
+/// A memory field of /proc/self/status in bytes (VmHWM: peak resident, VmRSS: resident now); 0 if absent.
+inline std::size_t proc_status_bytes(const std::string& field) {
+    std::ifstream status("/proc/self/status");
+    for (std::string line; std::getline(status, line);)
+        if (line.rfind(field + ":", 0) == 0) {
+            std::istringstream in(line.substr(field.size() + 1));
+            std::size_t kb = 0;
+            in >> kb;
+            return kb * 1024;
+        }
+    return 0;
 }
 
 }  // namespace cutaway::run_context
+

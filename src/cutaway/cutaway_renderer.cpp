@@ -21,11 +21,6 @@ VisibleFaces make_visible_faces(const gl::ShaderLibrary& shaders, const grid::Co
     return VisibleFaces(shaders, build_cell_bricks(grid, layout.compact_of_cell, frame), selectable_face_capacity(layout));
 }
 
-GridLayout layout_for(const grid::CornerPointGrid& grid, const ModelFrame& frame) {
-    const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
-    return build_grid_layout(grid, classes, frame);
-}
-
 int checked_side(int side, const char* name) {
     const int limit = max_image_side();
     if (side < 1 || side > limit)
@@ -66,11 +61,16 @@ int max_image_side() {
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale,
                                  int width, int height)
+    : CutawayRenderer(shaders, grid, make_model_frame(grid, z_scale),
+                      grid::FaceClassification(grid, grid::default_face_tolerance(grid)), width, height) {}
+
+CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
+                                 const grid::FaceClassification& classes, int width, int height)
     : shaders_(shaders),
       width_(checked_side(width, "width")),
       height_(checked_side(height, "height")),
-      frame_(make_model_frame(grid, z_scale)),
-      layout_(layout_for(grid, frame_)),
+      frame_(frame),
+      layout_(build_grid_layout(grid, classes, frame_)),
       grid_(grid),
       buffers_(layout_, grid.zcorn(), frame_),
       visible_(make_visible_faces(shaders, grid, layout_, frame_)),
@@ -110,7 +110,7 @@ void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
     selection_.select_bits(buffers_, primary_bits(layout_, flags));
     selection_changed();
     primary_flags_ = flags;  // known here: no read-back needed
-    primary_centroid_ = centroid_.compute(buffers_);
+    set_primary_centroid();
     selection_on_cpu_ = true;
 }
 
@@ -122,8 +122,14 @@ void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::o
 void CutawayRenderer::sync_selection_to_cpu() {
     if (selection_on_cpu_) return;
     primary_flags_ = pipeline::primary_flags(layout_, buffers_.read_primary_bits(), grid_.cell_count());
-    primary_centroid_ = centroid_.compute(buffers_);
+    set_primary_centroid();
     selection_on_cpu_ = true;
+}
+
+void CutawayRenderer::set_primary_centroid() {
+    CentreSum centres = centroid_.centre_sum(buffers_);
+    if (hooks_.sum_centres) centres = hooks_.sum_centres(centres);
+    primary_centroid_ = centres.count ? glm::vec3(centres.sum / double(centres.count)) : glm::vec3(0);
 }
 
 void CutawayRenderer::selection_changed() {
@@ -196,15 +202,28 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
     const bool keep_frozen_cut = frozen_camera_ && frozen_valid_;
     if (!keep_frozen_cut) {
         last_filtered_ = cut_drawn && s.mean_filter >= 3;
+        const bool combined = cut_drawn && hooks_.combine_max;
+        // Cone-field strategies combine their seeds; the others their cut (a max either way).
+        const bool seeds_combined = combined && bool(find_cut_surface(s.strategy).cpu_reference);
         gl::timed_stage(timer_, "cut_surface", [&] {
             cut_.clear();
             if (!cut_drawn) return;
             CutSurfaceStrategy& cut_strategy = strategy(s.strategy);
-            cut_strategy.render(cut_inputs(s, cut_camera), cut_);
+            CutSurfaceInputs inputs = cut_inputs(s, cut_camera);
+            if (seeds_combined) inputs.combine_seeds = [&](const gl::Texture& seeds) { hooks_.combine_max({&seeds}); };
+            cut_strategy.render(inputs, cut_);
             cut_readback_bytes_ = cut_strategy.readback_bytes();
             if (!s.see_through) rear_shell_.render(buffers_, cut_camera);
-            if (!last_filtered_) resolve_cut(cut_, s, cut_camera);
+            if (!combined && !last_filtered_) resolve_cut(cut_, s, cut_camera);
         });
+        if (combined)
+            gl::timed_stage(timer_, "cut_combine", [&] {
+                std::vector<const gl::Texture*> images;
+                if (!seeds_combined) images.push_back(&cut_.depth);
+                if (!s.see_through) images.push_back(&rear_shell_.depth());
+                if (!images.empty()) hooks_.combine_max(images);
+                if (!last_filtered_) resolve_cut(cut_, s, cut_camera);
+            });
         if (last_filtered_)
             gl::timed_stage(timer_, "mean_filter", [&] {
                 mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera);
@@ -234,15 +253,18 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         if (s.contours) primary_.draw_shell_depth(context, scene_);
         glDepthFunc(GL_LESS);
     });
-    if (s.ssao)
+    bool run_post = true;
+    if (hooks_.combine_scene) gl::timed_stage(timer_, "composite", [&] { run_post = hooks_.combine_scene(scene_); });
+    if (s.ssao && run_post)
         gl::timed_stage(timer_, "ssao", [&] {
             ssao_.apply(scene_, post_, camera, s.ssao_samples, s.ssao_radius * frame_.radius());
         });
-    gl::timed_stage(timer_, "post", [&] {
-        composite_.apply(scene_, post_, s, width_, height_);
-        if (s.colour_bar) colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
-        empty_vertex_array_.bind();
-    });
+    if (run_post)
+        gl::timed_stage(timer_, "post", [&] {
+            composite_.apply(scene_, post_, s, width_, height_);
+            if (s.colour_bar) colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
+            empty_vertex_array_.bind();
+        });
     glFinish();
     last_drawn_ = {};
     last_drawn_.secondary = cut_needed && s.draw == DrawMode::all_faces ? buffers_.secondary_faces().count : 0;

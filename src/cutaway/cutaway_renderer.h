@@ -1,9 +1,11 @@
 #pragma once
 // One cutaway frame, stage by stage (SPEC.md section 2): cut surface, mean filter, secondaries,
 // primaries and feature lines, SSAO, composite. Every stage is fenced and timed.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cutaway/camera.h"
@@ -63,6 +65,25 @@ struct FacesDrawn {
     std::optional<CullingCounts> culling;
 };
 
+/// Hooks through which a caller runs one frame across several renderers, each drawing one block of
+/// the model (src/distributed/). The renderer calls them at fixed points and never knows who
+/// combines what; with no hooks set the frame is the single-process one.
+struct FrameHooks {
+    /// Replaces each DEPTH32F image by its per-pixel max over all renderers. Called after stage 1
+    /// (timed as stage "cut_combine", with the resolve pass that follows) on the strategy's cut
+    /// and the rear shell (unless see-through), before the cut is resolved and filtered; for the
+    /// cone-field strategies on their seed image instead of the cut (inside stage 1, before the
+    /// transform), so every renderer transforms the same seeds.
+    std::function<void(const std::vector<const gl::Texture*>& depth_images)> combine_max;
+    /// Sums the primaries' centres over all renderers (the cone-field strategies' slope is taken
+    /// at the centroid of all primaries). Called whenever the selection changes.
+    std::function<CentreSum(const CentreSum& own)> sum_centres;
+    /// After stage 3, before SSAO and post: combines the G-buffer over all renderers and returns
+    /// whether this renderer runs the screen-space passes on it (false: its final image is left
+    /// unwritten). Timed as stage "composite".
+    std::function<bool(const SceneTargets& scene)> combine_scene;
+};
+
 inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border = 4, flag_edge = 8, flag_shell_cut = 16;
 
 class CutawayRenderer {
@@ -72,6 +93,13 @@ public:
     /// ACTNUM are read again: its corner depths may be released (CornerPointGrid::release_corner_depths).
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale, int width,
                     int height);
+    /// One block of a larger model (src/distributed/): `frame` is the whole model's (every block
+    /// draws in the same render space and camera), `classes` the block's faces classified with the
+    /// cells around the block, so its cut boundary is not drawn as shell.
+    CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
+                    const grid::FaceClassification& classes, int width, int height);
+
+    void set_hooks(FrameHooks hooks) { hooks_ = std::move(hooks); }
 
     const ModelFrame& frame() const { return frame_; }
     int width() const { return width_; }
@@ -141,6 +169,8 @@ private:
     void selection_changed();
     /// Reads the selection back to primary_flags_ and primary_centroid_ if a GPU selection changed it.
     void sync_selection_to_cpu();
+    /// primary_centroid_ from primary_flags_ (summed over renderers by the hooks, if set).
+    void set_primary_centroid();
 
     const gl::ShaderLibrary& shaders_;
     int width_, height_;
@@ -180,6 +210,7 @@ private:
     bool frozen_valid_ = false;
     bool last_filtered_ = false;
     gl::StageTimer timer_;
+    FrameHooks hooks_;
 };
 
 /// Largest image side the current context can render (GL_MAX_TEXTURE_SIZE, GL_MAX_VIEWPORT_DIMS).

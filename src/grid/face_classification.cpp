@@ -1,6 +1,7 @@
 #include "grid/face_classification.h"
 
 #include <cmath>
+#include <utility>
 
 #include "grid/cell_geometry.h"
 
@@ -40,6 +41,17 @@ FaceClassification::FaceClassification(const CornerPointGrid& grid, double toler
                         ++(face == FaceClass::fault ? counts_.fault : counts_.interior);
                 }
             }
+}
+
+FaceClassification::FaceClassification(std::vector<FaceClass> classes, double tolerance)
+    : classes_(std::move(classes)), tolerance_(tolerance) {
+    for (std::size_t face = 0; face < classes_.size(); ++face) {
+        const FaceClass c = classes_[face];
+        const bool plus = face % 2 == 1;
+        if (c == FaceClass::shell) ++counts_.shell;
+        else if (plus && c == FaceClass::fault) ++counts_.fault;
+        else if (plus && c == FaceClass::interior) ++counts_.interior;
+    }
 }
 
 double default_face_tolerance(const CornerPointGrid& grid) {

@@ -26,6 +26,10 @@ class FaceClassification {
 public:
     /// `tolerance`: largest corner depth difference still treated as a shared corner (model units).
     FaceClassification(const CornerPointGrid& grid, double tolerance);
+    /// Classes given cell-major, six per cell (e.g. a block's, classified together with the cells
+    /// around it: src/distributed/grid_block.h). Counted as above: each shell face, and interior
+    /// and fault faces at their plus side.
+    FaceClassification(std::vector<FaceClass> classes, double tolerance);
 
     FaceClass at(std::size_t cell, FaceSide side) const { return classes_[6 * cell + std::size_t(side)]; }
     const FaceCounts& counts() const { return counts_; }

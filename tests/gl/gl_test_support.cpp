@@ -114,9 +114,3 @@ pipeline::FrameSettings invariant_settings(std::mt19937& random) {
 }
 
 }  // namespace cutaway::test
-
-int main(int argc, char** argv) {
-    ::testing::InitGoogleTest(&argc, argv);
-    ::testing::AddGlobalTestEnvironment(new cutaway::test::GlEnvironment);
-    return RUN_ALL_TESTS();
-}

@@ -62,6 +62,7 @@ const gl::Texture& CutSeedPass::render_on_gpu(const CutSurfaceInputs& inputs) {
         inputs.grid.draw_faces(inputs.grid.primary_faces());
         glDepthFunc(GL_LESS);
     }
+    if (inputs.combine_seeds) inputs.combine_seeds(depth_);  // a max: widening (a max filter) commutes with it
     return depth_;
 }
 

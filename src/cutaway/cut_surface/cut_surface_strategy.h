@@ -43,6 +43,10 @@ struct CutSurfaceInputs {
     float cone_reference_depth = 0;
     SeedSource seeds = SeedSource::boxes;  ///< for the strategies that start from seeds
     PrimarySelection selection = {};
+    /// Set when the frame runs across several renderers (cutaway_renderer.h FrameHooks): replaces
+    /// the seed image (cut_seeds.h, DEPTH32F, larger = farther) by the per-pixel max over all of
+    /// them before any transform, so every renderer transforms the same seeds.
+    std::function<void(const gl::Texture& seeds)> combine_seeds = {};
 };
 
 class CutSurfaceStrategy {

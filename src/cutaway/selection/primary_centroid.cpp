@@ -14,9 +14,9 @@ constexpr std::size_t group_size = 256;
 PrimaryCentroid::PrimaryCentroid(const gl::ShaderLibrary& shaders)
     : program_(shaders.build({{GL_COMPUTE_SHADER, "selection/primary_centroid.comp"}})) {}
 
-glm::vec3 PrimaryCentroid::compute(const GridBuffers& grid) {
+CentreSum PrimaryCentroid::centre_sum(const GridBuffers& grid) {
     const std::size_t count = grid.primary_cells().count;
-    if (count == 0) return glm::vec3(0);
+    if (count == 0) return {};
     const std::size_t groups = (count + group_size - 1) / group_size;
     const std::size_t bytes = groups * sizeof(glm::vec4);
     if (partial_sums_.size_bytes() < bytes) partial_sums_ = gl::Buffer(bytes, nullptr);
@@ -31,9 +31,9 @@ glm::vec3 PrimaryCentroid::compute(const GridBuffers& grid) {
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     std::vector<glm::vec4> partial(groups);
     glGetNamedBufferSubData(partial_sums_.id(), 0, GLsizeiptr(bytes), partial.data());
-    glm::dvec3 sum(0);
-    for (const glm::vec4& p : partial) sum += glm::dvec3(p);
-    return glm::vec3(sum / double(count));
+    CentreSum sum{glm::dvec3(0), count};
+    for (const glm::vec4& p : partial) sum.sum += glm::dvec3(p);
+    return sum;
 }
 
 }  // namespace cutaway::pipeline

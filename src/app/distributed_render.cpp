@@ -1,0 +1,336 @@
+// `mpirun -np N cutaway render ...` (distributed_render.h). Every rank reads the whole model
+// (the GRDECL file or the generated preset), takes what must be global from it (model frame,
+// face tolerance, colour and primary ranges), keeps only its slab and frees the rest; the
+// renderer then holds and draws the slab only.
+#include "app/distributed_render.h"
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <new>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "app/model_source.h"
+#include "app/render_report.h"
+#include "app/run_context.h"
+#include "cutaway/cell_id_image.h"
+#include "cutaway/cut_surface/cut_surface_registry.h"
+#include "cutaway/cutaway_renderer.h"
+#include "distributed/mpi_session.h"
+#include "distributed/rank_blocks.h"
+#include "distributed/rank_renderer.h"
+#include "gl/gl_context.h"
+#include "gl/gl_error.h"
+#include "gl/image.h"
+#include "grid/face_classification.h"
+#include "grid/grdecl_error.h"
+#include "io/output_error.h"
+#include "io/staged_file.h"
+
+namespace cutaway::app {
+namespace {
+
+using nlohmann::json;
+
+/// Stages a distributed frame adds (CutawayRenderer's FrameHooks).
+const std::vector<std::string> combine_stages{"cut_combine", "composite"};
+
+void check_distributed_options(const RenderOptions& options) {
+    if (options.exact_check)
+        throw std::invalid_argument("--exact-check: not supported under mpirun (it recomputes the cut on one renderer)");
+    if (options.baseline) throw std::invalid_argument("--baseline: not supported under mpirun");
+}
+
+/// One rank's part of the run. Built in two steps: prepare() without collectives (every rank
+/// reads the whole model and checks everything a rank could fail on), then, once all ranks agree,
+/// start() builds the rank's renderer (collective: the IceT context) and frees the whole model.
+struct RankScene {
+    void prepare(const RenderOptions& options, const distributed::MpiSession& mpi) {
+        check_distributed_options(options);
+        const double rss_before = double(run_context::proc_status_bytes("VmRSS"));
+        model = load_model(options.model, options.model_memory_limit_bytes());
+        property = choose_property(model.grid, options);
+        ijk_box = choose_primary_range(model.grid, property, options);
+        frame = pipeline::make_model_frame(model.grid, options.z_scale);
+        check_view(frame, options);
+        axis = distributed::slab_axis_from_name(options.rank_slabs);
+        slab = distributed::split_into_slabs(model.grid, mpi.size(), axis)[std::size_t(mpi.rank())];
+        load_peak_bytes = double(run_context::proc_status_bytes("VmHWM")) - rss_before;
+        context = gl::create_context(options.context_options());
+        shaders = std::make_unique<gl::ShaderLibrary>(gl::ShaderLibrary::default_root());
+        const int limit = pipeline::max_image_side();
+        if (options.width > limit || options.height > limit)
+            throw std::invalid_argument("--size " + std::to_string(options.width) + " " + std::to_string(options.height) +
+                                        ": expected sides of at most " + std::to_string(limit) +
+                                        " (this GL's texture/viewport limit)");
+    }
+
+    void start(const RenderOptions& options) {
+        const auto setup_started = std::chrono::steady_clock::now();
+        rank.emplace(*shaders, model.grid, frame, slab, grid::default_face_tolerance(model.grid), options.width,
+                     options.height);
+        rank->set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
+        rank->select_range(property.primary_range, ijk_box);
+        glFinish();
+        setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
+        whole_cells = model.grid.cell_count();
+        whole_active = model.grid.active_count();
+        property.owned = {};
+        property.external = nullptr;
+        model.grid = {};  // the whole model goes; the slab stays
+        camera = pipeline::make_orbit_camera(frame, options.camera_pose(), options.width, options.height);
+        if (options.freeze_pose)
+            rank->renderer().freeze(pipeline::make_orbit_camera(frame, *options.freeze_pose, options.width, options.height));
+    }
+
+    LoadedModel model;
+    PropertyChoice property;
+    std::optional<grid::IjkBox> ijk_box;
+    pipeline::ModelFrame frame;
+    distributed::SlabAxis axis = distributed::SlabAxis::k;
+    grid::IjkBox slab;
+    double setup_seconds = 0, load_peak_bytes = 0;
+    std::size_t whole_cells = 0, whole_active = 0;
+    std::unique_ptr<gl::GlContext> context;
+    std::unique_ptr<gl::ShaderLibrary> shaders;
+    std::optional<distributed::RankRenderer> rank;
+    pipeline::Camera camera;
+};
+
+/// Exit code of `main` for an exception (app/main.cpp's mapping).
+int exit_code_of(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const grid::GrdeclError&) {
+        return 2;
+    } catch (const io::OutputError&) {
+        return 2;
+    } catch (const std::invalid_argument&) {
+        return 2;
+    } catch (const gl::GlError&) {
+        return 4;
+    } catch (const std::bad_alloc&) {
+        return 3;
+    } catch (...) {
+        return 1;
+    }
+}
+
+std::string message_of(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const std::bad_alloc&) {
+        return "out of memory (lower the input size or raise --memory-limit-gb)";
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "unknown error";
+    }
+}
+
+/// Per-frame exchange measurements of one rank.
+struct ExchangeTimes {
+    std::vector<double> allreduce_ms, allreduce_wait_ms, icet_ms, icet_wait_ms, icet_bytes, reduce_bytes;
+    void add(const distributed::ExchangeCosts& c) {
+        allreduce_ms.push_back(c.allreduce_ms);
+        allreduce_wait_ms.push_back(c.allreduce_wait_ms);
+        icet_ms.push_back(c.composite_ms);
+        icet_wait_ms.push_back(c.composite_wait_ms);
+        icet_bytes.push_back(double(c.icet_bytes_sent));
+        reduce_bytes.push_back(double(c.reduce_bytes_sent));
+    }
+};
+
+/// One rank's numbers, in the order of rank_fields (gathered at rank 0).
+std::vector<double> rank_numbers(const RankScene& scene, const json& stages, const ExchangeTimes& exchange,
+                                 const std::vector<std::string>& stage_order) {
+    const distributed::RankRenderer& rank = *scene.rank;
+    const grid::CornerPointGrid& g = rank.block().grid;
+    std::vector<double> numbers{double(g.cell_count()),
+                                double(g.active_count()),
+                                double(rank.renderer().primary_cell_count()),
+                                double(rank.renderer().gpu_memory_bytes()),
+                                double(g.geometry_bytes()),
+                                double(run_context::proc_status_bytes("VmHWM")),
+                                double(run_context::proc_status_bytes("VmRSS")),
+                                scene.load_peak_bytes,
+                                scene.model.load_seconds,
+                                scene.setup_seconds,
+                                median(exchange.allreduce_ms),
+                                median(exchange.icet_ms),
+                                median(exchange.icet_bytes),
+                                median(exchange.reduce_bytes),
+                                median(exchange.allreduce_wait_ms),
+                                median(exchange.icet_wait_ms)};
+    const grid::IjkBox& b = rank.block().box;
+    for (int bound : {b.i0, b.j0, b.k0, b.i1, b.j1, b.k1}) numbers.push_back(double(bound));
+    for (const std::string& name : stage_order) numbers.push_back(stages["stages_ms"][name].get<double>());
+    return numbers;
+}
+
+const std::vector<std::string> rank_fields{"cells", "active_cells", "primary_cells", "gpu_memory_bytes",
+                                           "block_geometry_bytes", "peak_rss_bytes", "rss_bytes_after_frames",
+                                           "load_peak_bytes", "model_load_s", "renderer_setup_s",
+                                           "allreduce_mpi_ms", "icet_composite_ms", "icet_bytes_sent",
+                                           "shell_reduce_bytes_sent", "allreduce_wait_ms", "icet_wait_ms", "box_i0", "box_j0", "box_k0", "box_i1",
+                                           "box_j1", "box_k1"};
+
+/// Position of `field` in rank_fields.
+std::size_t field_index(const std::string& field) {
+    return std::size_t(std::find(rank_fields.begin(), rank_fields.end(), field) - rank_fields.begin());
+}
+
+json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene, const std::vector<double>& gathered,
+                      const std::vector<std::string>& stage_order, std::size_t allreduce_message_bytes) {
+    const std::size_t per_rank = rank_fields.size() + stage_order.size();
+    json ranks = json::array();
+    std::vector<double> allreduce, icet, composite, cut_combine, allreduce_wait, icet_wait;
+    double icet_bytes = 0, reduce_bytes = 0;
+    for (int r = 0; r < mpi.size(); ++r) {
+        const double* n = &gathered[std::size_t(r) * per_rank];
+        json rank = {{"rank", r}};
+        for (std::size_t f = 0; f < rank_fields.size(); ++f) rank[rank_fields[f]] = n[f];
+        json stages = json::object();
+        for (std::size_t s = 0; s < stage_order.size(); ++s) stages[stage_order[s]] = n[rank_fields.size() + s];
+        rank["stages_ms"] = stages;
+        ranks.push_back(rank);
+        allreduce.push_back(n[field_index("allreduce_mpi_ms")]);
+        icet.push_back(n[field_index("icet_composite_ms")]);
+        allreduce_wait.push_back(n[field_index("allreduce_wait_ms")]);
+        icet_wait.push_back(n[field_index("icet_wait_ms")]);
+        icet_bytes += n[field_index("icet_bytes_sent")];
+        reduce_bytes += n[field_index("shell_reduce_bytes_sent")];
+        cut_combine.push_back(stages["cut_combine"].get<double>());
+        composite.push_back(stages["composite"].get<double>());
+    }
+    const auto max_of = [](const std::vector<double>& v) { return *std::max_element(v.begin(), v.end()); };
+    return {{"ranks", mpi.size()},
+            {"slab_axis", distributed::slab_axis_name(scene.axis)},
+            {"per_rank", ranks},
+            {"allreduce_ms", max_of(allreduce)},
+            {"composite_ms", max_of(icet)},
+            {"allreduce_wait_ms", max_of(allreduce_wait)},
+            {"composite_wait_ms", max_of(icet_wait)},
+            {"cut_combine_stage_ms", max_of(cut_combine)},
+            {"composite_stage_ms", max_of(composite)},
+            {"bytes_per_frame",
+             {{"allreduce_message_per_rank", allreduce_message_bytes},
+              {"allreduce_sent_per_rank_estimate", mpi.size() > 1 ? 2.0 * double(mpi.size() - 1) / mpi.size() * double(allreduce_message_bytes) : 0.0},
+              {"icet_sent_all_ranks", icet_bytes},
+              {"shell_reduce_sent_all_ranks", reduce_bytes}}},
+            {"notes",
+             {{"allreduce_ms", "slowest rank's median MPI_Allreduce(MAX) of the cut and rear-shell depth (the MPI call only, after a barrier)"},
+              {"allreduce_wait_ms", "longest median wait in the barrier before the allreduce: load imbalance of stage 1"},
+              {"composite_wait_ms", "longest median wait in the barrier before IceT: load imbalance of stages 2 and 3"},
+              {"composite_ms", "slowest rank's median of the two IceT Z-buffer composites plus the shell-depth MPI_Reduce(MIN)"},
+              {"cut_combine_stage_ms", "the fenced stage: GPU read-back, allreduce, upload and the cut resolve pass"},
+              {"composite_stage_ms", "the fenced stage: G-buffer read-back, packing, IceT, upload at rank 0"},
+              {"allreduce_sent_per_rank_estimate", "2(N-1)/N x message (ring/Rabenseifner bound); MPI reports no byte count"},
+              {"icet_sent_all_ranks", "ICET_BYTES_SENT summed over ranks and both composites"},
+              {"model_load", "every rank reads or generates the whole model, then keeps its slab: load_peak_bytes is the whole model's; rss_bytes_after_frames is the slab's"}}}};
+}
+
+int render_frames(const RenderOptions& options, const distributed::MpiSession& mpi, RankScene& scene) {
+    scene.start(options);
+    distributed::RankRenderer& rank = *scene.rank;
+    const pipeline::FrameSettings settings = options.frame_settings();
+    for (int i = 0; i < options.warmup; ++i) rank.render(settings, scene.camera);
+    std::vector<pipeline::FrameTimes> runs;
+    ExchangeTimes exchange;
+    for (int i = 0; i < options.repeat; ++i) {
+        runs.push_back(rank.render(settings, scene.camera));
+        exchange.add(rank.last_exchange());
+    }
+    json stats = stage_statistics(runs, combine_stages);
+    std::vector<std::string> stage_order;
+    for (const auto& [name, value] : stats["stages_ms"].items()) stage_order.push_back(name);
+    const std::vector<double> gathered = mpi.gather(rank_numbers(scene, stats, exchange, stage_order));
+    const std::uint64_t primary_count = mpi.sum(rank.renderer().primary_cell_count());
+    const pipeline::FacesDrawn drawn = rank.renderer().faces_drawn();
+    const std::uint64_t faces_secondary = mpi.sum(drawn.secondary), faces_primary = mpi.sum(drawn.primary);
+    if (!mpi.root()) return 0;
+
+    gl::write_png(rank.renderer().read_image(), options.out);
+    if (!options.cell_ids.empty())
+        gl::write_png(pipeline::encode_cell_ids(rank.composited_ids(), options.width, options.height), options.cell_ids);
+    const PropertyChoice& property = scene.property;
+    if (primary_count == 0)
+        std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
+                  << property.primary_range.min << ", " << property.primary_range.max << "]; rendering the context only\n";
+    stats["faces_drawn"] = {{"secondary", faces_secondary}, {"primary", faces_primary}, {"summed_over_ranks", true}};
+    stats["cut_device"] = pipeline::find_cut_surface(settings.strategy).device;
+    stats["readback_bytes"] = 0;  // the strategy's own; the exchange's read-backs are in "distributed"
+    stats["frame_ms_unfenced"] = nullptr;
+    stats["frame_ms_unfenced_absent"] = "not measured under mpirun";
+    if (options.metrics)
+        for (const char* metric : {"primary_exposure", "context_kept"}) {
+            stats[metric] = nullptr;
+            stats[std::string(metric) + "_absent"] =
+                "not computed under mpirun (the metrics' extra frames are single-process; compare --cell-ids with a "
+                "single-process run instead)";
+        }
+    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(settings.strategy);
+    stats["strategy"] = {{"name", strategy.name}, {"device", strategy.device}, {"why", strategy.why}};
+    stats["gl_renderer"] = gl::gl_renderer();
+    stats["gl_version"] = gl::gl_version();
+    stats["gl_platform"] = scene.context->platform();
+    stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["git_revision"] = run_context::git_revision();
+    stats["size"] = {options.width, options.height};
+    stats["cells"] = scene.whole_cells;
+    stats["active_cells"] = scene.whole_active;
+    stats["primary_cells"] = primary_count;
+    stats["model"] = scene.model.description;
+    stats["model_load_s"] = scene.model.load_seconds;
+    stats["renderer_setup_s"] = scene.setup_seconds;
+    stats["property"] = {{"name", property.label}, {"primary_range", {property.primary_range.min, property.primary_range.max}},
+                         {"colour_range", {property.colour_range.min, property.colour_range.max}}};
+    stats["configuration"] = options.describe();
+    stats["configuration"]["rank_slabs"] = options.rank_slabs;
+    stats["warmup"] = options.warmup;
+    stats["repeat"] = options.repeat;
+    stats["distributed"] = distributed_json(mpi, scene, gathered, stage_order, rank.last_exchange().allreduce_bytes);
+    if (!options.stats.empty()) io::write_file(options.stats, stats.dump(2) + '\n');
+    std::cout << "cutaway render: " << options.out << " (" << primary_count << " primary cells, " << mpi.size()
+              << " ranks, total " << stats["stages_ms"]["total"].get<double>() << " ms median of " << options.repeat
+              << ")\n";
+    return 0;
+}
+
+}  // namespace
+
+int run_distributed_render(const RenderOptions& options) {
+    const distributed::MpiSession mpi;
+    // Every rank builds its part without collectives, then all agree: a failure on any rank ends
+    // all of them with rank 0 reporting it (the ranks check the same inputs, so an input error is
+    // reported once).
+    RankScene scene;
+    std::exception_ptr failure;
+    try {
+        scene.prepare(options, mpi);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    const std::string error = mpi.first_error(failure ? message_of(failure) : std::string());
+    const int code = int(mpi.max(failure ? double(exit_code_of(failure)) : 0.0));
+    if (!error.empty()) {
+        if (mpi.root()) std::cerr << "cutaway: " << error << '\n';
+        return code;
+    }
+    try {
+        return render_frames(options, mpi, scene);
+    } catch (...) {
+        // Mid-frame a rank may fail alone while the others wait in a collective: end them all.
+        std::cerr << "cutaway: rank " << mpi.rank() << " of " << mpi.size() << ": " << message_of(std::current_exception())
+                  << '\n';
+        mpi.abort(exit_code_of(std::current_exception()));
+    }
+}
+
+}  // namespace cutaway::app

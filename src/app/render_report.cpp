@@ -1,0 +1,84 @@
+#include "app/render_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "app/option_checks.h"
+
+namespace cutaway::app {
+
+using nlohmann::json;
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0;
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+json stage_statistics(const std::vector<pipeline::FrameTimes>& runs, const std::vector<std::string>& extra_stages) {
+    json wall = json::object(), query = json::object(), valid = json::object();
+    std::vector<std::string> names(std::begin(pipeline::stage_names), std::end(pipeline::stage_names));
+    names.insert(names.end(), extra_stages.begin(), extra_stages.end());
+    names.push_back("total");
+    for (const std::string& name : names) {
+        std::vector<double> walls, queries;
+        bool all_valid = true;
+        for (const pipeline::FrameTimes& run : runs) {
+            const gl::StageTime* found = name == "total" ? &run.total : nullptr;
+            for (const gl::StageTime& stage : run.stages)
+                if (stage.stage == name) found = &stage;
+            walls.push_back(found ? found->wall_ms : 0.0);
+            queries.push_back(found ? found->gl_query_ms : 0.0);
+            all_valid = all_valid && (!found || found->gl_query_valid);
+        }
+        wall[name] = median(walls);
+        query[name] = median(queries);
+        valid[name] = all_valid;
+    }
+    json all_runs = json::array();
+    for (const pipeline::FrameTimes& run : runs) all_runs.push_back(run.total.wall_ms);
+    return {{"stages_ms", wall}, {"gl_query_ms", query}, {"gl_query_valid_by_stage", valid},
+            {"gl_query_valid", std::all_of(valid.begin(), valid.end(), [](const json& v) { return v.get<bool>(); })},
+            {"total_ms_per_run", all_runs}};
+}
+
+json faces_drawn_json(const pipeline::FacesDrawn& drawn) {
+    json faces = {{"secondary", drawn.secondary}, {"primary", drawn.primary}, {"shell_contours", drawn.shell_contours}};
+    if (drawn.culling) {
+        const pipeline::CullingCounts& c = *drawn.culling;
+        faces["culling"] = {{"bricks", c.bricks}, {"bricks_culled", c.bricks_culled}, {"cells_culled", c.cells_culled},
+                            {"cells_behind_cut", c.cells_behind}, {"cells_straddling_cut", c.cells_straddling},
+                            {"faces_selected", c.faces_requested}};
+    }
+    return faces;
+}
+
+void put_metric(json& stats, const std::string& key, double fraction, std::size_t denominator, const std::string& why_absent) {
+    if (denominator > 0) {
+        stats[key] = fraction;
+        return;
+    }
+    stats[key] = nullptr;
+    stats[key + "_absent"] = why_absent;
+}
+
+void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options) {
+    const glm::vec3 extent = frame.render_max - frame.render_min;
+    const bool finite = std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z) &&
+                        std::isfinite(frame.radius());
+    if (!finite || !(std::max(extent.x, extent.y) > 0))
+        throw std::invalid_argument(
+            options.model.front() + ": expected a model with a finite, non-zero horizontal extent in single precision " +
+            "(render units), found " + number_text(extent.x) + " x " + number_text(extent.y) + " x " + number_text(extent.z));
+    for (const auto& [option, pose] : {std::pair{"--camera", std::optional(options.camera_pose())},
+                                       std::pair{"--freeze-camera", options.freeze_pose}})
+        if (pose && pose->distance > 0 && pose->distance < frame.radius())
+            throw std::invalid_argument(std::string(option) + ": expected DIST 0 (frame the model) or at least the model's radius " +
+                                        number_text(frame.radius()) + " (outside it), found " + number_text(pose->distance));
+}
+
+}  // namespace cutaway::app

@@ -1,0 +1,29 @@
+#pragma once
+// What `cutaway render` reports, shared by the single-process and the distributed run
+// (render_command.cpp, distributed_render.cpp): stage medians, faces drawn, metrics, view checks.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "app/render_options.h"
+#include "cutaway/cutaway_renderer.h"
+
+namespace cutaway::app {
+
+double median(std::vector<double> values);
+
+/// Median over repetitions of each stage's wall and query times (pipeline::stage_names, then
+/// `extra_stages`, then total), plus validity of all.
+nlohmann::json stage_statistics(const std::vector<pipeline::FrameTimes>& runs, const std::vector<std::string>& extra_stages = {});
+
+nlohmann::json faces_drawn_json(const pipeline::FacesDrawn& drawn);
+
+/// A metric's value, or null with KEY_absent saying why when its denominator is zero (0/0 is not 1).
+void put_metric(nlohmann::json& stats, const std::string& key, double fraction, std::size_t denominator,
+                const std::string& why_absent);
+
+/// Refuses a camera that would see nothing: a model without extent (all pillars at one x, y, or
+/// coordinates whose extent overflows single precision) or a DIST inside the model.
+void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options);
+
+}  // namespace cutaway::app
