@@ -1,17 +1,23 @@
 // Cutaway frame times over the paper's camera path (SPEC.md section 3), one GL context per process.
-//   BM_cutaway/pose/mean_filter/border/strategy/fraction_bp/draw/preset (preset varies slowest: one model load each)
+//   BM_cutaway/pose/aperture/mean_filter/border/strategy/fraction_bp/draw/preset (preset varies slowest: one model
+//     load each)
 //     preset: index into --presets; draw: index into --draws (visible | all-faces, the paper's path);
 //     fraction_bp: primary fraction in basis points (100 = 1%);
 //     strategy: index into the cut-surface registry (filtered by --strategies); border: 0 raycast,
-//     1 threshold; mean_filter: k (0 = off); pose: -1 = the whole path, else one pose (--per_pose).
+//     1 threshold; mean_filter: k (0 = off); aperture: full opening angle in degrees (--apertures; -1 =
+//     each pose's own along the path); pose: -1 = the whole path, else one pose (--per_pose).
 //     Each iteration renders one pose of the path (warm-up passes first); the manual time is the
 //     fenced wall time of the whole frame. Counters: median over the timed frames of the fenced
-//     ms per stage, baseline (median plain shaded frame of the same poses, same draw mode),
+//     ms per stage, baseline (median plain shaded frame of the same poses, same draw mode; not with
+//     --baseline=0),
 //     faces_secondary / faces_baseline (faces stage 2 and the plain frame drew, last pose),
-//     gl_query_valid (1 only if every GL query agreed).
-//   BM_baseline/preset: the plain shaded frame over the same path.
-//   BM_cpu_reference/strategy/fraction_bp/preset: for each chosen strategy computed on the GPU that
-//     has a CPU reference (the cone-field transforms), the CPU path it replaces: seed pass, seed
+//     gl_query_valid (1 only if every GL query agreed), primary_pixels (the primaries' screen
+//     footprint: visible primary pixels of each timed frame, median; read after the frame's fence,
+//     outside its time), readback_bytes (the cut stage's read-back per frame, the largest seen).
+//   BM_baseline/preset: the plain shaded frame over the same path (not with --baseline=0).
+//   BM_cpu_reference/aperture/strategy/fraction_bp/preset: for each chosen strategy computed on the GPU
+//     that has a CPU reference (the cone-field transforms; --cpu_references narrows them), the CPU path
+//     it replaces: seed pass, seed
 //     read-back and the CPU transform (cone_field/), fenced wall time per frame over the same path
 //     (compare with BM_cutaway's cut_surface counter; the CPU path's upload is not included).
 // Each benchmark checks its own output: at least one primary cell and visible primary pixels.
@@ -106,10 +112,14 @@ std::vector<pipeline::Camera> path_cameras(const pipeline::CutawayRenderer& rend
     return cameras;
 }
 
-/// The poses one benchmark renders: the whole path, or only pose `index` (>= 0).
-std::vector<bench::PathPose> poses_for(const bench::CutawayBenchOptions& options, std::int64_t index) {
+/// The poses one benchmark renders: the whole path, or only pose `index` (>= 0); with an aperture
+/// (full opening angle, degrees; -1 = keep each pose's own).
+std::vector<bench::PathPose> poses_for(const bench::CutawayBenchOptions& options, std::int64_t index,
+                                       std::int64_t aperture_deg) {
     std::vector<bench::PathPose> path = bench::camera_path(options.poses);
     if (index >= 0) path = {path.at(std::size_t(index))};
+    if (aperture_deg >= 0)
+        for (bench::PathPose& pose : path) pose.aperture_deg = float(aperture_deg);
     return path;
 }
 
@@ -121,21 +131,21 @@ struct BenchSetup {
 
 void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     const bench::CutawayBenchOptions& options = setup.options;
-    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(6))));
-    const std::size_t primaries = select_fraction(scene, double(state.range(4)) / 10000.0);
+    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(7))));
+    const std::size_t primaries = select_fraction(scene, double(state.range(5)) / 10000.0);
     if (primaries == 0) {
         state.SkipWithError("no primary cells selected");
         return;
     }
     pipeline::CutawayRenderer& renderer = *scene.renderer;
     pipeline::FrameSettings settings;
-    settings.strategy = setup.strategies.at(std::size_t(state.range(3)));
-    settings.border = state.range(2) ? pipeline::BorderMode::threshold : pipeline::BorderMode::raycast;
-    settings.mean_filter = int(state.range(1));
+    settings.strategy = setup.strategies.at(std::size_t(state.range(4)));
+    settings.border = state.range(3) ? pipeline::BorderMode::threshold : pipeline::BorderMode::raycast;
+    settings.mean_filter = int(state.range(2));
     settings.line_width_px = 1;
-    settings.ssao = true;
-    settings.draw = draw_mode(options.draws.at(std::size_t(state.range(5))));
-    const std::vector<bench::PathPose> path = poses_for(options, state.range(0));
+    settings.ssao = options.ssao;
+    settings.draw = draw_mode(options.draws.at(std::size_t(state.range(6))));
+    const std::vector<bench::PathPose> path = poses_for(options, state.range(0), state.range(1));
     const std::vector<pipeline::Camera> cameras = path_cameras(renderer, path);
     auto frame = [&](std::size_t k) {
         settings.aperture_h_deg = settings.aperture_v_deg = path[k].aperture_deg;
@@ -145,11 +155,15 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     for (int w = 0; w < options.warmup; ++w)
         for (std::size_t k = 0; k < path.size(); ++k) frame(k);
     std::map<std::string, std::vector<double>> stage_times;  // one entry per timed frame (0: stage not run)
+    std::vector<double> primary_pixels;                       // per timed frame
+    std::size_t readback_bytes = 0;
     bool queries_valid = true;
     std::size_t k = 0;
     for (auto _ : state) {
         const pipeline::FrameTimes times = frame(k++ % path.size());
         state.SetIterationTime(times.total.wall_ms / 1000.0);
+        readback_bytes = std::max(readback_bytes, renderer.cut_readback_bytes());
+        primary_pixels.push_back(double(visible_primary_pixels(renderer)));
         for (const char* name : pipeline::stage_names) stage_times[name].push_back(0.0);
         for (const gl::StageTime& stage : times.stages) {
             stage_times[stage.stage].back() += stage.wall_ms;
@@ -157,31 +171,33 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
         }
         stage_times["total"].push_back(times.total.wall_ms);
     }
-    const std::size_t primary_pixels = visible_primary_pixels(renderer);
-    if (primary_pixels == 0) state.SkipWithError("no primary pixel visible in the last frame");
+    if (primary_pixels.back() == 0) state.SkipWithError("no primary pixel visible in the last frame");
     const double faces_secondary = double(renderer.faces_drawn().secondary);
 
-    std::vector<double> baseline;
-    for (const pipeline::Camera& camera : cameras) baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
-    const double baseline_ms = median(baseline);
     for (const auto& [name, times] : stage_times) state.counters[name] = median(times);
-    state.counters["baseline"] = baseline_ms;
-    state.counters["total_over_baseline"] = median(stage_times["total"]) / baseline_ms;
     state.counters["faces_secondary"] = faces_secondary;
-    state.counters["faces_baseline"] = double(renderer.faces_drawn().secondary);
+    if (options.baseline) {
+        std::vector<double> baseline;
+        for (const pipeline::Camera& camera : cameras) baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
+        const double baseline_ms = median(baseline);
+        state.counters["baseline"] = baseline_ms;
+        state.counters["total_over_baseline"] = median(stage_times["total"]) / baseline_ms;
+        state.counters["faces_baseline"] = double(renderer.faces_drawn().secondary);
+    }
     state.counters["gl_query_valid"] = queries_valid ? 1 : 0;
     state.counters["primary_cells"] = double(primaries);
-    state.counters["primary_pixels"] = double(primary_pixels);
+    state.counters["primary_pixels"] = median(primary_pixels);
+    state.counters["readback_bytes"] = double(readback_bytes);
     state.counters["cells"] = double(scene.model->grid.active_count());
-    if (path.size() == 1) state.counters["aperture_deg"] = path.front().aperture_deg;
-    state.SetLabel(options.presets.at(std::size_t(state.range(6))) + " " + pipeline::to_string(settings.draw) + " " +
+    if (path.size() == 1 || state.range(1) >= 0) state.counters["aperture_deg"] = path.front().aperture_deg;
+    state.SetLabel(options.presets.at(std::size_t(state.range(7))) + " " + pipeline::to_string(settings.draw) + " " +
                    settings.strategy + " " +
                    pipeline::to_string(settings.border) + " mean_filter " + std::to_string(settings.mean_filter));
 }
 
 void bm_baseline(benchmark::State& state, const BenchSetup& setup) {
     Scene& scene = setup.cache.scene(setup.options.presets.at(std::size_t(state.range(0))));
-    const std::vector<pipeline::Camera> cameras = path_cameras(*scene.renderer, poses_for(setup.options, -1));
+    const std::vector<pipeline::Camera> cameras = path_cameras(*scene.renderer, poses_for(setup.options, -1, -1));
     for (int w = 0; w < setup.options.warmup; ++w)
         for (const pipeline::Camera& camera : cameras) scene.renderer->render_baseline(camera);
     std::size_t k = 0;
@@ -192,15 +208,15 @@ void bm_baseline(benchmark::State& state, const BenchSetup& setup) {
 
 void bm_cpu_reference(benchmark::State& state, const BenchSetup& setup) {
     const bench::CutawayBenchOptions& options = setup.options;
-    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(2))));
-    if (select_fraction(scene, double(state.range(1)) / 10000.0) == 0) {
+    Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(3))));
+    if (select_fraction(scene, double(state.range(2)) / 10000.0) == 0) {
         state.SkipWithError("no primary cells selected");
         return;
     }
-    const pipeline::CutSurfaceEntry entry = pipeline::find_cut_surface(setup.strategies.at(std::size_t(state.range(0))));
+    const pipeline::CutSurfaceEntry entry = pipeline::find_cut_surface(setup.strategies.at(std::size_t(state.range(1))));
     pipeline::FrameSettings settings;
     settings.strategy = entry.name;
-    const std::vector<bench::PathPose> path = poses_for(options, -1);
+    const std::vector<bench::PathPose> path = poses_for(options, -1, state.range(0));
     const std::vector<pipeline::Camera> cameras = path_cameras(*scene.renderer, path);
     auto frame_ms = [&](std::size_t k) {
         settings.aperture_h_deg = settings.aperture_v_deg = path[k].aperture_deg;
@@ -220,7 +236,7 @@ void bm_cpu_reference(benchmark::State& state, const BenchSetup& setup) {
         state.SetIterationTime(times.back() / 1000.0);
     }
     state.counters["cpu_reference_ms"] = median(times);
-    state.SetLabel(options.presets.at(std::size_t(state.range(2))) + " " + entry.name + " (CPU reference)");
+    state.SetLabel(options.presets.at(std::size_t(state.range(3))) + " " + entry.name + " (CPU reference)");
 }
 
 std::vector<std::string> chosen_strategies(const std::vector<std::string>& requested) {
@@ -241,28 +257,36 @@ std::vector<std::int64_t> indices(const std::vector<T>& items) {
     return out;
 }
 
+bool wants_cpu_reference(const std::vector<std::string>& requested, const std::string& name) {
+    return std::any_of(requested.begin(), requested.end(), [&](const std::string& r) { return r == "all" || r == name; });
+}
+
 void register_benchmarks(const BenchSetup& setup) {
     const bench::CutawayBenchOptions& o = setup.options;
     std::vector<std::int64_t> fractions_bp, borders, mean_filters(o.mean_filters.begin(), o.mean_filters.end());
     for (double f : o.fractions) fractions_bp.push_back(std::llround(f * 10000.0));
     for (const std::string& b : o.borders) borders.push_back(b == "threshold" ? 1 : 0);
-    std::vector<std::int64_t> poses{-1};
+    std::vector<std::int64_t> poses{-1}, apertures(o.apertures.begin(), o.apertures.end());
     if (o.per_pose) poses = indices(bench::camera_path(o.poses));
+    if (apertures.empty()) apertures = {-1};
     const std::int64_t iterations = std::int64_t(o.repeat) * (o.per_pose ? 1 : o.poses);
     benchmark::RegisterBenchmark("BM_cutaway", [&setup](benchmark::State& s) { bm_cutaway(s, setup); })
-        ->ArgNames({"pose", "mean_filter", "border", "strategy", "fraction_bp", "draw", "preset"})  // first varies fastest
-        ->ArgsProduct({poses, mean_filters, borders, indices(setup.strategies), fractions_bp, indices(o.draws), indices(o.presets)})
+        ->ArgNames({"pose", "aperture", "mean_filter", "border", "strategy", "fraction_bp", "draw", "preset"})  // first varies fastest
+        ->ArgsProduct({poses, apertures, mean_filters, borders, indices(setup.strategies), fractions_bp, indices(o.draws),
+                       indices(o.presets)})
         ->Iterations(iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
     std::vector<std::int64_t> with_reference;  // GPU strategies with a CPU reference
     for (std::size_t i = 0; i < setup.strategies.size(); ++i) {
         const pipeline::CutSurfaceEntry entry = pipeline::find_cut_surface(setup.strategies[i]);
-        if (entry.device == "gpu" && entry.cpu_reference) with_reference.push_back(std::int64_t(i));
+        if (entry.device == "gpu" && entry.cpu_reference && wants_cpu_reference(o.cpu_references, entry.name))
+            with_reference.push_back(std::int64_t(i));
     }
     if (!with_reference.empty())
         benchmark::RegisterBenchmark("BM_cpu_reference", [&setup](benchmark::State& s) { bm_cpu_reference(s, setup); })
-            ->ArgNames({"strategy", "fraction_bp", "preset"})
-            ->ArgsProduct({with_reference, fractions_bp, indices(o.presets)})
+            ->ArgNames({"aperture", "strategy", "fraction_bp", "preset"})
+            ->ArgsProduct({apertures, with_reference, fractions_bp, indices(o.presets)})
             ->Iterations(std::int64_t(o.repeat) * o.poses)->UseManualTime()->Unit(benchmark::kMillisecond);
+    if (!o.baseline) return;
     benchmark::RegisterBenchmark("BM_baseline", [&setup](benchmark::State& s) { bm_baseline(s, setup); })
         ->ArgNames({"preset"})->ArgsProduct({indices(o.presets)})
         ->Iterations(std::int64_t(o.repeat) * o.poses)->UseManualTime()->Unit(benchmark::kMillisecond);
@@ -285,6 +309,9 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
     benchmark::AddCustomContext("presets", join(o.presets));
     benchmark::AddCustomContext("strategies", join(strategies));
     benchmark::AddCustomContext("draws", join(o.draws));
+    std::vector<std::string> apertures;
+    for (const int a : o.apertures) apertures.push_back(std::to_string(a));
+    benchmark::AddCustomContext("apertures_deg", apertures.empty() ? "camera path" : join(apertures));
     benchmark::AddCustomContext("statistic", "counters: median over the timed frames (poses x repeat)");
     std::string path;
     for (const bench::PathPose& p : bench::camera_path(o.poses))
@@ -293,7 +320,9 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
     benchmark::AddCustomContext("camera_path_az_el_aperture_deg", path);
     benchmark::AddCustomContext("warmup_passes", std::to_string(o.warmup));
     benchmark::AddCustomContext("timed_passes", std::to_string(o.repeat));
-    benchmark::AddCustomContext("frame_settings", "line width 1 px, SSAO on, border width 1 px, distance framing the model");
+    benchmark::AddCustomContext("frame_settings", std::string("line width 1 px, SSAO ") + (o.ssao ? "on" : "off") +
+                                                      ", border width 1 px, distance framing the model");
+    benchmark::AddCustomContext("baseline_frames", o.baseline ? "timed" : "skipped (--baseline=0)");
 }
 
 }  // namespace
@@ -302,6 +331,8 @@ int main(int argc, char** argv) {
     try {
         const bench::CutawayBenchOptions options = bench::take_bench_options(argc, argv);
         const std::vector<std::string> strategies = chosen_strategies(options.strategies);
+        for (const std::string& name : options.cpu_references)
+            if (name != "all" && name != "none") pipeline::find_cut_surface(name);  // throws for unknown names
         const std::unique_ptr<gl::GlContext> context = gl::create_context(gl::ContextOptions{});
         const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
         SceneCache cache(shaders, options.width, options.height);

@@ -72,12 +72,13 @@ class Experiment:
             with open(stats_path) as f:
                 return json.load(f)
 
-    def benchmark(self, *flags):
-        """`bench_cutaway FLAGS` with JSON output; returns the parsed document (context + benchmarks)."""
+    def benchmark(self, *flags, progress=False):
+        """`bench_cutaway FLAGS` with JSON output; returns the parsed document (context + benchmarks).
+        `progress`: let its console table through (one line per finished benchmark), for long runs."""
         with tempfile.TemporaryDirectory(prefix="cutaway-bench-") as scratch:
             out = os.path.join(scratch, "bench.json")
             subprocess.run([self.bench, *map(str, flags), "--benchmark_out=" + out, "--benchmark_out_format=json"],
-                           check=True, stdout=subprocess.DEVNULL)
+                           check=True, stdout=None if progress else subprocess.DEVNULL)
             with open(out) as f:
                 return json.load(f)
 
@@ -93,23 +94,27 @@ def benchmark_context(document):
     """The benchmark JSON's context, reduced to what results record."""
     keep = ("gl_renderer", "gl_version", "LP_NUM_THREADS", "git_revision", "uname", "resolution", "host_name",
             "num_cpus", "mhz_per_cpu", "camera_path_az_el_aperture_deg", "warmup_passes", "timed_passes",
-            "frame_settings", "cutaway_build_type", "date", "strategies")
+            "frame_settings", "cutaway_build_type", "date", "strategies", "apertures_deg")
     return {k: v for k, v in document["context"].items() if k in keep}
 
 
 def cutaway_runs(document):
-    """BM_cutaway rows of a benchmark document as dicts: preset, pose (-1 = path), stage ms, counters."""
+    """BM_cutaway rows of a benchmark document as dicts: preset, pose (-1 = path), strategy, primary
+    fraction, aperture (degrees, -1 = the path's own), stage ms, counters."""
     presets = document["context"]["presets"].split(",")
     draws = document["context"].get("draws", "visible").split(",")
+    strategies = document["context"].get("strategies", "").split(",")
     rows = []
     for bench in document["benchmarks"]:
         if not bench["name"].startswith("BM_cutaway/") or bench.get("error_occurred"):
             continue
         args = dict(part.split(":") for part in bench["name"].split("/")[1:] if ":" in part)
         row = {"preset": presets[int(args["preset"])], "pose": int(args["pose"]), "label": bench.get("label"),
-               "draw": draws[int(args.get("draw", 0))], "stages_ms": {s: bench.get(s, 0.0) for s in STAGES + ("total",)}}
+               "draw": draws[int(args.get("draw", 0))], "strategy": strategies[int(args.get("strategy", 0))],
+               "primary_fraction": int(args.get("fraction_bp", 0)) / 10000, "aperture": int(args.get("aperture", -1)),
+               "stages_ms": {s: bench.get(s, 0.0) for s in STAGES + ("total",)}}
         for key in ("baseline", "total_over_baseline", "gl_query_valid", "primary_cells", "primary_pixels", "cells",
-                    "aperture_deg", "faces_secondary", "faces_baseline"):
+                    "aperture_deg", "faces_secondary", "faces_baseline", "readback_bytes"):
             if key in bench:
                 row[key] = bench[key]
         rows.append(row)

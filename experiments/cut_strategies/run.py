@@ -1,178 +1,350 @@
 #!/usr/bin/env python3
-"""Cut-surface strategies: time, error against the exact cone field, exposure, context, per primary count.
+"""Cut-surface strategies compared fairly: stage-1 time, error against the exact cone field, exposure, context.
 
 Interface (for experiments/run_all):
   experiments/cut_strategies/run.py [--quick] [--force] [--build DIR]
-Writes results/cut_strategies/results.json (one row per preset x primary fraction x strategy;
-machine context), results/cut_strategies/README.md (the primary count from which the fastest
-distance-transform strategy is cheaper than the frustum union, computed from the rows) and
-paper_figures/cut_strategies_time.png. Skips when all exist unless --force. --quick: petra only,
-fractions 0.01 and 0.2, 480x270 pixels.
+Writes results/cut_strategies/results.json (one row per preset x primary fraction x strategy, the
+CPU paths the GPU transforms replace, the crossover, machine context), results/cut_strategies/README.md
+and paper_figures/cut_strategies_time.png (+ .pdf). Skips when all exist unless --force.
+--quick: petra only, fractions 1% and 20%, 480x270 for both steps (results/quick/, paper_figures/quick/).
 
-Protocol: every strategy of the registry (read from `cutaway render`'s answer to an unknown
-strategy, so a new strategy is timed without editing this script), presets zaphirus, petra,
-opharine, sapphire, primaries = the top 0.1%, 1%, 5%, 20% of PORO, 1920x1080, default camera and
-aperture, mean filter off, `--repeat 3` (stats hold medians) and `--exact-check` (the strategy's
-cut against the exact cone field from the same seeds, SPEC section 2). Time = the fenced wall time
-of the cut_surface stage, which for the CPU strategies includes the seed pass, its readback, the
-CPU cut and the upload.
+Protocol (SPEC.md section 2, issue 16):
+- Time: ONE bench_cutaway process (Google Benchmark) over the product preset (zaphirus, petra,
+  opharine, sapphire) x primary fraction (top 0.1%, 1%, 5%, 20% of PORO) x every registry strategy
+  x aperture 60 degrees (`cutaway render`'s default), at 1920x1080, mean filter and SSAO off (they
+  follow stage 1 and do not change its time), no plain-frame baseline, ray-cast borders, visible draw; the 2-pose camera path (azimuth/elevation 0/25 and 180/45 degrees), one
+  untimed pass then one timed frame per pose: counters are medians of 2 frames. One frame per
+  pose keeps the slowest configuration bounded (per-cell `frustum` at 20% of sapphire: about 2 min
+  a frame on llvmpipe). BM_cpu_reference times the CPU path jfa and jfa2 replaced (seed pass,
+  read-back, CPU transform) over the same frames. The primaries' screen footprint is the
+  benchmark's `primary_pixels` (visible primary pixels of the timed frames at 1920x1080, median),
+  taken from the `frustum` row (its exposure is 1.0: every primary pixel stays visible).
+- Quality: one `cutaway render --exact-check` per configuration at QUALITY_SIZE (the exact cone
+  field is a CPU reference), camera = the path's first pose, aperture 60: cut_vs_exact (wrong
+  pixels beyond the tolerance against the exact cone field from the same seeds), primary_exposure,
+  context_kept, primary_pixels (primaries-only frame at that size).
+- readback_bytes must be 0 for every GPU strategy in both steps (the script fails otherwise).
 """
-import json
 import os
-import re
-import subprocess
+import statistics
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
-import volume_experiment as vx  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import cutaway_experiment as cx  # noqa: E402
 
-RESULTS = os.path.join(vx.REPO, "results", "quick" if vx.QUICK else "", "cut_strategies")
-NOT_DISTANCE_TRANSFORMS = {"frustum", "frustum-clusters", "exact"}
-
-
-def strategy_names(cutaway):
-    """The registry's names, from the error `cutaway render` gives for an unknown strategy."""
-    answer = subprocess.run([cutaway, "render", "preset:zaphirus", "--strategy", "?", "--size", "16", "16",
-                             "--out", os.devnull, "--no-metrics", "--repeat", "1", "--warmup", "0"],
-                            capture_output=True, text=True)
-    found = re.search(r"expected one of ([^\n]+)", answer.stderr)
-    if answer.returncode == 0 or not found:
-        raise SystemExit("could not read the strategy names from cutaway render: " + answer.stderr)
-    return [name.strip() for name in found.group(1).split(",")]
+APERTURE_DEG = 60          # `cutaway render`'s default full opening angle
+POSES, WARMUP, REPEAT = 2, 1, 1
+FIRST_POSE = ("0", "25", "0")  # camera_path.h pose 0 (azimuth, elevation, framing distance)
+# Compared with the paper's per-cell frustum union at matched accuracy: the near-exact cone-field
+# transform (JFA^2, SPEC: at most 0.02% wrong) and the exact O(pixels) union of the frustums
+# (frustum-sweep, equal to the rasterised union: frustum_sweep_gl_test). The Chamfer masks, wrong on
+# most pixels, are timed and listed but not used for the crossover.
+ALTERNATIVES = ("jfa2", "frustum-sweep")
+PLOTTED = ("frustum", "frustum-clusters", "frustum-sweep", "jfa", "jfa2", "exact")
+MODEL_MARKERS = {"zaphirus": "o", "petra": "s", "opharine": "^", "sapphire": "D"}
+CPU_REFERENCES = ("jfa", "jfa2")
 
 
-def render(args, work, preset, fraction, strategy, size):
-    stats_path = os.path.join(work, "stats.json")
-    subprocess.run([args.cutaway, "render", f"preset:{preset}", "--primary-fraction", str(fraction),
-                    "--strategy", strategy, "--exact-check", "--stats", stats_path, "--repeat", "3",
-                    "--mean-filter", "0", "--size", str(size[0]), str(size[1]),
-                    "--out", os.path.join(work, "image.png")], check=True, stdout=subprocess.DEVNULL)
-    with open(stats_path) as f:
-        return json.load(f)
+def configuration(quick):
+    if quick:
+        return {"presets": ["petra"], "fractions": [0.01, 0.2], "size": (480, 270), "quality_size": (480, 270)}
+    return {"presets": list(cx.PRESETS), "fractions": [0.001, 0.01, 0.05, 0.2], "size": (1920, 1080),
+            "quality_size": (640, 360)}
+
+
+def bench_args(name):
+    """The arguments of a benchmark name 'BM_x/key:value/...' as ints."""
+    return {k: int(v) for k, v in (part.split(":") for part in name.split("/")[1:] if ":" in part)}
+
+
+def time_sweep(exp, config):
+    """The one bench_cutaway process: BM_cutaway rows keyed (preset, fraction, strategy), and the CPU
+    reference ms keyed the same way; plus the document (context)."""
+    size = config["size"]
+    document = exp.benchmark("--presets=" + ",".join(config["presets"]),
+                             "--fractions=" + ",".join(map(str, config["fractions"])), "--strategies=all",
+                             f"--apertures={APERTURE_DEG}", "--mean_filters=0", "--borders=raycast", "--draws=visible",
+                             f"--size={size[0]}x{size[1]}", f"--poses={POSES}", f"--warmup={WARMUP}",
+                             f"--repeat={REPEAT}", "--cpu_references=" + ",".join(CPU_REFERENCES), "--ssao=0",
+                             "--baseline=0", progress=True)
+    failed = [b["name"] + ": " + b.get("error_message", "") for b in document["benchmarks"] if b.get("error_occurred")]
+    if failed:
+        raise SystemExit("bench_cutaway reported errors:\n  " + "\n  ".join(failed))
+    timed = {(r["preset"], r["primary_fraction"], r["strategy"]): r for r in cx.cutaway_runs(document)}
+    presets = document["context"]["presets"].split(",")
+    strategies = document["context"]["strategies"].split(",")
+    cpu = {}
+    for bench in document["benchmarks"]:
+        if bench["name"].startswith("BM_cpu_reference/"):
+            a = bench_args(bench["name"])
+            cpu[(presets[a["preset"]], a["fraction_bp"] / 10000, strategies[a["strategy"]])] = bench["cpu_reference_ms"]
+    return document, timed, cpu, strategies
+
+
+def quality(exp, config, preset, fraction, strategy):
+    """One render with --exact-check at the quality size: the strategy's stats object."""
+    w, h = config["quality_size"]
+    return exp.render(f"preset:{preset}", "--primary-fraction", fraction, "--strategy", strategy, "--exact-check",
+                      "--mean-filter", 0, "--size", w, h, "--camera", *FIRST_POSE,
+                      "--aperture", APERTURE_DEG, APERTURE_DEG, "--warmup", 0, "--repeat", 1, metrics=True)
+
+
+def merge_row(preset, fraction, strategy, timed, stats):
+    device = stats["strategy"]["device"]
+    row = {"preset": preset, "primary_fraction": fraction, "strategy": strategy, "device": device,
+           "why": stats["strategy"]["why"], "cells": stats["active_cells"], "primary_cells": int(timed["primary_cells"]),
+           "cut_surface_ms": timed["stages_ms"]["cut_surface"], "total_ms": timed["stages_ms"]["total"],
+           "primary_pixels": int(timed["primary_pixels"]),
+           "readback_bytes": int(timed["readback_bytes"]), "gl_query_valid": timed.get("gl_query_valid"),
+           "quality": {"cut_vs_exact": stats["cut_vs_exact"], "primary_exposure": stats["primary_exposure"],
+                       "context_kept": stats["context_kept"], "primary_pixels": stats["primary_pixels"],
+                       "primary_cells": stats["primary_cells"], "readback_bytes": stats["readback_bytes"]}}
+    if device == "gpu" and (row["readback_bytes"] != 0 or stats["readback_bytes"] != 0):
+        raise SystemExit(f"{preset} {fraction} {strategy}: a GPU strategy read back {row['readback_bytes']} B "
+                         f"(benchmark) / {stats['readback_bytes']} B (render) per frame; expected 0")
+    return row
+
+
+def best_threshold(points):
+    """points: (key, alternative_cheaper). The single threshold T ("cheaper iff key >= T") that
+    misclassifies the fewest points: (T or None for 'never', misclassified count)."""
+    keys = sorted({k for k, _ in points})
+    best = (None, sum(1 for _, cheaper in points if cheaper))  # never cheaper
+    for t in keys:
+        wrong = sum(1 for k, cheaper in points if (k >= t) != cheaper)
+        if wrong < best[1]:
+            best = (t, wrong)
+    return best
 
 
 def crossover(rows):
-    """Per configuration (preset, fraction): frustum time against the fastest distance transform;
-    and the smallest primary count from which the distance transform is cheaper in every
-    configuration with at least that many primaries (None if it never is)."""
-    configs = {}
-    for row in rows:
-        configs.setdefault((row["preset"], row["primary_fraction"]), []).append(row)
+    """Per configuration and alternative: frustum ms / alternative ms (> 1: the alternative is
+    cheaper); per alternative the best single threshold by primary count and by footprint."""
+    by_config = {}
+    for r in rows:
+        by_config.setdefault((r["preset"], r["primary_fraction"]), {})[r["strategy"]] = r
     table = []
-    for (preset, fraction), group in configs.items():
-        frustum = next((r for r in group if r["strategy"] == "frustum"), None)
-        transforms = [r for r in group if r["strategy"] not in NOT_DISTANCE_TRANSFORMS]
-        if frustum is None or not transforms:
+    for (preset, fraction), group in by_config.items():
+        frustum = group.get("frustum")
+        if frustum is None:
             continue
-        best = min(transforms, key=lambda r: r["cut_surface_ms"])
-        table.append({"preset": preset, "primary_fraction": fraction, "primary_cells": frustum["primary_cells"],
-                      "frustum_ms": frustum["cut_surface_ms"], "fastest_transform": best["strategy"],
-                      "fastest_transform_ms": best["cut_surface_ms"],
-                      "transform_cheaper": best["cut_surface_ms"] < frustum["cut_surface_ms"]})
-    table.sort(key=lambda t: t["primary_cells"])
-    threshold = None
-    for i, entry in enumerate(table):
-        if all(t["transform_cheaper"] for t in table[i:]):
-            threshold = entry["primary_cells"]
-            break
-    return table, threshold
+        entry = {"preset": preset, "primary_fraction": fraction, "primary_cells": frustum["primary_cells"],
+                 "primary_pixels": frustum["primary_pixels"], "frustum_ms": frustum["cut_surface_ms"]}
+        for name in ALTERNATIVES + ("frustum-clusters",):
+            if name in group:
+                entry[name] = {"ms": group[name]["cut_surface_ms"],
+                               "frustum_over_it": frustum["cut_surface_ms"] / group[name]["cut_surface_ms"],
+                               "wrong_fraction": group[name]["quality"]["cut_vs_exact"]["wrong_fraction"]}
+        table.append(entry)
+    table.sort(key=lambda t: (t["primary_cells"], t["preset"]))
+    thresholds = {}
+    for name in ALTERNATIVES:
+        for key in ("primary_cells", "primary_pixels"):
+            points = [(t[key], t[name]["frustum_over_it"] > 1) for t in table if name in t]
+            value, wrong = best_threshold(points)
+            thresholds.setdefault(name, {})[key] = {"cheaper_from": value, "misclassified": wrong, "configurations": len(points)}
+    return table, thresholds
 
 
-def write_readme(path, table, threshold, rows, context, quick):
-    lines = ["# Cut-surface strategies (generated by experiments/cut_strategies/run.py; do not edit)", ""]
-    if quick:
-        lines += ["**Quick run** (petra, 480x270, two fractions): a smoke test, not the reference result.", ""]
-    if threshold is None:
-        largest = max((t["primary_cells"] for t in table), default=0)
-        lines.append(f"**The fastest distance-transform strategy never became cheaper than the frustum union** "
-                     f"in the measured range (up to {largest} primary cells).")
-    else:
-        smallest = " (already at the smallest count measured: the crossover lies at or below it)" \
-            if threshold == table[0]["primary_cells"] else ""
-        lines.append(f"**From {threshold} primary cells on, the fastest distance-transform strategy is cheaper "
-                     f"than the frustum union** in every measured configuration{smallest} (cut_surface stage, "
-                     f"fenced wall time, median of 3; on llvmpipe the frustum union is rasterised by the CPU too).")
-    lines += ["", f"Machine: {context['gl_renderer']}, LP_NUM_THREADS={context['lp_num_threads']}, "
-              f"{context['cpu_count']} CPUs, revision {context['git_revision']}.", "",
-              "| preset | fraction | primaries | frustum ms | fastest transform | its ms | cheaper |",
-              "|---|---|---|---|---|---|---|"]
+def targets(rows, cpu, table):
+    """Issue 16's three targets, measured in this run."""
+    by_key = {(r["preset"], r["primary_fraction"], r["strategy"]): r for r in rows}
+    jfa = []
+    for (preset, fraction, name), cpu_ms in sorted(cpu.items()):
+        gpu = by_key.get((preset, fraction, name))
+        if gpu:
+            jfa.append({"preset": preset, "primary_fraction": fraction, "strategy": name, "cpu_path_ms": cpu_ms,
+                        "gpu_cut_surface_ms": gpu["cut_surface_ms"], "cpu_over_gpu": cpu_ms / gpu["cut_surface_ms"]})
+    sapphire = []
     for t in table:
-        lines.append(f"| {t['preset']} | {t['primary_fraction']} | {t['primary_cells']} | {t['frustum_ms']:.2f} | "
-                     f"{t['fastest_transform']} | {t['fastest_transform_ms']:.2f} | {'yes' if t['transform_cheaper'] else 'no'} |")
-    lines += ["", "Where each strategy runs and why (from the registry):", ""]
+        if t["preset"] == "sapphire" and t["primary_cells"] >= 1000:
+            best = min((n for n in ALTERNATIVES if n in t), key=lambda n: t[n]["ms"])
+            sapphire.append({"primary_cells": t["primary_cells"], "best": best, "best_ms": t[best]["ms"],
+                             "frustum_ms": t["frustum_ms"], "faster": t[best]["ms"] < t["frustum_ms"]})
+    clusters = [{"preset": t["preset"], "primary_cells": t["primary_cells"],
+                 "frustum_over_clusters": t["frustum-clusters"]["frustum_over_it"]}
+                for t in table if t["primary_fraction"] == 0.2 and "frustum-clusters" in t]
+    summary = {}
+    for name in CPU_REFERENCES:
+        ratios = [j["cpu_over_gpu"] for j in jfa if j["strategy"] == name]
+        if ratios:
+            summary[name] = {"median": statistics.median(ratios), "min": min(ratios), "max": max(ratios)}
+    return {"gpu_jfa_vs_cpu_path": {"target": "GPU JFA >= 3x faster than the CPU JFA it replaces (1080p)",
+                                    "rows": jfa, "cpu_over_gpu": summary,
+                                    "met": bool(summary.get("jfa")) and summary["jfa"]["min"] >= 3},
+            "near_exact_beats_frustum_on_sapphire": {
+                "target": "best exact-or-near-exact GPU strategy faster than frustum from 1,000 primaries on sapphire",
+                "rows": sapphire, "met": bool(sapphire) and all(s["faster"] for s in sapphire)},
+            "clusters_vs_frustum_at_20pct": {"target": "frustum-clusters >= 5x faster than frustum at 20% primaries",
+                                             "rows": clusters, "met": bool(clusters) and all(c["frustum_over_clusters"] >= 5 for c in clusters)}}
+
+
+def fmt_ms(ms):
+    return f"{ms:,.0f}" if ms >= 100 else f"{ms:.1f}"
+
+
+def write_readme(path, result):
+    config, context, rows = result["protocol"], result["context"], result["rows"]
+    size, qsize = config["size"], config["quality_size"]
+    lines = ["# Cut-surface strategies (generated by experiments/cut_strategies/run.py; do not edit)", ""]
+    if result["quick"]:
+        lines += ["**Quick run** (petra, two fractions, 480x270): a smoke test, not the reference result.", ""]
+    lines += [f"Machine: {context['gl_renderer']}, LP_NUM_THREADS={context['LP_NUM_THREADS']}, {context['cpu_count']} CPUs, "
+              f"git revision {context['git_revision']}, {context.get('date', '')}. The machine was shared with other "
+              "engineers' builds during the run, so absolute times are noisy: compare strategies as ratios within one "
+              "configuration (same model, fraction, poses, minutes apart at most).", "",
+              f"Time: one `bench_cutaway` process at {size[0]}x{size[1]}, aperture {APERTURE_DEG} degrees, mean filter "
+              f"and SSAO off, {POSES} poses (0/25 and 180/45 degrees), {WARMUP} untimed pass, {REPEAT} timed frame per pose: "
+              "`cut_surface` is the median fenced wall time of stage 1 (seed pass, transform or frustums, and the "
+              "normal/position resolve every strategy shares). Quality: one `cutaway render --exact-check` per "
+              f"configuration at {qsize[0]}x{qsize[1]} (the exact cone field is a CPU reference), pose 0/25, same "
+              "aperture. Footprint = `primary_pixels`, the visible primary pixels of the timed frames at "
+              f"{size[0]}x{size[1]} (median) in the `frustum` row. Command: `{result['command']}`.", "",
+              "## Crossover at matched accuracy", "",
+              "frustum / alternative time per configuration (> 1: the alternative is cheaper). `jfa2` is the "
+              "near-exact cone-field transform, `frustum-sweep` the exact union of the frustums in O(pixels); the "
+              "Chamfer masks are wrong on most pixels and left out. The frustum family's walls are square "
+              "pyramids, not the cone field's circular cones: their cone-field error measures that shape, not a "
+              "fault.", "",
+              "| preset | fraction | primaries | footprint px | frustum ms | jfa2 ms (wrong %) | frustum/jfa2 | "
+              "frustum-sweep ms | frustum/sweep | clusters ms | frustum/clusters |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for t in result["crossover"]["table"]:
+        cell = lambda n, k: (fmt_ms(t[n]["ms"]) if k == "ms" else f"{t[n]['frustum_over_it']:.2f}") if n in t else "-"
+        wrong = f" ({100 * t['jfa2']['wrong_fraction']:.3f}%)" if "jfa2" in t else ""
+        lines.append(f"| {t['preset']} | {100 * t['primary_fraction']:g}% | {t['primary_cells']:,} | {t['primary_pixels']:,} | "
+                     f"{fmt_ms(t['frustum_ms'])} | {cell('jfa2', 'ms')}{wrong} | {cell('jfa2', 'r')} | "
+                     f"{cell('frustum-sweep', 'ms')} | {cell('frustum-sweep', 'r')} | {cell('frustum-clusters', 'ms')} | "
+                     f"{cell('frustum-clusters', 'r')} |")
+    lines += ["", "Best single threshold \"the alternative is cheaper iff primaries (or footprint) >= T\" over all "
+              "configurations of all models; fewer misclassified configurations = the better predictor:", ""]
+    for name, by_key in result["crossover"]["thresholds"].items():
+        for key, unit in (("primary_cells", "primary cells"), ("primary_pixels", "footprint pixels")):
+            th = by_key[key]
+            where = f"from **{th['cheaper_from']:,} {unit}**" if th["cheaper_from"] is not None else "never"
+            lines.append(f"- `{name}` vs `frustum` by {unit}: cheaper {where}; {th['misclassified']} of "
+                         f"{th['configurations']} configurations misclassified.")
+    tg = result["targets"]
+    lines += ["", "## Targets (issue 16)", ""]
+    j = tg["gpu_jfa_vs_cpu_path"]
+    for name, s in j["cpu_over_gpu"].items():
+        lines.append(f"- GPU `{name}` stage 1 against the CPU path it replaced (BM_cpu_reference: seed pass, read-back, "
+                     f"CPU transform; without the upload and resolve the GPU stage includes): CPU/GPU median "
+                     f"{s['median']:.2f}x, range {s['min']:.2f}-{s['max']:.2f}x over {len([r for r in j['rows'] if r['strategy'] == name])} "
+                     f"configurations.")
+    lines.append(f"- Target GPU JFA >= 3x the CPU JFA: **{'met' if j['met'] else 'missed'}**.")
+    s = tg["near_exact_beats_frustum_on_sapphire"]
+    lines.append("- Best near-exact GPU strategy faster than `frustum` from 1,000 primaries on sapphire: **"
+                 + (("met" if s["met"] else "missed") if s["rows"] else "not measured in this run") + "**" + "".join(
+                     f"; {r['primary_cells']:,} primaries: {r['best']} {fmt_ms(r['best_ms'])} ms vs frustum "
+                     f"{fmt_ms(r['frustum_ms'])} ms" for r in s["rows"]) + ".")
+    c = tg["clusters_vs_frustum_at_20pct"]
+    lines.append("- `frustum-clusters` >= 5x faster than `frustum` at 20%: **" + ("met" if c["met"] else "missed") + "** ("
+                 + "; ".join(f"{r['preset']} {r['frustum_over_clusters']:.1f}x" for r in c["rows"]) + ").")
+    lines += ["", "## Every strategy, every configuration", "",
+              f"cut ms and total ms (frame without SSAO and mean filter) at {size[0]}x{size[1]} (medians); wrong % = pixels beyond the tolerance of the exact "
+              f"cone field, exposure and context kept at {qsize[0]}x{qsize[1]}.", "",
+              "| preset | fraction | primaries | strategy | device | cut ms | cut / frustum | total ms | wrong % | "
+              "exposure | context kept |", "|---|---:|---:|---|---|---:|---:|---:|---:|---:|---:|"]
+    frustum_ms = {(r["preset"], r["primary_fraction"]): r["cut_surface_ms"] for r in rows if r["strategy"] == "frustum"}
+    for r in rows:
+        q = r["quality"]
+        ratio = r["cut_surface_ms"] / frustum_ms[(r["preset"], r["primary_fraction"])]
+        lines.append(f"| {r['preset']} | {100 * r['primary_fraction']:g}% | {r['primary_cells']:,} | {r['strategy']} | "
+                     f"{r['device']} | {fmt_ms(r['cut_surface_ms'])} | {ratio:.3f} | {fmt_ms(r['total_ms'])} | "
+                     f"{100 * q['cut_vs_exact']['wrong_fraction']:.3f} | {q['primary_exposure']:.4f} | {q['context_kept']:.3f} |")
+    lines += ["", "readback_bytes per frame: 0 for every GPU strategy in every run (checked by the script).", "",
+              "Where each strategy runs and why (from the registry):", ""]
     for name, row in {r["strategy"]: r for r in rows}.items():
         lines.append(f"- `{name}` ({row['device']}): {row['why']}")
-    lines += ["", "All rows, with cut error against the exact cone field (`cut_vs_exact`), primary_exposure and "
-              "context_kept: results.json."]
+    lines += ["", "Plot: paper_figures/cut_strategies_time.png (+ .pdf): top, stage-1 time against primaries and "
+              "against footprint; bottom, frustum / alternative per configuration; one colour per strategy, one "
+              "marker per model, lines join one model's fractions only."]
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
-    print("wrote", os.path.relpath(path, vx.REPO))
+    print("wrote", os.path.relpath(path, cx.REPO))
 
 
-def plot(plt, path, rows, size):
-    fig, ax = plt.subplots(figsize=(8, 5))
-    for name in dict.fromkeys(r["strategy"] for r in rows):
-        points = sorted((r["primary_cells"], r["cut_surface_ms"]) for r in rows if r["strategy"] == name)
-        style = "-o" if name == "frustum" else ("--s" if name == "exact" else "-.")
-        ax.plot([p[0] for p in points], [p[1] for p in points], style, label=name, markersize=4)
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlabel("primary cells (count, log scale)")
-    ax.set_ylabel("cut_surface stage time (ms, fenced wall time, log scale)")
-    ax.set_title(f"Cut-surface strategies at {size[0]}x{size[1]}")
-    ax.legend(fontsize=7, ncol=2)
-    ax.grid(True, which="both", linewidth=0.3)
+def plot(plt, path, rows, table, size):
+    """Top: cut time against primaries and footprint per strategy; bottom: frustum / alternative.
+    One colour per strategy, one marker per model; a line joins one model's fractions, never two models."""
+    fig, axes = plt.subplots(2, 2, figsize=(12, 9), sharex="col")
+    strategies = [s for s in PLOTTED if any(r["strategy"] == s for r in rows)]
+    colour = {name: f"C{i}" for i, name in enumerate(strategies)}
+    for column, (key, label) in enumerate((("primary_cells", "primary cells"),
+                                           ("primary_pixels", f"primary pixels on screen at {size[0]}x{size[1]}"))):
+        top, bottom = axes[0][column], axes[1][column]
+        for name in strategies:
+            for preset, marker in MODEL_MARKERS.items():
+                points = sorted((r[key] if key == "primary_cells" else footprint(rows, r), r["cut_surface_ms"])
+                                for r in rows if r["strategy"] == name and r["preset"] == preset)
+                if points:
+                    top.plot(*zip(*points), "-", marker=marker, color=colour[name], linewidth=1)
+        for name in ALTERNATIVES + ("frustum-clusters",):
+            for preset, marker in MODEL_MARKERS.items():
+                points = sorted((t[key], t[name]["frustum_over_it"]) for t in table if t["preset"] == preset and name in t)
+                if points:
+                    bottom.plot(*zip(*points), "-", marker=marker, color=colour.get(name, "k"), linewidth=1)
+        bottom.axhline(1.0, color="black", linewidth=0.8)
+        for ax in (top, bottom):
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.grid(True, which="both", linewidth=0.3)
+        bottom.set_xlabel(label + " (log scale)")
+    axes[0][0].set_ylabel("stage 1 (cut_surface) ms, median, log scale")
+    axes[1][0].set_ylabel("frustum ms / strategy ms (> 1: cheaper than frustum)")
+    handles = [plt.Line2D([], [], color=colour[n], label=n) for n in strategies]
+    handles += [plt.Line2D([], [], color="black", marker=m, linestyle="none", label=p)
+                for p, m in MODEL_MARKERS.items() if any(r["preset"] == p for r in rows)]
+    axes[0][1].legend(handles=handles, fontsize=8, loc="best")
+    fig.suptitle(f"Cut-surface strategies, stage 1 at {size[0]}x{size[1]}, aperture {APERTURE_DEG} deg (llvmpipe)")
     fig.tight_layout()
     fig.savefig(path, dpi=150)
-    print("wrote", os.path.relpath(path, vx.REPO))
+    fig.savefig(os.path.splitext(path)[0] + ".pdf")
+    print("wrote", os.path.relpath(path, cx.REPO))
+
+
+def footprint(rows, row):
+    """The configuration's footprint: the frustum row's primary pixels (exposure 1.0)."""
+    return next(r["primary_pixels"] for r in rows if r["strategy"] == "frustum" and r["preset"] == row["preset"]
+                and r["primary_fraction"] == row["primary_fraction"])
 
 
 def main():
-    json_path = os.path.join(RESULTS, "results.json")
-    readme_path = os.path.join(RESULTS, "README.md")
-    figure_path = os.path.join(vx.FIGURES, "cut_strategies_time.png")
-    args = vx.begin(__doc__, [json_path, readme_path, figure_path])
-    if args is None:
+    exp = cx.Experiment("cut_strategies", __doc__, ["results.json", "README.md", "cut_strategies_time.png"])
+    if exp.up_to_date():
         return
-    plt = vx.require_matplotlib()
-    os.makedirs(RESULTS, exist_ok=True)
-    quick = args.quick
-    presets = ["petra"] if quick else ["zaphirus", "petra", "opharine", "sapphire"]
-    fractions = [0.01, 0.2] if quick else [0.001, 0.01, 0.05, 0.2]
-    size = (480, 270) if quick else (1920, 1080)
-    strategies = strategy_names(args.cutaway)
-
-    rows, last_stats = [], None
-    with vx.Workspace(args) as work:
-        for preset in presets:
-            for fraction in fractions:
-                for strategy in strategies:
-                    stats = render(args, work.path, preset, fraction, strategy, size)
-                    last_stats = stats
-                    error = stats["cut_vs_exact"]
-                    rows.append({"preset": preset, "primary_fraction": fraction, "strategy": strategy,
-                                 "device": stats["strategy"]["device"], "why": stats["strategy"]["why"],
-                                 "primary_cells": stats["primary_cells"], "cells": stats["cells"],
-                                 "cut_surface_ms": stats["stages_ms"]["cut_surface"],
-                                 "total_ms": stats["stages_ms"]["total"], "cut_vs_exact": error,
-                                 "primary_exposure": stats["primary_exposure"],
-                                 "context_kept": stats["context_kept"]})
-                    print(f"{preset} {fraction} {strategy:12s} {stats['primary_cells']:7d} primaries: "
-                          f"cut {stats['stages_ms']['cut_surface']:9.2f} ms, wrong {100 * error['wrong_fraction']:.3f}%, "
-                          f"exposure {stats['primary_exposure']:.4f}")
-
-    table, threshold = crossover(rows)
-    context = vx.machine_context(last_stats)
-    vx.write_json(json_path, {
-        "experiment": "cut_strategies", "quick": quick,
-        "protocol": {"presets": presets, "primary_fractions": fractions, "size": list(size), "repeat": 3,
-                     "mean_filter": 0, "statistic": "median of 3 timed frames after 1 warm-up",
-                     "time": "fenced wall time of the cut_surface stage, ms",
-                     "cut_error": "cut_vs_exact of cutaway render --exact-check (depth units of the cut camera)",
-                     "configuration": last_stats["configuration"]},
-        "context": context, "rows": rows, "crossover": {"table": table, "transform_cheaper_from_primary_cells": threshold}})
-    write_readme(readme_path, table, threshold, rows, context, quick)
-    plot(plt, figure_path, rows, size)
+    plt = cx.pyplot()
+    config = configuration(exp.quick)
+    document, timed, cpu, strategies = time_sweep(exp, config)
+    rows = []
+    for preset in config["presets"]:
+        for fraction in config["fractions"]:
+            for strategy in strategies:
+                stats = quality(exp, config, preset, fraction, strategy)
+                row = merge_row(preset, fraction, strategy, timed[(preset, fraction, strategy)], stats)
+                rows.append(row)
+                q = row["quality"]
+                print(f"{preset} {fraction} {strategy:16s} {row['primary_cells']:7d} primaries: cut {row['cut_surface_ms']:9.1f} ms, "
+                      f"wrong {100 * q['cut_vs_exact']['wrong_fraction']:.3f}%, exposure {q['primary_exposure']:.4f}, "
+                      f"context {q['context_kept']:.3f}", flush=True)
+    table, thresholds = crossover(rows)
+    bench_context = cx.benchmark_context(document)
+    context = {**exp.context(), **bench_context}
+    result = {"experiment": "cut_strategies", "quick": exp.quick,
+              "command": "experiments/cut_strategies/run.py" + (" --quick" if exp.quick else "") + " --force",
+              "protocol": {**config, "aperture_deg": APERTURE_DEG, "poses": POSES, "warmup_passes": WARMUP,
+                           "timed_frames_per_pose": REPEAT, "mean_filter": 0, "quality_camera_az_el_dist": FIRST_POSE,
+                           "statistic": "median over the timed frames (poses x repeat)",
+                           "time": "fenced wall time of the cut_surface stage, ms (bench_cutaway)",
+                           "cut_error": "cut_vs_exact of cutaway render --exact-check at quality_size",
+                           "alternatives_at_matched_accuracy": list(ALTERNATIVES)},
+              "context": context, "rows": rows,
+              "cpu_reference_ms": [{"preset": p, "primary_fraction": f, "strategy": s, "ms": ms} for (p, f, s), ms in cpu.items()],
+              "crossover": {"table": table, "thresholds": thresholds}}
+    result["targets"] = targets(rows, cpu, table)
+    cx.write_json(exp.path("results.json"), result)
+    write_readme(exp.path("README.md"), result)
+    plot(plt, exp.path("cut_strategies_time.png"), rows, table, config["size"])
 
 
 if __name__ == "__main__":

@@ -8,7 +8,7 @@
 // y = the owner's stored depth t as float bits, so one load per tap. The taps are selects, not
 // branches (SIMD lanes on a CPU rasteriser stay together).
 // Variant INIT: the first texel image from the seed image (cone_seed.glsl).
-layout(local_size_x = 8, local_size_y = 8) in;
+layout(local_size_x = GROUP_X, local_size_y = GROUP_Y) in;
 
 layout(rg32ui, binding = 0) uniform writeonly uimage2D owners_out;
 

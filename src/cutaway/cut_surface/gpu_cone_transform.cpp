@@ -4,9 +4,16 @@
 
 namespace cutaway::pipeline {
 
-SeedInitPrograms::SeedInitPrograms(const gl::ShaderLibrary& shaders, const char* compute_shader)
-    : plain_(shaders.build({{GL_COMPUTE_SHADER, compute_shader}}, {{"INIT", ""}})),
-      widened_(shaders.build({{GL_COMPUTE_SHADER, compute_shader}}, {{"INIT", ""}, {"WIDEN_SEEDS", ""}})) {}
+namespace {
+gl::ShaderDefines with(gl::ShaderDefines defines, std::initializer_list<gl::ShaderDefine> more) {
+    defines.insert(defines.end(), more);
+    return defines;
+}
+}  // namespace
+
+SeedInitPrograms::SeedInitPrograms(const gl::ShaderLibrary& shaders, const char* compute_shader, const gl::ShaderDefines& defines)
+    : plain_(shaders.build({{GL_COMPUTE_SHADER, compute_shader}}, with(defines, {{"INIT", ""}}))),
+      widened_(shaders.build({{GL_COMPUTE_SHADER, compute_shader}}, with(defines, {{"INIT", ""}, {"WIDEN_SEEDS", ""}}))) {}
 
 const gl::Program& SeedInitPrograms::prepare(const GpuConeInput& input) const {
     const gl::Program& program = input.widen_seeds ? widened_ : plain_;

@@ -38,7 +38,8 @@ std::unique_ptr<GpuConeTransform> make_gpu_chamfer(const gl::ShaderLibrary& shad
 /// without WIDEN_SEEDS (cone_seed.glsl).
 class SeedInitPrograms {
 public:
-    SeedInitPrograms(const gl::ShaderLibrary& shaders, const char* compute_shader);
+    /// `defines`: the shader's own (e.g. its work group size), added to INIT and WIDEN_SEEDS.
+    SeedInitPrograms(const gl::ShaderLibrary& shaders, const char* compute_shader, const gl::ShaderDefines& defines = {});
     /// The variant for `input`, its `seeds` uniform set and the seed texture bound to unit 0.
     const gl::Program& prepare(const GpuConeInput& input) const;
 

@@ -3,6 +3,9 @@
 // then one fragment pass writing each owner cone's height as the cut depth. On llvmpipe, image
 // loads with "0 = no owner" (out-of-image loads read 0: no bounds tests) and selects instead of
 // branches made a pass about 2.5x faster than texelFetch with branches (same run, loaded machine).
+// Work groups of 64 x 4 passed JFA^2's 22 passes about 11% faster than 8 x 8 (16 x 16: slower, 32 x 8:
+// the same); shader storage buffers instead of the images (a select for outside taps) were slower
+// (zaphirus, 1920x1080, two alternating runs each, LP_NUM_THREADS=2, issue 16).
 //
 // Against the CPU reference (cone_field/jump_flooding.h): the same steps, taps, comparisons and
 // tie-breaking, in float (stored depth units) where the reference uses double (depth units).
@@ -10,6 +13,7 @@
 // one; the cut then differs by about that rounding unless the different owner later loses or
 // wins differently. tests/gl/gpu_cone_field_gl_test.cpp measures both.
 #include <array>
+#include <string>
 
 #include "cutaway/cut_surface/gpu_cone_transform.h"
 #include "gl/uniforms.h"
@@ -17,13 +21,15 @@
 namespace cutaway::pipeline {
 namespace {
 
-constexpr int group_side = 8;  // jump_flood.comp's local size
+constexpr int group_x = 64, group_y = 4;  // jump_flood.comp's local size (GROUP_X, GROUP_Y)
+
+gl::ShaderDefines group_defines() { return {{"GROUP_X", std::to_string(group_x)}, {"GROUP_Y", std::to_string(group_y)}}; }
 
 class GpuJumpFlooding final : public GpuConeTransform {
 public:
     GpuJumpFlooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant)
-        : init_(shaders, "cut_surface/jump_flood.comp"),
-          pass_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}})),
+        : init_(shaders, "cut_surface/jump_flood.comp", group_defines()),
+          pass_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}}, group_defines())),
           resolve_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/cone_resolve.frag"}},
                                  {{"JUMP_FLOODING", ""}})),
           variant_(variant) {}
@@ -32,7 +38,7 @@ public:
         const int width = targets.depth.width(), height = targets.depth.height();
         if (owners_[0].width() != width || owners_[0].height() != height)
             for (gl::Texture& owners : owners_) owners = gl::Texture(GL_TEXTURE_2D, GL_RG32UI, width, height);
-        const unsigned groups_x = group_count(width, group_side), groups_y = group_count(height, group_side);
+        const unsigned groups_x = group_count(width, group_x), groups_y = group_count(height, group_y);
 
         const gl::Program& init = init_.prepare(in);
         glBindImageTexture(0, owners_[0].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
