@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <stdexcept>
 
+#include "annotation/property_units.h"
 #include "app/option_checks.h"
 
 namespace cutaway::app {
@@ -186,6 +187,10 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--repeat", o.repeat, "timed frames; stats hold medians")->check(finite_in(1, 1000));
     c.add_option("--egl-platform", o.egl_platform, "auto|surfaceless|device")
         ->check(one_of({"auto", "surfaceless", "device"}));
+}
+
+annotation::ColourBarLabel PropertyChoice::colour_bar_label() const {
+    return {label, colour_range.min, colour_range.max, annotation::property_unit(name)};
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options) {
