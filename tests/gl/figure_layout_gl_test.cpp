@@ -149,5 +149,53 @@ TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
     EXPECT_GT(band_unchanged, silhouette_count / 10);  // the line is doubled, not a solid band
 }
 
+constexpr std::uint8_t viridis[256][3] = {
+#include "annotation/viridis_table.inc"
+};
+
+TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
+    // The reader matches a primary's colour against the colour bar. The headlight shades every face
+    // by its angle (0.35 + 0.65 |n.l|), so a pixel is compared with the map's colour at the cell's
+    // value scaled to the pixel's brightness: what is left is a change of hue or saturation (white
+    // edges, a saturation boost, blending with other colours). Edge pixels are left out.
+    constexpr int width = 800, height = 450;
+    auto renderer = make_renderer(petra(), width, height);
+    const std::vector<float>& poro = *petra().property("PORO");
+    renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
+    const grid::PrimaryRange range = grid::active_value_range(petra(), poro, "PORO");
+    pipeline::FrameSettings settings;  // the figures' defaults (SSAO on)
+    const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height,
+                                                                renderer->colour_bar_reserved_width(settings));
+    renderer->render(settings, camera);
+    const gl::RgbaImage image = renderer->read_image();
+    const pipeline::IdImage ids = renderer->read_ids();
+    const std::vector<std::uint32_t> cells = renderer->read_eclipse_ids();
+    std::vector<double> distances, brightness;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (!(ids.flags[i] & pipeline::flag_primary) || (ids.flags[i] & pipeline::flag_edge) || cells[i] == 0) continue;
+        const double t = std::clamp((poro[cells[i] - 1] - range.min) / (range.max - range.min), 0.0f, 1.0f);
+        const std::uint8_t* m = viridis[std::lround(255 * t)];
+        const std::uint8_t* p = image.at(int(i % width), height - 1 - int(i / width));
+        const glm::dvec3 map(m[0], m[1], m[2]), shown(p[0], p[1], p[2]);
+        const double k = std::clamp(glm::dot(shown, map) / glm::dot(map, map), 0.0, 1.5);
+        distances.push_back(glm::length(shown - k * map));
+        brightness.push_back(k);
+    }
+    ASSERT_GT(distances.size(), 2000u);  // petra's 1% primaries cover thousands of pixels here
+    const auto median = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    const double median_distance = median(distances), median_brightness = median(brightness);
+    std::cout << "  primary pixels: median RGB distance " << median_distance << " to the colour map at their value, "
+              << "brightness " << median_brightness << " of it (" << distances.size() << " px)\n";
+    // 20 of 441 (the RGB cube's diagonal): the colour bar's entry at a glance; 8-bit rounding and
+    // SSAO's grey add a few levels.
+    EXPECT_LT(median_distance, 20.0);
+    // And not so dark that the hue is lost: a face seen at the figures' 30 degree elevation gets
+    // about two thirds of the light.
+    EXPECT_GT(median_brightness, 0.5);
+}
+
 }  // namespace
 }  // namespace cutaway::test
