@@ -2,7 +2,8 @@
 
 A figure: name, title, rows of panels (caption, extra options[, model]); `panels` is a one-row
 figure. Every panel shares the figure's camera and size unless its options set them; `metrics`
-asks render for the image metrics (exposure, border width); `zoom` adds a row of enlarged windows
+asks render for the image metrics (exposure, border width), `caption_number` names the one each
+caption shows; `zoom` adds a row of enlarged windows
 where the panels differ (the figure's point is small: borders, the cut's staircase); `size`
 overrides the figure size (grids of panels stay at least 1000 px wide per panel).
 """
@@ -15,8 +16,10 @@ def figure_specs(model, steps):
     """Figures for `model` (preset:NAME); `steps`: SWAT time steps shown in figure 11."""
     return [
         {"name": "fig07_borders", "title": "Fig. 7: threshold vs ray-cast border lines", "metrics": True, "zoom": True,
+         "caption_number": "border_line_width",
          "panels": [("threshold borders", ["--border", "threshold"]), ("ray-cast borders", ["--border", "raycast"])]},
-        {"name": "fig08_mean_filter", "title": "Fig. 8: mean filter on the cut surface", "metrics": True, "zoom": True,
+        {"name": "fig08_mean_filter", "title": "Fig. 8: mean filter on the cut surface (cost: primary exposure)", "metrics": True,
+         "zoom": True, "caption_number": "primary_exposure",
          "panels": [("no mean filter", ["--mean-filter", 0]), ("9x9", ["--mean-filter", 9]),
                     ("33x33", ["--mean-filter", 33])]},
         {"name": "fig09_ssao_saturation", "title": "Fig. 9: SSAO and saturation contrast",

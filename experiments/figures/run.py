@@ -52,10 +52,11 @@ def render_figure(exp, spec, model, size, scratch, quick_options):
                                metrics=spec.get("metrics", False))
             numbers.append({"caption": caption, "model": panel_model, "options": [str(o) for o in options],
                             **{k: stats[k] for k in PANEL_NUMBERS if k in stats}})
-            if "border_line_width" in stats:
-                caption += f"\nborder width {stats['border_line_width']['mean_px']:.2f} +- {stats['border_line_width']['stddev_px']:.2f} px"
-            elif "primary_exposure" in stats and spec.get("metrics"):
-                caption += f"\nprimary exposure {100 * stats['primary_exposure']:.1f}%"
+            shown = spec.get("caption_number")
+            if shown == "border_line_width" and shown in stats:
+                caption += f"\nborder width {stats[shown]['mean_px']:.2f} +- {stats[shown]['stddev_px']:.2f} px"
+            elif shown == "primary_exposure" and shown in stats:
+                caption += f"\nprimary exposure {100 * stats[shown]:.1f}%"
             rows[-1].append((caption, image))
             print(f"  {spec['name']}: {caption.splitlines()[0]}: total {stats['stages_ms']['total']:.1f} ms")
     layout = compose.compose(rows, spec["title"], exp.path(spec["name"] + ".png"), zoom=spec.get("zoom", False))

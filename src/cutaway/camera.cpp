@@ -56,7 +56,7 @@ ProjectedBox project_box(const std::vector<glm::vec3>& points, float radius, con
 
 /// Share of the free area that the projected box fills in its tighter dimension, after panning so
 /// that its centre sits at the free area's centre (`framing.offset` is updated). Infinite when a
-/// corner is behind the eye.
+/// point is behind the eye.
 float centred_fill(const std::vector<glm::vec3>& points, float radius, const glm::vec3& target, const ViewAxes& axes,
                    float free_x1, Framing& framing) {
     const glm::vec2 free_centre{0.5f * (free_x1 - 1.0f), 0.0f}, free_size{free_x1 + 1.0f, 2.0f};
@@ -73,7 +73,7 @@ float centred_fill(const std::vector<glm::vec3>& points, float radius, const glm
     return std::max(size.x / free_size.x, size.y / free_size.y);
 }
 
-/// The distance (bisected on a log scale) and pan at which the model's bounding box fills
+/// The distance (bisected on a log scale) and pan at which the model's projected points fill
 /// `fill` of the free area [-1, free_x1] x [-1, 1] (normalised device coordinates) in its tighter
 /// dimension, centred in it.
 Framing frame_model(const ModelFrame& frame, const glm::vec3& target, const ViewAxes& axes, float free_x1, float fill) {
