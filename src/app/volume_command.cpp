@@ -19,6 +19,8 @@
 #include "gl/shader_library.h"
 #include "gl/stage_timer.h"
 #include "io/staged_file.h"
+#include "annotation/colour_bar_layout.h"
+#include "volume/colour_bar.h"
 #include "volume/cpu_ray_caster.h"
 #include "volume/gpu_ray_caster.h"
 #include "volume/level_window.h"
@@ -145,6 +147,7 @@ nlohmann::json configuration_json(const VolumeOptions& o, const volume::Transfer
             {"empty_space_skipping", s.empty_space_skipping},
             {"block_size", s.block_size},
             {"colour_bar", s.colour_bar},
+            {"reserved_right_px", s.reserved_right_px},
             {"cpu_threads", threads},
             {"warmup", o.warmup},
             {"repeat", o.repeat},
@@ -221,6 +224,11 @@ int run_volume(VolumeOptions& o) {
     if (o.layer.empty()) tf.layer = volume::fitted_layer(tf.window);
     const volume::VolumeScene scene =
         volume::make_scene(levels, volume::build_transfer_table(tf), o.settings.block_size, tf.window);
+    // The cube is framed left of the colour bar it will carry (never more than half the width).
+    if (o.settings.colour_bar)
+        o.settings.reserved_right_px =
+            std::min(0.5f * float(o.settings.width), annotation::colour_bar_reserved_width(volume::colour_bar_label(scene),
+                                                                                        o.settings.width, o.settings.height));
     const double prepare_ms = elapsed_ms(start);
 
     const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());

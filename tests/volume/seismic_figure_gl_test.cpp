@@ -116,8 +116,16 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
     RayCastSettings settings;
     settings.width = settings.height = side;
     settings.camera = {40, 25, 0, settings.camera.fov_deg};
-    const std::array<AxisEdge, 3> edges =
-        layout_orientation(make_view(f3_.dims, settings), side, side, bar.bounds().x0, bar.text_scale);
+    settings.reserved_right_px = annotation::colour_bar_reserved_width(label, side, side);  // as `cutaway volume` sets it
+    const ViewGeometry view = make_view(f3_.dims, settings);
+    // The framed cube stays clear of the bar: its 8 corners project left of it.
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 corner{c & 1 ? view.box.x : 0.0f, c & 2 ? view.box.y : 0.0f, c & 4 ? view.box.z : 0.0f};
+        const glm::vec4 clip = view.voxel_to_clip * glm::vec4(corner, 1.0f);
+        EXPECT_LT((0.5f * clip.x / clip.w + 0.5f) * float(side), bar.bounds().x0) << "cube corner " << c << " under the bar";
+        EXPECT_GT(clip.x / clip.w, -1.0f) << "cube corner " << c << " left of the image";
+    }
+    const std::array<AxisEdge, 3> edges = layout_orientation(view, side, side, bar.bounds().x0, bar.text_scale);
     const char* names[3] = {"time", "crossline", "inline"};
     for (std::size_t a = 0; a < 3; ++a) {
         EXPECT_EQ(edges[a].label.text, names[a]);
