@@ -64,7 +64,7 @@ public:
             scene_.property = app::choose_property(scene_.model->grid, app::RenderOptions{});
             scene_.renderer = std::make_unique<pipeline::CutawayRenderer>(shaders_, scene_.model->grid, 0.0, width_, height_);
             const app::PropertyChoice& p = scene_.property;
-            scene_.renderer->set_colouring(p.values(), {p.label, p.colour_range.min, p.colour_range.max});
+            scene_.renderer->set_colouring(p.values(), p.colour_bar_label());
             preset_ = preset;
         }
         return scene_;
@@ -107,8 +107,10 @@ pipeline::DrawMode draw_mode(const std::string& name) {
 std::vector<pipeline::Camera> path_cameras(const pipeline::CutawayRenderer& renderer,
                                            const std::vector<bench::PathPose>& path) {
     std::vector<pipeline::Camera> cameras;
+    // Framed as `cutaway render` frames them: the colour bar (on in every benchmark) keeps its columns.
+    const float bar_width = renderer.colour_bar_reserved_width(pipeline::FrameSettings{});
     for (const bench::PathPose& pose : path)
-        cameras.push_back(pipeline::make_orbit_camera(renderer.frame(), pose.orbit, renderer.width(), renderer.height()));
+        cameras.push_back(pipeline::make_orbit_camera(renderer.frame(), pose.orbit, renderer.width(), renderer.height(), bar_width));
     return cameras;
 }
 

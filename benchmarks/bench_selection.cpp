@@ -47,7 +47,7 @@ void bm_select(benchmark::State& state, const std::vector<std::string>& presets,
     const grid::CornerPointGrid& grid = model.grid;
     const app::PropertyChoice property = app::choose_property(grid, app::RenderOptions{});
     pipeline::CutawayRenderer renderer(shaders, grid, 0.0, 64, 64);
-    renderer.set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
+    renderer.set_colouring(property.values(), property.colour_bar_label());
     pipeline::GridLayout layout;  // the CPU path's input
     if (!gpu)
         layout = pipeline::build_grid_layout(grid, grid::FaceClassification(grid, grid::default_face_tolerance(grid)),

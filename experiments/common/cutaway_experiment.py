@@ -131,6 +131,8 @@ def pyplot():
 
 
 def save_figure(fig, path):
+    """Writes the plot as PNG and, beside it, as vector PDF (for print)."""
     fig.tight_layout()
     fig.savefig(path)
+    fig.savefig(os.path.splitext(path)[0] + ".pdf")
     print("wrote", os.path.relpath(path, REPO))

@@ -6,11 +6,15 @@ Interface (for experiments/run_all):
 Writes paper_figures/fig07_borders.png ... fig15_only_layers.png, time_vs_aperture.png,
 time_vs_primary_fraction.png, and results/figures/figures.json (per panel: options, fenced stage ms,
 primary cells, image metrics such as fig. 7's two border_line_width values and fig. 8's primary
-exposure; the sweeps; machine context). Skips when all exist unless --force. --quick: zaphirus at
-320x180, fewer sweep points (results/quick/figures/, paper_figures/quick/).
+exposure; the sweeps; machine context). Skips when all exist unless --force. --quick: zaphirus
+(and petra in fig. 14) at 1000x562, one frame per panel, sweeps at 320x180 with fewer points
+(results/quick/figures/, paper_figures/quick/).
 
 Protocol: preset:petra (32,760 cells), 1280x720, camera azimuth 35 / elevation 30, 1% primaries of
 PORO, the paper's defaults otherwise; one warm-up and three timed frames per panel (median).
+Figures 14 (the four presets from two views) and 15 (opharine, two PORO ranges; rows: full
+cutaway, only primaries, only secondaries) are grids of 1000x600 panels. Figures 7, 8 and 12
+add a zoom row: the window where their panels differ, enlarged 3 times.
 Sweeps on preset:opharine: full apertures 0..180 degrees at 1% primaries; fractions 0.1%..10% at 60 degrees.
 """
 import os
@@ -19,40 +23,44 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
+import compose  # noqa: E402
 import figure_specs  # noqa: E402
 import sweeps  # noqa: E402
 
 FIGURES = ("fig07_borders", "fig08_mean_filter", "fig09_ssao_saturation", "fig10_freeze_view", "fig11_aperture180_steps",
            "fig12_hidden_lines", "fig13_silhouette", "fig14_models", "fig15_only_layers")
+# Fig. 15's two PORO windows: the high-porosity channels and the tightest rock (both
+# spatially coherent clusters in the generated models, as the paper's ranges are).
+FIG15_RANGES = (("PORO 0.30-0.40", (0.30, 0.40)), ("PORO 0.00-0.12", (0.0, 0.12)))
 PANEL_NUMBERS = ("stages_ms", "primary_cells", "primary_exposure", "context_kept", "border_line_width", "total_over_baseline")
 
 
-def render_figure(exp, spec, model, size, scratch):
-    """Renders every panel, composes them side by side into paper_figures/<name>.png; returns the numbers."""
-    plt = cx.pyplot()
-    panels = []
-    for index, panel in enumerate(spec["panels"]):
-        caption, options = panel[0], panel[1]
-        panel_model = panel[2] if len(panel) > 2 else model
-        image = os.path.join(scratch, f"{spec['name']}_{index}.png")
-        camera = () if "--camera" in options else figure_specs.CAMERA  # fig. 10 sets its own
-        stats = exp.render(panel_model, *camera, *options, "--size", *size, image=image,
-                           metrics=spec.get("metrics", False))
-        panels.append({"caption": caption, "model": panel_model, "options": [str(o) for o in options], "image": image,
-                       **{k: stats[k] for k in PANEL_NUMBERS if k in stats}})
-        print(f"  {spec['name']}: {caption}: total {stats['stages_ms']['total']:.1f} ms")
-    fig, axes = plt.subplots(1, len(panels), figsize=(3.6 * len(panels), 3.6 * size[1] / size[0] + 0.6), squeeze=False)
-    for ax, panel in zip(axes[0], panels):
-        ax.imshow(plt.imread(panel.pop("image")))
-        caption = panel["caption"]
-        if "border_line_width" in panel:
-            caption += f"\nborder width {panel['border_line_width']['mean_px']:.2f} +- {panel['border_line_width']['stddev_px']:.2f} px"
-        ax.set_title(caption)
-        ax.axis("off")
-    fig.suptitle(spec["title"])
-    cx.save_figure(fig, exp.path(spec["name"] + ".png"))
-    plt.close(fig)
-    return {"title": spec["title"], "panels": panels}
+def render_figure(exp, spec, model, size, scratch, quick_options):
+    """Renders every panel, composes them (compose.compose) into paper_figures/<name>.png;
+    returns the numbers."""
+    size = spec.get("size", size)
+    model = spec.get("model", model)
+    rows, numbers = [], []
+    for r, row in enumerate(spec.get("rows") or [spec["panels"]]):
+        rows.append([])
+        for index, panel in enumerate(row):
+            caption, options = panel[0], panel[1]
+            panel_model = panel[2] if len(panel) > 2 else model
+            image = os.path.join(scratch, f"{spec['name']}_{r}_{index}.png")
+            camera = () if "--camera" in options else figure_specs.CAMERA  # fig. 10 and 14 set their own
+            stats = exp.render(panel_model, *camera, *options, "--size", *size, *quick_options, image=image,
+                               metrics=spec.get("metrics", False))
+            numbers.append({"caption": caption, "model": panel_model, "options": [str(o) for o in options],
+                            **{k: stats[k] for k in PANEL_NUMBERS if k in stats}})
+            shown = spec.get("caption_number")
+            if shown == "border_line_width" and shown in stats:
+                caption += f"\nborder width {stats[shown]['mean_px']:.2f} +- {stats[shown]['stddev_px']:.2f} px"
+            elif shown == "primary_exposure" and shown in stats:
+                caption += f"\nprimary exposure {100 * stats[shown]:.1f}%"
+            rows[-1].append((caption, image))
+            print(f"  {spec['name']}: {caption.splitlines()[0]}: total {stats['stages_ms']['total']:.1f} ms")
+    layout = compose.compose(rows, spec["title"], exp.path(spec["name"] + ".png"), zoom=spec.get("zoom", False))
+    return {"title": spec["title"], "size": list(size), **layout, "panels": numbers}
 
 
 def main():
@@ -61,23 +69,32 @@ def main():
     if exp.up_to_date():
         return
     quick = exp.quick
-    model, size = ("preset:zaphirus", (320, 180)) if quick else ("preset:petra", (1280, 720))
+    # Print panels are at least 1000 px wide, quick ones too (the image checks run on them); quick
+    # runs render one frame per panel on the smallest models.
+    model, size = ("preset:zaphirus", (1000, 562)) if quick else ("preset:petra", (1280, 720))
+    grid_size = (1000, 562) if quick else (1000, 600)
+    quick_options = ("--warmup", 0, "--repeat", 1) if quick else ()
     sweep_model = "preset:zaphirus" if quick else "preset:opharine"
     steps = (0, 2) if quick else (0, 1, 2, 3)
-    specs = figure_specs.figure_specs(model, steps) + [figure_specs.models_figure(cx.PRESETS)]
+    presets = ("zaphirus", "zaphirus", "petra", "petra") if quick else cx.PRESETS
+    layers_model = "preset:zaphirus" if quick else "preset:opharine"
+    specs = figure_specs.figure_specs(model, steps) + [
+        figure_specs.models_figure(presets, grid_size),
+        figure_specs.layers_figure(layers_model, FIG15_RANGES, grid_size)]
     numbers = {}
     with tempfile.TemporaryDirectory(prefix="cutaway-figures-") as scratch:
         for spec in sorted(specs, key=lambda s: s["name"]):
-            numbers[spec["name"]] = render_figure(exp, spec, model, size, scratch)
+            numbers[spec["name"]] = render_figure(exp, spec, model, size, scratch, quick_options)
 
     apertures = (0, 60, 120, 180) if quick else (0, 30, 60, 90, 120, 150, 180)
     fractions = (0.003, 0.03) if quick else (0.001, 0.003, 0.01, 0.03, 0.1)
     repeat = 1 if quick else 3
-    aperture_rows, stats = sweeps.sweep(exp, sweep_model, size, [(a, ["--aperture", a, a]) for a in apertures],
+    sweep_size = (320, 180) if quick else size
+    aperture_rows, stats = sweeps.sweep(exp, sweep_model, sweep_size, [(a, ["--aperture", a, a]) for a in apertures],
                                         figure_specs.CAMERA, repeat)
-    fraction_rows, _ = sweeps.sweep(exp, sweep_model, size, [(f, ["--primary-fraction", f]) for f in fractions],
+    fraction_rows, _ = sweeps.sweep(exp, sweep_model, sweep_size, [(f, ["--primary-fraction", f]) for f in fractions],
                                     figure_specs.CAMERA, repeat)
-    label = f"{sweep_model}, {size[0]}x{size[1]}"
+    label = f"{sweep_model}, {sweep_size[0]}x{sweep_size[1]}"
     sweeps.plot_sweep(exp, aperture_rows, "full aperture angle (degrees, horizontal = vertical)",
                       f"Frame time vs aperture ({label}, 1% primaries)", exp.path("time_vs_aperture.png"))
     sweeps.plot_sweep(exp, fraction_rows, "primary fraction (of active cells, log scale)",
@@ -86,8 +103,8 @@ def main():
     cx.write_json(exp.path("figures.json"), {
         "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),
         "context": exp.context(stats), "configuration": stats["configuration"], "figures": numbers,
-        "time_vs_aperture": {"model": sweep_model, "repeat": repeat, "rows": aperture_rows},
-        "time_vs_primary_fraction": {"model": sweep_model, "repeat": repeat, "rows": fraction_rows}})
+        "time_vs_aperture": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": aperture_rows},
+        "time_vs_primary_fraction": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": fraction_rows}})
 
 
 if __name__ == "__main__":

@@ -12,15 +12,21 @@ def sweep(exp, model, size, flag_values, base_options, repeat):
 
 
 def plot_sweep(exp, rows, xlabel, title, path, log_x=False):
+    """One line per stage (total in bold black), the legend below the axes, clear of the curves."""
     plt = cx.pyplot()
-    fig, ax = plt.subplots()
+    fig, ax = plt.subplots(figsize=(7, 4.6))
     x = [r["value"] for r in rows]
     for stage in cx.STAGES + ("total",):
-        ax.plot(x, [r["stages_ms"][stage] for r in rows], marker="o", label=cx.STAGE_LABELS[stage])
+        style = {"color": "black", "linewidth": 2.2} if stage == "total" else {}
+        ax.plot(x, [r["stages_ms"][stage] for r in rows], marker="o", label=cx.STAGE_LABELS[stage], **style)
     if log_x:
         ax.set_xscale("log")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("time per frame (ms, median)")
+    ax.set_ylim(bottom=0)
     ax.set_title(title)
-    ax.legend(ncol=2)
-    cx.save_figure(fig, path)
+    fig.legend(*ax.get_legend_handles_labels(), ncol=4, loc="lower center", frameon=False)
+    fig.tight_layout(rect=(0, 0.13, 1, 1))
+    fig.savefig(path)
+    fig.savefig(path[:-4] + ".pdf")
+    print("wrote", path)

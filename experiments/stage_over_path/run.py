@@ -4,13 +4,15 @@
 Interface (for experiments/run_all):
   experiments/stage_over_path/run.py [--quick] [--force] [--build DIR]
 Writes results/stage_over_path/stage_over_path.json (per model, per pose: azimuth, aperture, fenced
-ms per stage) and paper_figures/stage_over_path.png (one panel per model). Skips when both exist
-unless --force. --quick: 480x270 pixels, 3 poses, two models (results/quick/, paper_figures/quick/).
+ms per stage) and paper_figures/stage_over_path.png (+ .pdf: the camera path's azimuth and aperture
+on their own axes, then one panel per model). Skips when both exist unless --force; replots from the
+JSON when only the figure is missing. --quick: 480x270 pixels, 3 poses, two models (results/quick/, paper_figures/quick/).
 
 Protocol: Table 1's settings (9x9 mean filter, 1% primaries, SSAO on, frustum cut, ray-cast borders),
 1920x1080, a 16-pose path (bench_cutaway --per_pose: azimuth steps of 22.5 degrees, elevation
 alternating 25/45, full aperture rising 30..120 degrees), one warm-up pass, one timed frame per pose.
 """
+import json
 import os
 import sys
 
@@ -18,10 +20,8 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import cutaway_experiment as cx  # noqa: E402
 
 
-def main():
-    exp = cx.Experiment("stage_over_path", __doc__, ["stage_over_path.json", "stage_over_path.png"])
-    if exp.up_to_date():
-        return
+def measure(exp):
+    """Runs the benchmark; returns the JSON document it writes."""
     size, poses = ("480x270", 3) if exp.quick else ("1920x1080", 16)
     presets = cx.PRESETS[:2] if exp.quick else cx.PRESETS
     document = exp.benchmark("--presets=" + ",".join(presets), "--size=" + size, "--poses=" + str(poses), "--per_pose",
@@ -29,25 +29,64 @@ def main():
                              "--warmup=1", "--repeat=1", "--benchmark_filter=BM_cutaway")
     path = document["context"]["camera_path_az_el_aperture_deg"].split("; ")
     models = {p: sorted((r for r in cx.cutaway_runs(document) if r["preset"] == p), key=lambda r: r["pose"]) for p in presets}
-    cx.write_json(exp.path("stage_over_path.json"), {
-        "experiment": "stage_over_path", "quick": exp.quick, "size": size,
+    result = {
+        "experiment": "stage_over_path", "quick": exp.quick, "size": size, "aperture": "full opening angle",
         "camera_path_az_el_aperture_deg": path,
         "context": {**exp.context(), **cx.benchmark_context(document)},
         "models": {p: [{"pose": r["pose"], "aperture_deg": r.get("aperture_deg"), "stages_ms": r["stages_ms"],
                         "primary_cells": r["primary_cells"], "cells": r["cells"]} for r in rows]
-                   for p, rows in models.items()}})
+                   for p, rows in models.items()}}
+    cx.write_json(exp.path("stage_over_path.json"), result)
+    return result
 
+
+def plot(result, path):
+    """The camera path on top (azimuth and aperture on their own axes), then one panel of stage
+    times per model; one legend below the panels, clear of every curve."""
     plt = cx.pyplot()
-    fig, axes = plt.subplots(len(presets), 1, figsize=(7, 2.4 * len(presets)), sharex=True, squeeze=False)
-    for ax, preset in zip(axes[:, 0], presets):
-        rows = models[preset]
+    camera = [tuple(float(v) for v in pose.split("/")) for pose in result["camera_path_az_el_aperture_deg"]]
+    # Runs before the full-angle convention recorded each wall's angle: the full opening is twice it.
+    full = result.get("aperture") == "full opening angle"
+    apertures = [c[2] if full else 2 * c[2] for c in camera]
+    models = result["models"]
+    fig, axes = plt.subplots(len(models) + 2, 1, figsize=(8, 2.6 + 2.4 * len(models)), sharex=True, squeeze=False,
+                             gridspec_kw={"height_ratios": [0.5, 0.5] + [1] * len(models)})
+    poses = list(range(len(camera)))
+    axes[0, 0].plot(poses, [c[0] for c in camera], marker="s", color="tab:blue")
+    axes[0, 0].set_ylabel("azimuth\n(deg)")
+    axes[0, 0].set_title(f"camera path ({result['size']} px, elevation alternating 25/45 degrees)")
+    axes[1, 0].plot(poses, apertures, marker="^", color="tab:red")
+    axes[1, 0].set_ylabel("full aperture\n(deg)")
+    axes = axes[1:]
+    for ax, (preset, rows) in zip(axes[1:, 0], models.items()):
         for stage in cx.STAGES + ("total",):
-            ax.plot([r["pose"] for r in rows], [r["stages_ms"][stage] for r in rows], marker="o", label=cx.STAGE_LABELS[stage])
+            if stage not in rows[0]["stages_ms"]:  # a run from before the stage was timed
+                continue
+            style = {"color": "black", "linewidth": 2.2} if stage == "total" else {}
+            ax.plot([r["pose"] for r in rows], [r["stages_ms"][stage] for r in rows], marker="o", label=cx.STAGE_LABELS[stage],
+                    **style)
         ax.set_ylabel("time (ms)")
-        ax.set_title(f"{preset} ({int(rows[0]['cells']):,} cells, {int(rows[0]['primary_cells'])} primaries), {size}")
-    axes[0, 0].legend(ncol=4, loc="upper left")
-    axes[-1, 0].set_xlabel(f"camera pose (index; azimuth step {360 / poses:g} degrees, full aperture 30 to 120 degrees)")
-    cx.save_figure(fig, exp.path("stage_over_path.png"))
+        ax.set_title(f"{preset} ({int(rows[0]['cells']):,} cells, {int(rows[0]['primary_cells'])} primaries)")
+    axes[-1, 0].set_xlabel("camera pose (index along the path above)")
+    handles, labels = axes[1, 0].get_legend_handles_labels()
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
+    fig.legend(handles, labels, ncol=4, loc="lower center", frameon=False)
+    fig.savefig(path)
+    fig.savefig(os.path.splitext(path)[0] + ".pdf")
+    print("wrote", os.path.relpath(path, cx.REPO))
+
+
+def main():
+    exp = cx.Experiment("stage_over_path", __doc__, ["stage_over_path.json", "stage_over_path.png"])
+    json_path = exp.path("stage_over_path.json")
+    if exp.up_to_date():
+        return
+    if not exp.force and os.path.exists(json_path):  # the measurement is there: plot it again
+        with open(json_path) as f:
+            result = json.load(f)
+    else:
+        result = measure(exp)
+    plot(result, exp.path("stage_over_path.png"))
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@ uniform vec2 viewport_size;
 uniform float saturation_primary;    // factor on primaries' saturation
 uniform float saturation_secondary;  // factor on secondaries' saturation
 uniform int silhouette_width;        // pixels
-uniform vec3 silhouette_colour;
+uniform vec3 silhouette_colour;     // not the shell-cut lines' red
 uniform vec3 contour_colour;
 uniform float contour_jump;          // relative depth jump that makes a fold contour
 uniform vec3 background;
@@ -50,14 +50,18 @@ void main() {
     }
 #endif
 #ifdef SILHOUETTE
+    // A doubled line in its own colour (the red of the shell-cut lines means something else): the
+    // pixels next to the primaries and the band's outermost pixels, the scene showing between.
     if (!primary) {
         ivec2 last = ivec2(viewport_size) - 1;
-        bool near_primary = false;
-        for (int dy = -silhouette_width; dy <= silhouette_width && !near_primary; ++dy)
-            for (int dx = -silhouette_width; dx <= silhouette_width && !near_primary; ++dx)
-                near_primary = dx * dx + dy * dy <= silhouette_width * silhouette_width &&
-                               is_primary(clamp(texel + ivec2(dx, dy), ivec2(0), last));
-        if (near_primary) colour = silhouette_colour;
+        int nearest = silhouette_width * silhouette_width + 1;  // squared pixel distance to a primary
+        for (int dy = -silhouette_width; dy <= silhouette_width; ++dy)
+            for (int dx = -silhouette_width; dx <= silhouette_width; ++dx)
+                if (dx * dx + dy * dy < nearest && is_primary(clamp(texel + ivec2(dx, dy), ivec2(0), last)))
+                    nearest = dx * dx + dy * dy;
+        float distance = sqrt(float(nearest));
+        bool inner = distance < 1.6, outer = distance > float(silhouette_width) - 1.1;
+        if (distance <= float(silhouette_width) && (inner || outer)) colour = silhouette_colour;
     }
 #endif
 #ifdef CONTOURS

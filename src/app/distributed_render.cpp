@@ -75,7 +75,7 @@ struct RankScene {
         const auto setup_started = std::chrono::steady_clock::now();
         rank.emplace(*shaders, model.grid, frame, slab, grid::default_face_tolerance(model.grid), options.width,
                      options.height);
-        rank->set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
+        rank->set_colouring(property.values(), property.colour_bar_label());
         rank->select_range(property.primary_range, ijk_box);
         glFinish();
         setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();

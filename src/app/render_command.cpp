@@ -71,7 +71,7 @@ int run_render(const RenderOptions& options) {
     const auto setup_started = std::chrono::steady_clock::now();
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height);
     check_view(renderer.frame(), options);
-    renderer.set_colouring(property.values(), {property.label, property.colour_range.min, property.colour_range.max});
+    renderer.set_colouring(property.values(), property.colour_bar_label());
     renderer.select_range(property.primary_range, box);
     // The corner depths live on the GPU now and nothing reads them on the CPU again.
     model.grid.release_corner_depths();
@@ -84,10 +84,11 @@ int run_render(const RenderOptions& options) {
                   << property.primary_range.min << ", " << property.primary_range.max
                   << "]; rendering the context only\n";
     const pipeline::FrameSettings settings = options.frame_settings();
+    const float bar_width = renderer.colour_bar_reserved_width(settings);
     const pipeline::Camera camera =
-        pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height);
+        pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height, bar_width);
     if (options.freeze_pose)
-        renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *options.freeze_pose, options.width, options.height));
+        renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *options.freeze_pose, options.width, options.height, bar_width));
 
     for (int i = 0; i < options.warmup; ++i) renderer.render(settings, camera);
     std::vector<pipeline::FrameTimes> runs;

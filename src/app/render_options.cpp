@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <stdexcept>
 
+#include "annotation/property_units.h"
 #include "app/option_checks.h"
 
 namespace cutaway::app {
@@ -189,6 +190,10 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--rank-slabs", o.rank_slabs,
                  "under mpirun: cut the model into one slab of whole layers per rank along i, j or k")
         ->check(one_of({"i", "j", "k"}));
+}
+
+annotation::ColourBarLabel PropertyChoice::colour_bar_label() const {
+    return {label, colour_range.min, colour_range.max, annotation::property_unit(name)};
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options) {

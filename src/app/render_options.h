@@ -8,6 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "annotation/colour_bar_layout.h"
 #include "cutaway/camera.h"
 #include "cutaway/frame_settings.h"
 #include "gl/gl_context.h"
@@ -89,6 +90,8 @@ struct PropertyChoice {
     grid::PrimaryRange colour_range;  ///< active min and max
     grid::PrimaryRange primary_range;
     const std::vector<float>& values() const { return external ? *external : owned; }
+    /// The colour bar's title (the label), unit (by the property's keyword) and colour range.
+    annotation::ColourBarLabel colour_bar_label() const;
 };
 
 /// Throws std::invalid_argument for an unknown property or step, naming the known ones.

@@ -19,8 +19,11 @@
 #include "gl/shader_library.h"
 #include "gl/stage_timer.h"
 #include "io/staged_file.h"
+#include "annotation/colour_bar_layout.h"
+#include "volume/colour_bar.h"
 #include "volume/cpu_ray_caster.h"
 #include "volume/gpu_ray_caster.h"
+#include "volume/level_window.h"
 #include "volume/segy_reader.h"
 #include "volume/view_geometry.h"
 
@@ -43,7 +46,9 @@ struct VolumeOptions {
     std::string caster = "gpu";
     std::vector<double> camera;
     std::vector<int> size;
-    std::vector<double> layer;  ///< k r alpha_v f_v
+    std::vector<double> layer;  ///< k r alpha_v f_v; empty: fitted to the window
+    std::string window = "auto";       ///< auto (2-98 percentile levels) or full (0..255)
+    std::string colour_scale = "perceptual";
     double opacity = volume::TransferFunctionSettings{}.opacity;
     bool no_skip = false, no_jitter = false, no_opacity_correction = false, no_early_termination = false;
     bool no_colour_bar = false;
@@ -123,6 +128,9 @@ nlohmann::json configuration_json(const VolumeOptions& o, const volume::Transfer
             {"transfer_function",
              {{"name", volume::transfer_function_name(tf.kind)},
               {"opacity", tf.opacity},
+              {"window", o.window},
+              {"window_levels", {tf.window.lo, tf.window.hi}},
+              {"colour_scale", volume::colour_scale_name(tf.scale)},
               {"layer", {{"k", tf.layer.k}, {"r", tf.layer.r}, {"alpha_v", tf.layer.alpha_v}, {"f_v", tf.layer.f_v}}}}},
             {"size", {s.width, s.height}},
             {"camera",
@@ -139,6 +147,7 @@ nlohmann::json configuration_json(const VolumeOptions& o, const volume::Transfer
             {"empty_space_skipping", s.empty_space_skipping},
             {"block_size", s.block_size},
             {"colour_bar", s.colour_bar},
+            {"reserved_right_px", s.reserved_right_px},
             {"cpu_threads", threads},
             {"warmup", o.warmup},
             {"repeat", o.repeat},
@@ -176,6 +185,7 @@ void apply_options(VolumeOptions& o, volume::TransferFunctionSettings& tf) {
         throw std::invalid_argument("volume: --warmup must be >= 0 and --repeat >= 1");
     volume::validate(s);
     tf.kind = volume::parse_transfer_function(o.tf);
+    tf.scale = volume::parse_colour_scale(o.colour_scale);
     tf.opacity = o.opacity;
     if (!o.layer.empty()) tf.layer = {o.layer[0], o.layer[1], o.layer[2], o.layer[3]};
     // One budget: the frame's targets first, the cube's samples from what is left.
@@ -210,7 +220,15 @@ int run_volume(VolumeOptions& o) {
                   << " missing traces filled with " << cube.null_value << '\n';
     start = Clock::now();
     const volume::QuantisedVolume levels = volume::quantise(cube);
-    const volume::VolumeScene scene = volume::make_scene(levels, volume::build_transfer_table(tf), o.settings.block_size);
+    if (o.window == "auto") tf.window = volume::percentile_window(levels);
+    if (o.layer.empty()) tf.layer = volume::fitted_layer(tf.window);
+    const volume::VolumeScene scene =
+        volume::make_scene(levels, volume::build_transfer_table(tf), o.settings.block_size, tf.window);
+    // The cube is framed left of the colour bar it will carry (never more than half the width).
+    if (o.settings.colour_bar)
+        o.settings.reserved_right_px =
+            std::min(0.5f * float(o.settings.width), annotation::colour_bar_reserved_width(volume::colour_bar_label(scene),
+                                                                                        o.settings.width, o.settings.height));
     const double prepare_ms = elapsed_ms(start);
 
     const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
@@ -264,10 +282,16 @@ CommandAction add_volume_command(CLI::App& app) {
     cmd->add_option("--stats", o->stats, "Write times, sample counts and the configuration as JSON")
         ->check(writable_output());
     cmd->add_option("--tf", o->tf, "Transfer function: grey, pseudo or layer")->check(one_of({"grey", "pseudo", "layer"}));
+    cmd->add_option("--window", o->window, "Levels the transfer function spans: auto (2-98 percentile) or full")
+        ->check(one_of({"auto", "full"}));
+    cmd->add_option("--colour-scale", o->colour_scale, "pseudo/layer colours: perceptual (viridis) or rainbow (the paper's)")
+        ->check(one_of({"perceptual", "rainbow"}));
     cmd->add_option("--opacity", o->opacity, "grey/pseudo: opacity of the top level per voxel step (0..1)")
         ->check(finite_in(0, 1));
     CLI::Option* layer =
-        cmd->add_option("--layer", o->layer, "Layer highlight K R ALPHA_V F_V (levels; default 1 60 1 255)")->expected(4);
+        cmd->add_option("--layer", o->layer,
+                        "Layer highlight K R ALPHA_V F_V (levels; default: 1, half the window, 1, the window's top)")
+            ->expected(4);
     layer->check(finite_in(0, 255, "", "K").application_index(0));
     layer->check(finite_above(0, 255, "levels", "R").application_index(1));
     layer->check(finite_in(0, 1, "", "ALPHA_V").application_index(2));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -9,31 +10,95 @@ namespace cutaway::pipeline {
 
 namespace {
 
-/// Smallest distance along `direction` from `target` at which all 8 corners of the model's box
-/// lie inside the view, plus 5% to spare.
-float framing_distance(const ModelFrame& frame, const glm::vec3& target, const glm::vec3& direction, float fovy,
-                       float aspect) {
-    const glm::vec3 forward = -direction;
-    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0, 0, 1)));
-    const glm::vec3 up = glm::cross(right, forward);
-    const float tan_y = std::tan(0.5f * fovy), tan_x = tan_y * aspect;
+/// Where a framed camera stands: `distance` along the view direction from `target + offset`,
+/// `offset` perpendicular to the view direction (a pan that centres the model's image).
+struct Framing {
     float distance = 0;
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner{c & 1 ? frame.render_max.x : frame.render_min.x, c & 2 ? frame.render_max.y : frame.render_min.y,
-                               c & 4 ? frame.render_max.z : frame.render_min.z};
-        const glm::vec3 p = corner - target;
-        const float along = glm::dot(p, forward);  // towards the far side
-        distance = std::max({distance, std::abs(glm::dot(p, right)) / tan_x - along,
-                             std::abs(glm::dot(p, up)) / tan_y - along});
+    glm::vec3 offset{0};
+};
+
+/// The bounds of the model's points as the camera of `framing` projects them: normalised device
+/// x and y, or nothing when a point lies behind (or nearly at) the eye.
+struct ProjectedBox {
+    glm::vec2 min{0}, max{0};
+    bool in_front = true;
+};
+
+struct ViewAxes {
+    glm::vec3 direction, forward, right, up;
+    float tan_x, tan_y;
+};
+
+/// The points framing looks at: the model's outline, or its box's 8 corners.
+std::vector<glm::vec3> framing_points(const ModelFrame& frame) {
+    if (!frame.outline.empty()) return frame.outline;
+    std::vector<glm::vec3> corners;
+    for (int c = 0; c < 8; ++c)
+        corners.push_back({c & 1 ? frame.render_max.x : frame.render_min.x, c & 2 ? frame.render_max.y : frame.render_min.y,
+                           c & 4 ? frame.render_max.z : frame.render_min.z});
+    return corners;
+}
+
+ProjectedBox project_box(const std::vector<glm::vec3>& points, float radius, const glm::vec3& target, const ViewAxes& axes,
+                         const Framing& framing) {
+    const glm::vec3 eye = target + framing.offset + framing.distance * axes.direction;
+    ProjectedBox box{glm::vec2(1e30f), glm::vec2(-1e30f), true};
+    for (const glm::vec3& point : points) {
+        const glm::vec3 p = point - eye;
+        const float depth = glm::dot(p, axes.forward);
+        if (depth < 1e-3f * radius) return {glm::vec2(0), glm::vec2(0), false};
+        const glm::vec2 ndc{glm::dot(p, axes.right) / (depth * axes.tan_x), glm::dot(p, axes.up) / (depth * axes.tan_y)};
+        box.min = glm::min(box.min, ndc);
+        box.max = glm::max(box.max, ndc);
     }
-    return 1.05f * std::max(distance, 1e-3f * frame.radius());
+    return box;
+}
+
+/// Share of the free area that the projected box fills in its tighter dimension, after panning so
+/// that its centre sits at the free area's centre (`framing.offset` is updated). Infinite when a
+/// point is behind the eye.
+float centred_fill(const std::vector<glm::vec3>& points, float radius, const glm::vec3& target, const ViewAxes& axes,
+                   float free_x1, Framing& framing) {
+    const glm::vec2 free_centre{0.5f * (free_x1 - 1.0f), 0.0f}, free_size{free_x1 + 1.0f, 2.0f};
+    ProjectedBox box;
+    // The box's image moves by offset / depth: a few steps converge (depth differs little
+    // across the box at a framing distance).
+    for (int step = 0; step < 6; ++step) {
+        box = project_box(points, radius, target, axes, framing);
+        if (!box.in_front) return INFINITY;
+        const glm::vec2 error = 0.5f * (box.min + box.max) - free_centre;
+        framing.offset += axes.right * (error.x * framing.distance * axes.tan_x) + axes.up * (error.y * framing.distance * axes.tan_y);
+    }
+    const glm::vec2 size = box.max - box.min;
+    return std::max(size.x / free_size.x, size.y / free_size.y);
+}
+
+/// The distance (bisected on a log scale) and pan at which the model's projected points fill
+/// `fill` of the free area [-1, free_x1] x [-1, 1] (normalised device coordinates) in its tighter
+/// dimension, centred in it.
+Framing frame_model(const ModelFrame& frame, const glm::vec3& target, const ViewAxes& axes, float free_x1, float fill) {
+    const float radius = std::max(frame.radius(), 1e-6f);
+    const std::vector<glm::vec3> points = framing_points(frame);
+    float near = 0.5f * radius, far = 1e3f * radius / axes.tan_y;
+    Framing framing{far, glm::vec3(0)};
+    for (int step = 0; step < 48; ++step) {
+        Framing trial{std::sqrt(near * far), framing.offset};
+        if (centred_fill(points, radius, target, axes, free_x1, trial) > fill) {
+            near = trial.distance;
+        } else {
+            far = trial.distance;
+            framing = trial;
+        }
+    }
+    centred_fill(points, radius, target, axes, free_x1, framing);  // the pan for the final distance
+    return framing;
 }
 
 }  // namespace
 
 float Camera::focal_px() const { return 0.5f * float(height) / std::tan(0.5f * fovy_rad); }
 
-Camera make_orbit_camera(const ModelFrame& frame, const OrbitPose& pose, int width, int height) {
+Camera make_orbit_camera(const ModelFrame& frame, const OrbitPose& pose, int width, int height, float reserved_right_px) {
     Camera camera;
     camera.width = width;
     camera.height = height;
@@ -44,9 +109,19 @@ Camera make_orbit_camera(const ModelFrame& frame, const OrbitPose& pose, int wid
     const float elevation = glm::radians(std::clamp(pose.elevation_deg, -89.0f, 89.0f));
     const glm::vec3 direction{std::sin(azimuth) * std::cos(elevation), -std::cos(azimuth) * std::cos(elevation),
                               std::sin(elevation)};
-    const float distance = pose.distance > 0 ? pose.distance : framing_distance(frame, pose.target, direction, camera.fovy_rad, aspect);
-    camera.eye = pose.target + distance * direction;
-    camera.view = glm::lookAt(camera.eye, pose.target, glm::vec3(0, 0, 1));
+    Framing framing{pose.distance, glm::vec3(0)};
+    if (pose.distance <= 0) {
+        ViewAxes axes{direction, -direction, {}, {}, 0, 0};
+        axes.right = glm::normalize(glm::cross(axes.forward, glm::vec3(0, 0, 1)));
+        axes.up = glm::cross(axes.right, axes.forward);
+        axes.tan_y = std::tan(0.5f * camera.fovy_rad);
+        axes.tan_x = axes.tan_y * aspect;
+        const float free_x1 = 1.0f - 2.0f * std::clamp(reserved_right_px / float(width), 0.0f, 0.5f);
+        framing = frame_model(frame, pose.target, axes, free_x1, framed_fill);
+    }
+    const glm::vec3 look_at = pose.target + framing.offset;
+    camera.eye = look_at + framing.distance * direction;
+    camera.view = glm::lookAt(camera.eye, look_at, glm::vec3(0, 0, 1));
     const float centre_distance = glm::length(camera.eye);  // the model's centre is the origin
     camera.near_plane = std::max(centre_distance - 1.5f * radius, 1e-3f * centre_distance);
     camera.far_plane = centre_distance + 1.5f * radius;

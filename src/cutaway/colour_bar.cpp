@@ -1,11 +1,7 @@
 #include "cutaway/colour_bar.h"
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
 #include <vector>
-
-#include <stb/stb_easy_font.h>
 
 #include "gl/uniforms.h"
 
@@ -26,30 +22,10 @@ void add_rectangle(std::vector<BarVertex>& out, float x0, float y0, float x1, fl
     out.insert(out.end(), {a, b, e, a, e, d});
 }
 
-/// stb_easy_font quads (x, y, z, rgba per vertex) scaled by `scale` at (x, y) -> triangles.
-void add_text(std::vector<BarVertex>& out, const std::string& text, float x, float y, float scale) {
-    std::vector<char> buffer(text.size() * 300 + 64);
-    std::string copy = text;
-    std::uint8_t black[4] = {20, 20, 20, 255};
-    const int quads = stb_easy_font_print(0, 0, copy.data(), black, buffer.data(), int(buffer.size()));
-    struct FontVertex {
-        float x, y, z;
-        std::uint8_t c[4];
-    };
-    const auto* v = reinterpret_cast<const FontVertex*>(buffer.data());
-    for (int q = 0; q < quads; ++q) {
-        const FontVertex* quad = v + 4 * q;
-        auto at = [&](int k) {
-            return BarVertex{x + scale * quad[k].x, y + scale * quad[k].y, {20, 20, 20, 255}, -1.0f};
-        };
-        out.insert(out.end(), {at(0), at(1), at(2), at(0), at(2), at(3)});
-    }
-}
-
-std::string format_value(float value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", double(value));
-    return text;
+/// Every stroke of `line` as two solid triangles.
+void add_text(std::vector<BarVertex>& out, const annotation::TextLine& line, const std::uint8_t (&c)[4]) {
+    for (const annotation::PixelRect& glyph : annotation::glyph_boxes(line))
+        add_rectangle(out, glyph.x0, glyph.y0, glyph.x1, glyph.y1, c, -1, -1);
 }
 
 }  // namespace
@@ -67,23 +43,16 @@ ColourBar::ColourBar(const gl::ShaderLibrary& shaders)
 
 void ColourBar::draw(const gl::Framebuffer& target, int width, int height, const gl::Texture& colour_map,
                      const ColourBarLabel& label) {
-    const float scale = std::clamp(float(height) / 400.0f, 1.0f, 3.0f);  // text size follows the image
-    const float bar_w = 10 * scale, bar_h = 0.4f * float(height);
-    const float x1 = float(width) - 40 * scale, x0 = x1 - bar_w;
-    const float y0 = 0.3f * float(height), y1 = y0 + bar_h;
+    const annotation::ColourBarLayout layout = annotation::layout_colour_bar(label, width, height);
     std::vector<BarVertex> vertices;
-    const std::uint8_t frame[4] = {20, 20, 20, 255};
-    add_rectangle(vertices, x0 - 1, y0 - 1, x1 + 1, y1 + 1, frame, -1, -1);
-    add_rectangle(vertices, x0, y0, x1, y1, frame, 1.0f, 0.0f);
-    // Labels end 4 pixels left of the bar (right-aligned); the name sits above, right-aligned too.
-    const auto text_width = [&](const std::string& text) {
-        std::string copy = text;
-        return scale * float(stb_easy_font_width(copy.data()));
-    };
-    const std::string top = format_value(label.max), bottom = format_value(label.min);
-    add_text(vertices, label.property, x1 - text_width(label.property), y0 - 14 * scale, scale);
-    add_text(vertices, top, x0 - 4 * scale - text_width(top), y0 - 3 * scale, scale);
-    add_text(vertices, bottom, x0 - 4 * scale - text_width(bottom), y1 - 3 * scale, scale);
+    const std::uint8_t ink[4] = {20, 20, 20, 255};
+    const annotation::PixelRect& f = layout.frame;
+    const annotation::PixelRect& g = layout.gradient;
+    add_rectangle(vertices, f.x0, f.y0, f.x1, f.y1, ink, -1, -1);
+    add_rectangle(vertices, g.x0, g.y0, g.x1, g.y1, ink, 1.0f, 0.0f);
+    for (const annotation::ColourBarTick& tick : layout.ticks)
+        add_rectangle(vertices, tick.mark.x0, tick.mark.y0, tick.mark.x1, tick.mark.y1, ink, -1, -1);
+    for (const annotation::TextLine& line : layout.texts()) add_text(vertices, line, ink);
     const gl::Buffer buffer(vertices.size() * sizeof(BarVertex), vertices.data());
     glVertexArrayVertexBuffer(vertex_array_.id(), 0, buffer.id(), 0, sizeof(BarVertex));
     target.bind();

@@ -1,23 +1,18 @@
 #pragma once
-// The colour bar drawn into the image: gradient of the colour map, frame, property name, min
-// and max values (text from stb_easy_font).
-#include <string>
-
+// The colour bar drawn into the image: gradient of the colour map, frame, title with unit, round
+// tick values (annotation::layout_colour_bar places them; text from stb_easy_font).
+#include "annotation/colour_bar_layout.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_library.h"
 
 namespace cutaway::pipeline {
 
-struct ColourBarLabel {
-    std::string property;  ///< e.g. "PORO"
-    float min = 0;
-    float max = 1;
-};
+using annotation::ColourBarLabel;
 
 class ColourBar {
 public:
     explicit ColourBar(const gl::ShaderLibrary& shaders);
-    /// Draws into `target` (width x height) at the right edge.
+    /// Draws into `target` (width x height) at the right edge, as layout_colour_bar places it.
     void draw(const gl::Framebuffer& target, int width, int height, const gl::Texture& colour_map,
               const ColourBarLabel& label);
 

@@ -8,7 +8,7 @@ namespace cutaway::pipeline {
 namespace {
 
 constexpr std::uint8_t viridis[256][3] = {
-#include "cutaway/viridis_table.inc"
+#include "annotation/viridis_table.inc"
 };
 
 }  // namespace

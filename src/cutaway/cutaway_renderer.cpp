@@ -92,7 +92,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
     // The GPU holds the pillars now; the CPU copy is not read again.
     layout_.pillars = {};
     set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));
-    set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1});
+    set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1, ""});
 }
 
 void CutawayRenderer::set_colouring(const std::vector<float>& values, const ColourBarLabel& label) {
@@ -102,6 +102,10 @@ void CutawayRenderer::set_colouring(const std::vector<float>& values, const Colo
     for (std::size_t c = 0; c < compact.size(); ++c) compact[c] = values[layout_.cells[c] & 0x7fffffffu];
     buffers_.set_values(compact);
     label_ = label;
+}
+
+float CutawayRenderer::colour_bar_reserved_width(const FrameSettings& settings) const {
+    return settings.colour_bar ? annotation::colour_bar_reserved_width(label_, width_, height_) : 0.0f;
 }
 
 void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {

@@ -107,6 +107,9 @@ public:
 
     /// Colours cells by `values` (one per Eclipse cell) mapped from `range`.
     void set_colouring(const std::vector<float>& values, const ColourBarLabel& label);
+    /// Columns at the image's right edge a framed camera leaves to the colour bar (0 without one):
+    /// the `reserved_right_px` of make_orbit_camera.
+    float colour_bar_reserved_width(const FrameSettings& settings) const;
     /// Primary flags, one per Eclipse cell.
     void set_primaries(const std::vector<std::uint8_t>& flags);
     /// Primaries chosen on the GPU: the active cells whose colouring value lies in `range` (and

@@ -39,7 +39,7 @@ struct FrameSettings {
     float saturation_primary = 1.5f;
     float saturation_secondary = 0.35f;
     bool silhouette = false;
-    int silhouette_width_px = 3;
+    int silhouette_width_px = 4;           ///< band of the doubled line: 1 px, a gap, 1 px
     bool contours = true;                  ///< shell contour lines (stage 3)
     bool hide_internal_lines = false;
     OnlyLayer only = OnlyLayer::both;

@@ -93,7 +93,9 @@ int ViewerApp::render_width() const { return std::max(1, int(std::lround(window_
 int ViewerApp::render_height() const { return std::max(1, int(std::lround(window_fb_height_ * state_.render_scale))); }
 
 pipeline::Camera ViewerApp::camera_for(const pipeline::OrbitPose& pose) const {
-    return pipeline::make_orbit_camera(scene_->renderer().frame(), pose, render_width(), render_height());
+    const pipeline::CutawayRenderer& renderer = scene_->renderer();
+    return pipeline::make_orbit_camera(renderer.frame(), pose, render_width(), render_height(),
+                                       renderer.colour_bar_reserved_width(settings_));
 }
 
 int ViewerApp::run() {

@@ -40,8 +40,7 @@ void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
 }
 
 void ViewerScene::apply_colouring(pipeline::CutawayRenderer& renderer) const {
-    renderer.set_colouring(property_.values(),
-                           {property_.label, property_.colour_range.min, property_.colour_range.max});
+    renderer.set_colouring(property_.values(), property_.colour_bar_label());
 }
 
 std::size_t ViewerScene::primary_count() const { return renderer_ ? renderer_->primary_cell_count() : 0; }

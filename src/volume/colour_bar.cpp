@@ -1,46 +1,39 @@
 #include "volume/colour_bar.h"
 
 #include <algorithm>
-#include <cmath>
+
+#include "annotation/colour_bar_layout.h"
+#include "volume/image_drawing.h"
+#include "volume/level_window.h"
 
 namespace cutaway::volume {
 
-namespace {
-void put(gl::RgbaImage& image, int x, int y, float r, float g, float b) {
-    std::uint8_t* pixel = image.at(x, y);
-    pixel[0] = std::uint8_t(std::lround(std::clamp(r, 0.0f, 1.0f) * 255));
-    pixel[1] = std::uint8_t(std::lround(std::clamp(g, 0.0f, 1.0f) * 255));
-    pixel[2] = std::uint8_t(std::lround(std::clamp(b, 0.0f, 1.0f) * 255));
-    pixel[3] = 255;
+annotation::ColourBarLabel colour_bar_label(const VolumeScene& scene) {
+    // SEG-Y amplitudes carry no unit we can trust (trace header units are rarely filled in).
+    return {"amplitude", float(level_value(scene.window.lo, scene.volume->range)),
+            float(level_value(scene.window.hi, scene.volume->range)), ""};
 }
-}  // namespace
 
-void draw_colour_bar(gl::RgbaImage& image, const TransferTable& table, Rgba background) {
-    const int bar_width = std::max(8, image.width / 40) & ~1;
-    const int bar_height = image.height * 3 / 5;
-    const int margin = std::max(4, image.width / 64);
-    const int x0 = image.width - margin - bar_width, y0 = (image.height - bar_height) / 2;
-    if (x0 < 1 || y0 < 1) return;
+void draw_colour_bar(gl::RgbaImage& image, const VolumeScene& scene, Rgba background) {
+    const annotation::ColourBarLayout layout = annotation::layout_colour_bar(colour_bar_label(scene), image.width, image.height);
+    const Rgba ink = ink_on(background);
     float max_alpha = 0;
-    for (const Rgba& entry : table) max_alpha = std::max(max_alpha, entry.a);
-    for (int row = 0; row < bar_height; ++row) {
-        const float level = 255.0f * float(bar_height - 1 - row) / float(std::max(1, bar_height - 1));
-        const Rgba c = lookup(table, level);
+    for (const Rgba& entry : scene.table) max_alpha = std::max(max_alpha, entry.a);
+    fill_rect(image, layout.frame, ink);
+    const annotation::PixelRect& g = layout.gradient;
+    for (float y = g.y0; y < g.y1; ++y) {
+        const float along = (g.y1 - (y + 0.5f)) / g.height();  // 0 at the bottom
+        const float level = float(scene.window.lo + along * (scene.window.hi - scene.window.lo));
+        const Rgba c = lookup(scene.table, level);
         const float shown = max_alpha > 0 ? c.a / max_alpha : 0;
-        for (int col = 0; col < bar_width; ++col) {
-            const float a = col < bar_width / 2 ? 1.0f : shown;
-            put(image, x0 + col, y0 + row, c.r * a + background.r * (1 - a), c.g * a + background.g * (1 - a),
-                c.b * a + background.b * (1 - a));
-        }
+        const Rgba faded{c.r * shown + background.r * (1 - shown), c.g * shown + background.g * (1 - shown),
+                         c.b * shown + background.b * (1 - shown), 1};
+        const float middle = 0.5f * (g.x0 + g.x1);
+        fill_rect(image, {g.x0, y, middle, y + 1}, c);
+        fill_rect(image, {middle, y, g.x1, y + 1}, faded);
     }
-    for (int col = -1; col <= bar_width; ++col) {
-        put(image, x0 + col, y0 - 1, 1, 1, 1);
-        put(image, x0 + col, y0 + bar_height, 1, 1, 1);
-    }
-    for (int row = -1; row <= bar_height; ++row) {
-        put(image, x0 - 1, y0 + row, 1, 1, 1);
-        put(image, x0 + bar_width, y0 + row, 1, 1, 1);
-    }
+    for (const annotation::ColourBarTick& tick : layout.ticks) fill_rect(image, tick.mark, ink);
+    for (const annotation::TextLine& line : layout.texts()) draw_text(image, line, ink);
 }
 
 }  // namespace cutaway::volume

@@ -1,12 +1,18 @@
 #pragma once
-// The transfer function drawn into the image's right margin: level 0 at the bottom, 255 at the top;
-// the left half shows the colour, the right half the colour at the level's opacity relative to the
-// table's largest (so low-opacity ramps stay visible) over the background. White frame.
+// The transfer function drawn into the image's right margin (annotation::layout_colour_bar places
+// it): the fitted window's bottom level at the bottom, its top at the top, round amplitude ticks,
+// the title "amplitude". The left half of the gradient shows the colour, the right half the colour
+// at the level's opacity relative to the table's largest (so low-opacity ramps stay visible) over
+// the background.
+#include "annotation/colour_bar_layout.h"
 #include "gl/image.h"
-#include "volume/transfer_function.h"
+#include "volume/volume_scene.h"
 
 namespace cutaway::volume {
 
-void draw_colour_bar(gl::RgbaImage& image, const TransferTable& table, Rgba background);
+/// The bar's label: the title and the amplitudes at the window's ends.
+annotation::ColourBarLabel colour_bar_label(const VolumeScene& scene);
+
+void draw_colour_bar(gl::RgbaImage& image, const VolumeScene& scene, Rgba background);
 
 }  // namespace cutaway::volume

@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "volume/colour_bar.h"
+#include "volume/annotations.h"
 #include "volume/ray_march.h"
 #include "volume/view_geometry.h"
 
@@ -74,7 +74,7 @@ CastResult cast_rays_cpu(const VolumeScene& scene, const RayCastSettings& settin
         result.samples += t.samples;
         result.rays += t.rays;
     }
-    if (settings.colour_bar) draw_colour_bar(result.image, scene.table, settings.background);
+    if (settings.colour_bar) draw_annotations(result.image, scene, view, settings);
     return result;
 }
 

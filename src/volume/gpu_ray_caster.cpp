@@ -2,7 +2,7 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
-#include "volume/colour_bar.h"
+#include "volume/annotations.h"
 #include "volume/view_geometry.h"
 
 namespace cutaway::volume {
@@ -135,7 +135,7 @@ CastResult GpuRayCaster::render(const RayCastSettings& settings, gl::StageTimer&
         }
     });
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    if (settings.colour_bar) draw_colour_bar(result.image, scene_->table, settings.background);
+    if (settings.colour_bar) draw_annotations(result.image, *scene_, view, settings);
     return result;
 }
 

@@ -23,6 +23,8 @@ void validate(const RayCastSettings& s) {
     require(s.early_termination_alpha > 0 && s.early_termination_alpha <= 1, "early_termination_alpha", "0 < a <= 1",
             s.early_termination_alpha);
     require(s.block_size >= 2 && s.block_size <= 64, "block_size", "2..64 voxels", s.block_size);
+    require(s.reserved_right_px >= 0 && s.reserved_right_px <= 0.5f * float(s.width), "reserved_right_px",
+            "0..width/2 pixels", s.reserved_right_px);
 }
 
 }  // namespace cutaway::volume

@@ -29,7 +29,10 @@ struct RayCastSettings {
     bool empty_space_skipping = true;  ///< step over min/max blocks the transfer function makes empty
     int block_size = 4;                ///< empty-space block edge, voxels (4 skipped most on the paper cube)
     Rgba background{0, 0, 0, 1};       ///< behind the volume
-    bool colour_bar = true;            ///< transfer-function bar at the image's right edge
+    bool colour_bar = true;            ///< transfer-function bar at the right edge, inline / crossline / time edges
+    /// Image columns at the right kept for the colour bar: a framed cube (distance 0) is fitted and
+    /// centred left of them (0..width/2).
+    float reserved_right_px = 0;
 };
 
 /// Throws std::invalid_argument naming the first field out of range.

@@ -1,6 +1,7 @@
 #include "volume/transfer_function.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <stdexcept>
 
@@ -20,6 +21,32 @@ const char* transfer_function_name(TransferFunctionKind kind) {
         case TransferFunctionKind::layer: return "layer";
     }
     return "unknown";
+}
+
+Rgba perceptual_colour(double t) {
+    static constexpr std::uint8_t viridis[256][3] = {
+#include "annotation/viridis_table.inc"
+    };
+    const double x = std::clamp(t, 0.0, 1.0) * 255.0;
+    const std::size_t i = std::min<std::size_t>(std::size_t(x), 254);
+    const float f = float(x - double(i));
+    Rgba c{0, 0, 0, 1};
+    float* channel[3] = {&c.r, &c.g, &c.b};
+    for (std::size_t k = 0; k < 3; ++k)
+        *channel[k] = (float(viridis[i][k]) + f * (float(viridis[i + 1][k]) - float(viridis[i][k]))) / 255.0f;
+    return c;
+}
+
+ColourScale parse_colour_scale(const std::string& name) {
+    if (name == "perceptual") return ColourScale::perceptual;
+    if (name == "rainbow") return ColourScale::rainbow;
+    throw std::invalid_argument("colour scale '" + name + "': expected perceptual or rainbow");
+}
+
+const char* colour_scale_name(ColourScale scale) { return scale == ColourScale::rainbow ? "rainbow" : "perceptual"; }
+
+double window_position(double level, const LevelWindow& window) {
+    return std::clamp((level - window.lo) / (window.hi - window.lo), 0.0, 1.0);
 }
 
 Rgba pseudo_colour(double t) {
@@ -48,12 +75,20 @@ TransferTable build_transfer_table(const TransferFunctionSettings& settings) {
         throw std::invalid_argument("layer highlight: r = " + std::to_string(layer.r) + ", alpha_v = " +
                                     std::to_string(layer.alpha_v) + ", k = " + std::to_string(layer.k) +
                                     "; expected r > 0, 0 <= alpha_v <= 1, k >= 0");
+    if (!(settings.window.hi > settings.window.lo))
+        throw std::invalid_argument("transfer function window [" + std::to_string(settings.window.lo) + ", " +
+                                    std::to_string(settings.window.hi) + "]: expected lo < hi (levels)");
     TransferTable table;
     for (int level = 0; level < 256; ++level) {
-        const double t = level / 255.0;
-        Rgba entry = settings.kind == TransferFunctionKind::grey ? Rgba{float(t), float(t), float(t), 1} : pseudo_colour(t);
-        entry.a = settings.kind == TransferFunctionKind::layer ? float(layer_alpha(level, layer))
-                                                               : float(settings.opacity * t);
+        const double t = window_position(level, settings.window);
+        Rgba entry;
+        if (settings.kind == TransferFunctionKind::grey) {
+            entry = {float(t), float(t), float(t), float(settings.opacity * t)};
+        } else {
+            entry = settings.scale == ColourScale::rainbow ? pseudo_colour(t) : perceptual_colour(t);
+            entry.a = settings.kind == TransferFunctionKind::layer ? float(layer_alpha(level, layer))
+                                                                   : float(settings.opacity * (2 * t - 1) * (2 * t - 1));
+        }
         table[std::size_t(level)] = entry;
     }
     return table;

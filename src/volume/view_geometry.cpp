@@ -27,7 +27,9 @@ ViewGeometry make_view(const CubeDims& dims, const RayCastSettings& settings) {
     const double radius = glm::length(half_world);
     const double fov = glm::radians(settings.camera.fov_deg);
     const double aspect = double(settings.width) / settings.height;
-    const double fit_fov = aspect < 1 ? 2 * std::atan(std::tan(fov / 2) * aspect) : fov;
+    // The cube's bounding sphere fits the image left of the reserved columns (the colour bar).
+    const double free_share = 1.0 - double(settings.reserved_right_px) / settings.width;
+    const double fit_fov = 2 * std::atan(std::tan(fov / 2) * std::min(1.0, aspect * free_share));
     view.distance = settings.camera.distance > 0 ? settings.camera.distance : 1.05 * radius / std::sin(fit_fov / 2);
     const double az = glm::radians(settings.camera.azimuth_deg), el = glm::radians(settings.camera.elevation_deg);
     const glm::vec3 eye = float(view.distance) *
@@ -35,7 +37,9 @@ ViewGeometry make_view(const CubeDims& dims, const RayCastSettings& settings) {
     const float near_plane = float(std::max(0.01 * view.distance, view.distance - radius * 1.01));
     const float far_plane = float(view.distance + radius * 1.01);
     const glm::mat4 world_to_view = glm::lookAt(eye, glm::vec3(0), glm::vec3(0, 0, 1));
-    const glm::mat4 projection = glm::perspective(float(fov), float(aspect), near_plane, far_plane);
+    // Shifted so the cube's centre lands in the middle of the free columns (NDC x -reserved/width).
+    const glm::mat4 shift = glm::translate(glm::mat4(1.0f), glm::vec3(-float(1.0 - free_share), 0, 0));
+    const glm::mat4 projection = shift * glm::perspective(float(fov), float(aspect), near_plane, far_plane);
     view.voxel_to_clip = projection * world_to_view * view.voxel_to_world;
     view.clip_to_voxel = glm::inverse(view.voxel_to_clip);
     view.eye_voxel = glm::vec3(glm::inverse(view.voxel_to_world) * glm::vec4(eye, 1));

@@ -13,11 +13,13 @@ namespace cutaway::volume {
 struct VolumeScene {
     const QuantisedVolume* volume = nullptr;  ///< not owned; outlives the scene
     TransferTable table;
+    LevelWindow window;                       ///< the levels the table's colour scale spans
     BlockGrid blocks;
     std::vector<std::uint8_t> occupied;       ///< per block, 1 where the table gives opacity
     double occupied_fraction() const;
 };
 
-VolumeScene make_scene(const QuantisedVolume& volume, const TransferTable& table, int block_size);
+/// `window`: the levels `table` spans (for the colour bar; build_transfer_table's settings.window).
+VolumeScene make_scene(const QuantisedVolume& volume, const TransferTable& table, int block_size, LevelWindow window = {});
 
 }  // namespace cutaway::volume

@@ -63,7 +63,7 @@ std::unique_ptr<pipeline::CutawayRenderer> make_renderer(const grid::CornerPoint
     auto renderer = std::make_unique<pipeline::CutawayRenderer>(GlEnvironment::shaders(), grid, 0.0, width, height);
     const std::vector<float>& poro = *grid.property("PORO");
     const grid::PrimaryRange range = grid::active_value_range(grid, poro, "PORO");
-    renderer->set_colouring(poro, {"PORO", range.min, range.max});
+    renderer->set_colouring(poro, {"PORO", range.min, range.max, "frac"});
     return renderer;
 }
 

@@ -66,7 +66,7 @@ std::unique_ptr<pipeline::CutawayRenderer> renderer_for(const grid::CornerPointG
     auto renderer = std::make_unique<pipeline::CutawayRenderer>(GlEnvironment::shaders(), grid, 0.0, width, height);
     std::vector<float> values(grid.cell_count());
     for (std::size_t c = 0; c < values.size(); ++c) values[c] = float(c % 97);
-    renderer->set_colouring(values, {"cell mod 97", 0, 96});
+    renderer->set_colouring(values, {"cell mod 97", 0, 96, ""});
     return renderer;
 }
 

@@ -20,6 +20,7 @@
 #include <memory>
 #include <random>
 
+#include "annotation/property_units.h"
 #include "distributed/rank_blocks.h"
 #include "distributed/rank_renderer.h"
 #include "generators/generator.h"
@@ -83,7 +84,7 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
                                    height);
     const std::vector<float>& poro = *grid.property("PORO");
     const grid::PrimaryRange range = grid::active_value_range(grid, poro, "PORO");
-    rank.set_colouring(poro, {"PORO", range.min, range.max});
+    rank.set_colouring(poro, {"PORO", range.min, range.max, annotation::property_unit("PORO")});
     std::unique_ptr<pipeline::CutawayRenderer> single;
     if (session.root()) single = make_renderer(grid, width, height);
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "volume/empty_space_blocks.h"
+#include "volume/level_window.h"
 #include "volume/quantised_volume.h"
 #include "volume/transfer_function.h"
 
@@ -51,11 +52,70 @@ TEST(TransferTable, GreyIsTheLevelWithAnOpacityRamp) {
 TEST(TransferTable, LayerUsesEquationOneForOpacityAndPseudoColours) {
     TransferFunctionSettings settings;
     settings.kind = TransferFunctionKind::layer;
+    settings.scale = ColourScale::rainbow;  // the paper's colours
     const TransferTable table = build_transfer_table(settings);
     for (int level = 0; level < 256; ++level) {
         EXPECT_FLOAT_EQ(table[std::size_t(level)].a, float(layer_alpha(level, settings.layer)));
         EXPECT_FLOAT_EQ(table[std::size_t(level)].r, pseudo_colour(level / 255.0).r);
     }
+}
+
+TEST(TransferTable, WindowSpansTheColourScaleAndClampsOutside) {
+    TransferFunctionSettings settings;
+    settings.kind = TransferFunctionKind::pseudo;
+    settings.window = {100, 150};
+    settings.opacity = 0.5;
+    const TransferTable table = build_transfer_table(settings);
+    const Rgba low = perceptual_colour(0), high = perceptual_colour(1);
+    EXPECT_FLOAT_EQ(table[0].g, low.g);      // below the window: the scale's bottom
+    EXPECT_FLOAT_EQ(table[100].g, low.g);
+    EXPECT_FLOAT_EQ(table[150].g, high.g);
+    EXPECT_FLOAT_EQ(table[255].r, high.r);   // above: its top
+    EXPECT_FLOAT_EQ(table[125].g, perceptual_colour(0.5).g);
+    // Signed amplitudes: both ends opaque, the window's middle (zero amplitude) clear.
+    EXPECT_FLOAT_EQ(table[100].a, 0.5f);
+    EXPECT_FLOAT_EQ(table[150].a, 0.5f);
+    EXPECT_FLOAT_EQ(table[125].a, 0.0f);
+    settings.window = {10, 10};
+    EXPECT_THROW(build_transfer_table(settings), std::invalid_argument);
+}
+
+TEST(TransferTable, PerceptualScaleIsViridis) {
+    // matplotlib's viridis ends: (68, 1, 84) and (253, 231, 37); luminance rises monotonically.
+    EXPECT_NEAR(perceptual_colour(0).r * 255, 68, 0.5);
+    EXPECT_NEAR(perceptual_colour(0).b * 255, 84, 0.5);
+    EXPECT_NEAR(perceptual_colour(1).g * 255, 231, 0.5);
+    double previous = -1;
+    for (int i = 0; i <= 20; ++i) {
+        const Rgba c = perceptual_colour(i / 20.0);
+        const double luminance = 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+        EXPECT_GT(luminance, previous);
+        previous = luminance;
+    }
+    EXPECT_EQ(parse_colour_scale("rainbow"), ColourScale::rainbow);
+    EXPECT_THROW(parse_colour_scale("jet"), std::invalid_argument);
+}
+
+TEST(LevelWindow, PercentilesOfTheSamplesNotTheirExtremes) {
+    // 1000 samples: 10 at level 0, 10 at 255 (outliers), the rest spread over 100..179.
+    QuantisedVolume volume;
+    volume.dims = {10, 10, 10};
+    for (int n = 0; n < 1000; ++n)
+        volume.levels.push_back(n < 10 ? 0 : n < 20 ? 255 : std::uint8_t(100 + (n - 20) % 80));
+    const LevelWindow window = percentile_window(volume);
+    EXPECT_GE(window.lo, 100);
+    EXPECT_LE(window.lo, 102);
+    EXPECT_GE(window.hi, 177);
+    EXPECT_LE(window.hi, 179);
+    const LayerHighlight layer = fitted_layer(window);
+    EXPECT_DOUBLE_EQ(layer.f_v, window.hi);
+    EXPECT_DOUBLE_EQ(layer.r, 0.5 * (window.hi - window.lo));
+    // A constant cube still gets a window two levels wide.
+    volume.levels.assign(1000, 7);
+    const LevelWindow constant = percentile_window(volume);
+    EXPECT_DOUBLE_EQ(constant.hi - constant.lo, 2);
+    EXPECT_DOUBLE_EQ(level_value(255, ValueRange{-4, 4}), 4);
+    EXPECT_DOUBLE_EQ(level_value(0, ValueRange{-4, 4}), -4);
 }
 
 TEST(TransferTable, LookupIsLinearBetweenEntries) {

@@ -5,6 +5,12 @@
 
 namespace cutaway::pipeline {
 
+namespace {
+/// Cyan: apart from the red shell-cut lines and from the viridis map (the domain experts asked
+/// for a colour and line style of its own).
+const glm::vec3 silhouette_colour(0.0f, 0.8f, 1.0f);
+}  // namespace
+
 Composite::Composite(const gl::ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "post/composite.frag"}}) {}
 
@@ -28,7 +34,7 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
     gl::set_uniform(p, "saturation_primary", settings.saturation_primary);
     gl::set_uniform(p, "saturation_secondary", settings.saturation_secondary);
     gl::set_uniform(p, "silhouette_width", settings.silhouette_width_px);
-    gl::set_uniform(p, "silhouette_colour", glm::vec3(1.0f, 0.55f, 0.0f));
+    gl::set_uniform(p, "silhouette_colour", silhouette_colour);
     gl::set_uniform(p, "contour_colour", glm::vec3(0.05f, 0.05f, 0.05f));
     gl::set_uniform(p, "contour_jump", 0.02f);
     gl::set_uniform(p, "background", glm::vec3(1.0f, 1.0f, 1.0f));

@@ -1,0 +1,50 @@
+#pragma once
+// Where the colour bar of a frame goes: the gradient, its tick marks and labels and its title,
+// in image pixels. Computed on the CPU so that the GL bar (src/cutaway/colour_bar.cpp), the
+// seismic bar (src/volume/colour_bar.cpp), the camera's framing and the tests share one layout.
+#include <string>
+#include <vector>
+
+#include "annotation/axis_ticks.h"
+#include "annotation/text_glyphs.h"
+
+namespace cutaway::annotation {
+
+/// What the bar shows: a title (the property, e.g. "PORO" or "SWAT step 2"), its unit ("" when
+/// unknown) and the values at the bottom and the top of the gradient.
+struct ColourBarLabel {
+    std::string property;
+    float min = 0;
+    float max = 1;
+    std::string unit;
+};
+
+struct ColourBarTick {
+    double value = 0;
+    float y = 0;       ///< pixel row of the value on the gradient
+    PixelRect mark;    ///< the tick mark, right of the gradient
+    TextLine label;    ///< right of the mark
+};
+
+struct ColourBarLayout {
+    PixelRect gradient;              ///< the colour map, bottom = min, top = max
+    PixelRect frame;                 ///< one pixel around the gradient
+    std::vector<TextLine> title;     ///< the title's lines, above the gradient
+    std::vector<ColourBarTick> ticks;
+    float text_scale = 1;            ///< stb_easy_font scale of every text
+    /// Every pixel the bar may draw (frame, marks, glyphs), plus no margin.
+    PixelRect bounds() const;
+    /// Every line of text: title lines then tick labels.
+    std::vector<TextLine> texts() const;
+};
+
+/// The bar at the right edge of a `width` x `height` image: text at least 2% of the height,
+/// everything inside the image with a margin, at least 3 round tick values (one for a constant
+/// range). Throws std::invalid_argument for a non-finite or reversed range.
+ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int height);
+
+/// Pixels at the image's right edge the model must leave free for the bar of `label` (the bar's
+/// width, its margin and a gap to the model).
+float colour_bar_reserved_width(const ColourBarLabel& label, int width, int height);
+
+}  // namespace cutaway::annotation

@@ -1,0 +1,201 @@
+// What a figure's reader sees around the model (issue 15): the framed model fills the panel
+// (its bounding box at least 85% of the panel's width or height), the colour bar draws only where
+// its layout says and never over the model, and the silhouette has a colour of its own, apart
+// from the red lines where the cut meets the shell.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+
+#include "annotation/colour_bar_layout.h"
+#include "gl_test_support.h"
+
+namespace cutaway::test {
+namespace {
+
+struct PixelBox {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;  // inclusive, image rows top to bottom
+};
+
+/// Bounds of the model's pixels (id image rows run bottom to top).
+PixelBox model_pixels(const std::vector<std::uint32_t>& ids, int width, int height) {
+    PixelBox box;
+    for (int row = 0; row < height; ++row)
+        for (int x = 0; x < width; ++x)
+            if (ids[std::size_t(row) * std::size_t(width) + std::size_t(x)] != 0) {
+                const int y = height - 1 - row;
+                box = {std::min(box.x0, x), std::min(box.y0, y), std::max(box.x1, x), std::max(box.y1, y)};
+            }
+    return box;
+}
+
+const pipeline::OrbitPose poses[] = {
+    {35, 30, 0, glm::vec3(0)}, {0, 10, 0, glm::vec3(0)}, {90, 60, 0, glm::vec3(0)},
+    {200, 45, 0, glm::vec3(0)}, {300, 80, 0, glm::vec3(0)}, {135, 5, 0, glm::vec3(0)},
+};
+
+void check_framing(const grid::CornerPointGrid& grid, const char* name, int width, int height) {
+    auto renderer = make_renderer(grid, width, height);
+    const std::vector<float>& poro = *grid.property("PORO");
+    renderer->select_range(grid::range_for_fraction(grid, poro, "PORO", 0.01));
+    pipeline::FrameSettings settings;
+    settings.ssao = false;  // speed; framing does not depend on it
+    const grid::PrimaryRange range = grid::active_value_range(grid, poro, "PORO");
+    const annotation::ColourBarLayout bar = annotation::layout_colour_bar({"PORO", range.min, range.max, "frac"}, width, height);
+    const annotation::PixelRect bounds = bar.bounds();
+    for (const pipeline::OrbitPose& pose : poses) {
+        const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), pose, width, height,
+                                                                    renderer->colour_bar_reserved_width(settings));
+        settings.cut_enabled = false;  // the whole model's extent
+        renderer->render(settings, camera);
+        const PixelBox box = model_pixels(renderer->read_eclipse_ids(), width, height);
+        const double fill_x = double(box.x1 - box.x0 + 1) / width, fill_y = double(box.y1 - box.y0 + 1) / height;
+        std::cout << "  " << name << " " << width << "x" << height << " azimuth " << pose.azimuth_deg << " elevation "
+                  << pose.elevation_deg << ": model box " << 100 * fill_x << "% x " << 100 * fill_y << "% of the panel\n";
+        // Issue 15: the model's bounding box fills at least 85% of the panel's width or height.
+        EXPECT_GE(std::max(fill_x, fill_y), 0.85) << name << " azimuth " << pose.azimuth_deg << " elevation " << pose.elevation_deg;
+        // The model stays inside the panel and left of the colour bar: they never overlap.
+        EXPECT_GE(box.x0, 0);
+        EXPECT_LT(float(box.x1), bounds.x0) << "model reaches under the colour bar, " << name << " azimuth " << pose.azimuth_deg;
+
+        // The bar draws exactly where its layout says: over the background (the model stays clear
+        // of the bar, checked above), the frame with and without it differs only inside the
+        // layout's bounds, and does differ there (gradient, title, ticks). Model pixels are left
+        // out: coplanar faces may rasterise either way from frame to frame on llvmpipe.
+        settings.cut_enabled = true;
+        settings.colour_bar = false;
+        renderer->render(settings, camera);
+        const gl::RgbaImage plain = renderer->read_image();
+        const std::vector<std::uint32_t> ids = renderer->read_eclipse_ids();
+        settings.colour_bar = true;
+        renderer->render(settings, camera);
+        const gl::RgbaImage with_bar = renderer->read_image();
+        std::size_t outside = 0, inside = 0;
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                if (ids[std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)] != 0) continue;
+                if (std::equal(plain.at(x, y), plain.at(x, y) + 3, with_bar.at(x, y))) continue;
+                const bool in_bounds = float(x) + 1 > bounds.x0 && float(x) < bounds.x1 && float(y) + 1 > bounds.y0 && float(y) < bounds.y1;
+                (in_bounds ? inside : outside) += 1;
+            }
+        EXPECT_EQ(outside, 0u) << "colour-bar pixels outside its layout, " << name;
+        EXPECT_GT(inside, std::size_t(bar.gradient.width() * bar.gradient.height())) << name;
+    }
+}
+
+// Figure panels are at least 1000 px wide (issue 15); at smaller sizes the bar's 7 px text takes
+// a larger share of the width than 85% leaves.
+TEST(FigureLayout, FramedModelFillsThePanelBesideTheColourBar) {
+    check_framing(petra(), "petra", 1280, 720);
+    check_framing(reek(), "reek", 1000, 750);
+    check_framing(faulted_model_with_inactive_cells({30, 12, 10}, 0.2, 5), "faulted", 1000, 562);
+}
+
+TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
+    constexpr int width = 640, height = 480;
+    auto renderer = make_renderer(petra(), width, height);
+    const std::vector<float>& poro = *petra().property("PORO");
+    renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
+    pipeline::FrameSettings settings;
+    settings.ssao = false;
+    settings.colour_bar = false;
+    const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height);
+    renderer->render(settings, camera);
+    const gl::RgbaImage plain = renderer->read_image();
+    settings.silhouette = true;
+    renderer->render(settings, camera);
+    const gl::RgbaImage outlined = renderer->read_image();
+    const pipeline::IdImage ids = renderer->read_ids();
+
+    // Mean colours of the silhouette (pixels the silhouette changed) and of the shell-cut lines.
+    glm::dvec3 silhouette(0), shell(0);
+    std::size_t silhouette_count = 0, shell_count = 0, band_unchanged = 0;
+    for (std::size_t i = 0; i < ids.cell.size(); ++i) {
+        const int x = int(i % width), y = height - 1 - int(i / width);
+        const std::uint8_t* before = plain.at(x, y);
+        const std::uint8_t* after = outlined.at(x, y);
+        const glm::dvec3 colour(after[0], after[1], after[2]);
+        if (!std::equal(before, before + 3, after)) {
+            silhouette += colour;
+            ++silhouette_count;
+        } else if (ids.flags[i] & pipeline::flag_shell_cut) {
+            shell += colour;
+            ++shell_count;
+        }
+    }
+    // The doubled line leaves a gap: pixels between the inner and the outer line keep the scene.
+    // Counted as non-primary pixels at distance 2 from a primary pixel that the silhouette kept.
+    for (int y = 2; y < height - 2; ++y)
+        for (int x = 2; x < width - 2; ++x) {
+            const auto primary_at = [&](int px, int py) {
+                return (ids.flags[std::size_t(height - 1 - py) * width + std::size_t(px)] & pipeline::flag_primary) != 0;
+            };
+            if (primary_at(x, y) || primary_at(x - 1, y) || primary_at(x + 1, y) || primary_at(x, y - 1) || primary_at(x, y + 1))
+                continue;
+            if (!(primary_at(x - 2, y) || primary_at(x + 2, y) || primary_at(x, y - 2) || primary_at(x, y + 2))) continue;
+            band_unchanged += std::equal(plain.at(x, y), plain.at(x, y) + 3, outlined.at(x, y));
+        }
+    ASSERT_GT(silhouette_count, 200u);  // petra's 1% primaries are visible from here
+    ASSERT_GT(shell_count, 200u);
+    silhouette /= double(silhouette_count);
+    shell /= double(shell_count);
+    std::cout << "  silhouette mean colour " << silhouette.r << " " << silhouette.g << " " << silhouette.b << " ("
+              << silhouette_count << " px), shell-cut lines " << shell.r << " " << shell.g << " " << shell.b << " ("
+              << shell_count << " px), gap pixels " << band_unchanged << "\n";
+    // 150 of 441 (the RGB cube's diagonal): a reader tells them apart at a glance (cyan vs red).
+    EXPECT_GT(glm::length(silhouette - shell), 150.0);
+    EXPECT_GT(silhouette.b, silhouette.r + 100);  // blue/cyan, as the domain experts asked
+    EXPECT_GT(band_unchanged, silhouette_count / 10);  // the line is doubled, not a solid band
+}
+
+constexpr std::uint8_t viridis[256][3] = {
+#include "annotation/viridis_table.inc"
+};
+
+TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
+    // The reader matches a primary's colour against the colour bar. The headlight shades every face
+    // by its angle (0.35 + 0.65 |n.l|), so a pixel is compared with the map's colour at the cell's
+    // value scaled to the pixel's brightness: what is left is a change of hue or saturation (white
+    // edges, a saturation boost, blending with other colours). Edge pixels are left out.
+    constexpr int width = 800, height = 450;
+    auto renderer = make_renderer(petra(), width, height);
+    const std::vector<float>& poro = *petra().property("PORO");
+    renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
+    const grid::PrimaryRange range = grid::active_value_range(petra(), poro, "PORO");
+    pipeline::FrameSettings settings;  // the figures' defaults (SSAO on)
+    const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height,
+                                                                renderer->colour_bar_reserved_width(settings));
+    renderer->render(settings, camera);
+    const gl::RgbaImage image = renderer->read_image();
+    const pipeline::IdImage ids = renderer->read_ids();
+    const std::vector<std::uint32_t> cells = renderer->read_eclipse_ids();
+    std::vector<double> distances, brightness;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        if (!(ids.flags[i] & pipeline::flag_primary) || (ids.flags[i] & pipeline::flag_edge) || cells[i] == 0) continue;
+        const double t = std::clamp((poro[cells[i] - 1] - range.min) / (range.max - range.min), 0.0f, 1.0f);
+        const std::uint8_t* m = viridis[std::lround(255 * t)];
+        const std::uint8_t* p = image.at(int(i % width), height - 1 - int(i / width));
+        const glm::dvec3 map(m[0], m[1], m[2]), shown(p[0], p[1], p[2]);
+        const double k = std::clamp(glm::dot(shown, map) / glm::dot(map, map), 0.0, 1.5);
+        distances.push_back(glm::length(shown - k * map));
+        brightness.push_back(k);
+    }
+    ASSERT_GT(distances.size(), 2000u);  // petra's 1% primaries cover thousands of pixels here
+    const auto median = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    const double median_distance = median(distances), median_brightness = median(brightness);
+    std::cout << "  primary pixels: median RGB distance " << median_distance << " to the colour map at their value, "
+              << "brightness " << median_brightness << " of it (" << distances.size() << " px)\n";
+    // 20 of 441 (the RGB cube's diagonal): the colour bar's entry at a glance; 8-bit rounding and
+    // SSAO's grey add a few levels.
+    EXPECT_LT(median_distance, 20.0);
+    // And not so dark that the hue is lost: a face seen at the figures' 30 degree elevation gets
+    // about two thirds of the light.
+    EXPECT_GT(median_brightness, 0.5);
+}
+
+}  // namespace
+}  // namespace cutaway::test
