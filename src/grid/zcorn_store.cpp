@@ -1,6 +1,7 @@
 #include "grid/zcorn_store.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace cutaway::grid {
@@ -8,7 +9,7 @@ namespace cutaway::grid {
 ZcornStore::ZcornStore(GridDims dims)
     : dims_(dims), plane_size_(std::size_t(4) * std::size_t(dims.nx) * std::size_t(dims.ny)) {
     if (plane_size_ == 0) plane_size_ = 1;
-    depths_.assign(plane_size_ * std::size_t(dims.nz + 1), 0.0);
+    depths_.resize(plane_size_ * std::size_t(dims.nz + 1));  // zero, untouched
 }
 
 std::size_t ZcornStore::compact_bytes(GridDims dims) {
@@ -55,7 +56,8 @@ void ZcornStore::push_repeated(double depth, std::size_t count, const std::funct
             }
             continue;
         }
-        std::fill(slot, slot + run, depth);
+        // The slot is written here for the first time and starts at +0: +0 needs no write.
+        if (depth != 0.0 || std::signbit(depth)) std::fill(slot, slot + run, depth);
         pushed_ += run;
         count -= run;
     }
@@ -63,12 +65,14 @@ void ZcornStore::push_repeated(double depth, std::size_t count, const std::funct
 
 void ZcornStore::expand_to_full() {
     // Every value pushed so far is consistent with the compact layout, so reading each plane
-    // through the compact slots reproduces it exactly.
-    std::vector<double> full(plane_size_ * std::size_t(2 * dims_.nz), 0.0);
-    const std::size_t planes_touched = pushed_ / plane_size_ + 1;
-    for (std::size_t plane = 0; plane < planes_touched && plane < std::size_t(2 * dims_.nz); ++plane) {
-        const std::size_t slot = (plane + 1) / 2;
-        for (std::size_t o = 0; o < plane_size_; ++o) full[plane * plane_size_ + o] = depths_[slot * plane_size_ + o];
+    // through the compact slots reproduces it exactly. Only the values pushed so far are copied:
+    // the rest stays +0 and untouched, as push_repeated expects of a slot it has not written (the
+    // current top plane's compact slot holds the bottom above, which must not leak into it).
+    Depths full;
+    full.resize(plane_size_ * std::size_t(2 * dims_.nz));
+    for (std::size_t plane = 0; plane * plane_size_ < pushed_; ++plane) {
+        const double* from = depths_.data() + slot_of(plane) * plane_size_;
+        std::copy(from, from + std::min(plane_size_, pushed_ - plane * plane_size_), full.data() + plane * plane_size_);
     }
     depths_ = std::move(full);
     compact_ = false;

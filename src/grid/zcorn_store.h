@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "grid/grid_dims.h"
+#include "grid/zeroed_allocator.h"
 
 namespace cutaway::grid {
 
@@ -65,7 +66,10 @@ private:
 
     GridDims dims_{};
     std::size_t plane_size_ = 1;  // 2NX * 2NY
-    std::vector<double> depths_;
+    /// Zeroed without being touched (zeroed_allocator.h): planes of +0 depths are never written,
+    /// so they cost no resident memory until another value lands in them.
+    using Depths = std::vector<double, ZeroedAllocator<double>>;
+    Depths depths_;
     std::size_t pushed_ = 0;
     bool compact_ = true;
 };

@@ -299,6 +299,20 @@ TEST_F(BadInput, ZcornFullLayoutIsReservedBeforeItIsAllocated) {
     std::printf("peak %.0f MiB\n", r.peak_rss_mb);
 }
 
+TEST_F(BadInput, ZcornOfZerosIsRefusedWithoutTouchingItsStore) {
+    // Issue 18's reproducer: 1000 x 1000 x 100 cells, 400M zero depths then 400M ones. The compact
+    // store (3.2 GB) fits the 4 GiB limit, the full layout (6.4 GB) does not. The store starts
+    // zeroed without being touched and +0 depths are not written, so the refusal at the first 1
+    // comes with almost no resident memory (it took 6 s and 3.2 GB when the zeros were written).
+    const fs::path grid = file("zeros.grdecl", "SPECGRID\n 1000 1000 100 1 F /\nCOORD\n 6012006*0 /\n"
+                                                "ZCORN\n 400000000*0 400000000*1 /\n");
+    const ProcessResult r = cutaway({"inspect", grid, "--memory-limit-gb", "4"});
+    expect_refused(r, {"zeros.grdecl", "ZCORN", "full layout", "memory limit"});
+    if (kMeasureMemory) {
+        EXPECT_LT(r.peak_rss_mb, 256 + kBaselineRssMb);  // COORD is 48 MB; the rest is the process
+    }
+}
+
 // ---- values that would draw blank or lie ------------------------------------------------------
 
 TEST_F(BadInput, HugeCoordinatesAreRefused) {

@@ -75,7 +75,10 @@ TEST(ZcornStore, RepeatedPushesMatchSinglePushesAndWarnBeforeExpanding) {
     const GridDims d{2, 3, 4};  // planes of 24 depths
     const std::vector<std::pair<double, std::size_t>> stacked = {{0, 30}, {1, 42}, {1, 24}, {2, 48}, {3, 48}};
     const std::vector<std::pair<double, std::size_t>> gapped = {{0, 24}, {1, 30}, {1.5, 42}, {2, 96}};
-    for (const auto& items : {stacked, gapped}) {
+    // A gap half-way through a top plane, then +0 depths: +0 is never written (the store starts
+    // zeroed), so the part of the plane after the gap must start at +0, not at the bottom above.
+    const std::vector<std::pair<double, std::size_t>> zeros_after_gap = {{5, 24}, {7, 30}, {0, 138}};
+    for (const auto& items : {stacked, gapped, zeros_after_gap}) {
         std::vector<double> values;
         for (const auto& [depth, count] : items) values.insert(values.end(), count, depth);
         ZcornStore store(d);
