@@ -25,14 +25,16 @@ inline std::string command_line_output(const std::string& command) {
 }
 
 /// CUTAWAY_GIT_REVISION from the environment, else `git rev-parse HEAD` in the source tree
-/// (with "-dirty" when tracked files outside results/ differ from HEAD: a run rewrites results/), else "unknown".
+/// (with "-dirty" when tracked files outside results/ and paper_figures/ differ from HEAD: an experiment
+/// rewrites its outputs there as it goes, and a later run of the same experiment must not read
+/// them as a changed source), else "unknown".
 inline std::string git_revision() {
     if (const char* env = std::getenv("CUTAWAY_GIT_REVISION"); env && *env) return env;
 #ifdef CUTAWAY_SOURCE_DIR
     const std::string git = "git -C '" + std::string(CUTAWAY_SOURCE_DIR) + "' ";
     const std::string head = command_line_output(git + "rev-parse HEAD 2>/dev/null");
     if (head.empty()) return "unknown";
-    const std::string dirty = command_line_output(git + "status --porcelain --untracked-files=no -- . ':!results' 2>/dev/null");
+    const std::string dirty = command_line_output(git + "status --porcelain --untracked-files=no -- . ':!results' ':!paper_figures' 2>/dev/null");
     return dirty.empty() ? head : head + "-dirty";
 #else
     return "unknown";

@@ -71,6 +71,21 @@ protected:
         for (const std::string& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
     }
 
+    /// `inspect` of an NX x NY x NZ grid whose ZCORN is all zeros for the first half of its values and
+    /// all ones for the rest (every layer then differs from the one above half-way, so the store must
+    /// switch to the full layout), refused under `limit_gb`; returns the child's result.
+    ProcessResult refused_half_zero_zcorn(const std::string& name, int nx, int ny, int nz, const std::string& limit_gb) const {
+        const std::size_t pillars = std::size_t(nx + 1) * std::size_t(ny + 1), half = std::size_t(4) * nx * ny * nz;
+        const fs::path grid = file(name, "SPECGRID\n " + std::to_string(nx) + " " + std::to_string(ny) + " " +
+                                                  std::to_string(nz) + " 1 F /\nCOORD\n " + std::to_string(6 * pillars) +
+                                                  "*0 /\nZCORN\n " + std::to_string(half) + "*0 " + std::to_string(half) +
+                                                  "*1 /\n");
+        ProcessResult r = cutaway({"inspect", grid, "--memory-limit-gb", limit_gb});
+        expect_refused(r, {name, "ZCORN", "full layout", "memory limit"});
+        std::printf("%s: peak %.0f MiB\n", name.c_str(), r.peak_rss_mb);
+        return r;
+    }
+
     /// Nothing was written to out/: neither an output nor a temporary partial file.
     void expect_no_output() const {
         for (const auto& entry : fs::directory_iterator(scratch_ / "out"))
@@ -285,18 +300,13 @@ TEST_F(BadInput, LargeFileIsRefusedBeforeItIsRead) {
 }
 
 TEST_F(BadInput, ZcornFullLayoutIsReservedBeforeItIsAllocated) {
-    // 200 x 200 x 100 cells: COORD 1.9 MB, compact ZCORN 129 MB, full ZCORN 256 MB. Every layer
-    // differs from the one above half-way, so the store must switch to the full layout; the limit
+    // 200 x 200 x 100 cells: COORD 1.9 MB, compact ZCORN 129 MB, full ZCORN 256 MB; the limit
     // (0.3 GiB = 322 MB) admits the compact store but not both at once. Before the fix the full
     // array was allocated first (peak 385 MB).
-    const fs::path grid = file("zcorn.grdecl", "SPECGRID\n 200 200 100 1 F /\nCOORD\n 242406*0 /\n"
-                                               "ZCORN\n 16000000*0 16000000*1 /\n");
-    const ProcessResult r = cutaway({"inspect", grid, "--memory-limit-gb", "0.3"});
-    expect_refused(r, {"zcorn.grdecl", "ZCORN", "full layout", "memory limit"});
+    const ProcessResult r = refused_half_zero_zcorn("zcorn.grdecl", 200, 200, 100, "0.3");
     if (kMeasureMemory) {
         EXPECT_LT(r.peak_rss_mb, 0.3 * 1024 + kBaselineRssMb);
     }
-    std::printf("peak %.0f MiB\n", r.peak_rss_mb);
 }
 
 TEST_F(BadInput, ZcornOfZerosIsRefusedWithoutTouchingItsStore) {
@@ -304,10 +314,7 @@ TEST_F(BadInput, ZcornOfZerosIsRefusedWithoutTouchingItsStore) {
     // store (3.2 GB) fits the 4 GiB limit, the full layout (6.4 GB) does not. The store starts
     // zeroed without being touched and +0 depths are not written, so the refusal at the first 1
     // comes with almost no resident memory (it took 6 s and 3.2 GB when the zeros were written).
-    const fs::path grid = file("zeros.grdecl", "SPECGRID\n 1000 1000 100 1 F /\nCOORD\n 6012006*0 /\n"
-                                                "ZCORN\n 400000000*0 400000000*1 /\n");
-    const ProcessResult r = cutaway({"inspect", grid, "--memory-limit-gb", "4"});
-    expect_refused(r, {"zeros.grdecl", "ZCORN", "full layout", "memory limit"});
+    const ProcessResult r = refused_half_zero_zcorn("zeros.grdecl", 1000, 1000, 100, "4");
     if (kMeasureMemory) {
         EXPECT_LT(r.peak_rss_mb, 256 + kBaselineRssMb);  // COORD is 48 MB; the rest is the process
     }
