@@ -20,10 +20,11 @@ LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory
         if (model.size() > 1) throw std::invalid_argument(model.front() + ": a preset takes no further files");
         const std::string name = model.front().substr(prefix.size());
         const auto& known = generators::presets();
-        if (std::none_of(known.begin(), known.end(), [&](const auto& p) { return p.name == name; }))
+        const auto preset = std::find_if(known.begin(), known.end(), [&](const auto& p) { return p.name == name; });
+        if (preset == known.end())
             throw std::invalid_argument(model.front() + ": expected preset:NAME with NAME one of " +
                                         generators::preset_names() + ", found '" + name + "'");
-        generators::GeneratorParameters parameters = generators::find_preset(name);
+        generators::GeneratorParameters parameters = *preset;
         const bool without_flood = only_property && *only_property != generators::generated_dynamic_property;
         if (without_flood) parameters.time_steps = 0;
         generators::ProgressLog quiet(nullptr);
