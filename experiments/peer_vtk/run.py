@@ -7,7 +7,7 @@ Writes results/peer_vtk/peer_vtk.json (every round's numbers, the configuration,
 the machine context of both sides) and results/peer_vtk/peer_vtk.md (the table), plus the camera
 check images camera_check_<model>_{vtk,ours}.png beside them. Skips when both outputs exist unless
 --force. --quick: 480x270, 3 timed frames, 1 round (results/quick/peer_vtk/). Needs python3-vtk9,
-xvfb-run and numpy/matplotlib for /usr/bin/python3 (scripts/install-deps.sh).
+Xvfb and numpy/matplotlib for /usr/bin/python3 (scripts/install-deps.sh).
 
 Protocol:
 - Models: `cutaway generate --preset NAME --seed 1` (what preset:NAME renders) written to a GRDECL
@@ -18,7 +18,8 @@ Protocol:
   as `--camera AZ EL 0` computes it (orbit_camera.py) and passed explicitly to both sides; vertical
   fov 30 degrees; same near/far planes. Checked by the bounding boxes of the model's pixels in one
   image of each side (camera_check in the JSON).
-- VTK (vtk_worker.py, offscreen W x H window under xvfb-run, GLX on Mesa llvmpipe): "surface"
+- VTK (vtk_worker.py, offscreen W x H window on one Xvfb display kept for the whole run, GLX on
+  Mesa llvmpipe): "surface"
   (vtkDataSetSurfaceFilter, PORO cell colours, cell edges; executes once) and "clip" (per frame
   vtkTableBasedClipDataSet by the plane through the centre facing the camera, then the surface
   filter; re-executed every frame, its time included). Frame = wall clock around Render() +
@@ -42,14 +43,12 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
+import x_server  # noqa: E402
 import peer_report  # noqa: E402
 
 SYSTEM_PYTHON = "/usr/bin/python3"  # where Debian's python3-vtk9 lives
 WORKER = os.path.join(HERE, "vtk_worker.py")
-# -a searches for a free display from -n on: starting away from 99 (where other xvfb-run users
-# start) makes two runs racing for the same display unlikely; a failed start is retried anyway.
-XVFB = ["xvfb-run", "-a", "-n", str(100 + os.getpid() % 400), "-s", "-screen 0 1920x1080x24"]
-VTK_ATTEMPTS = 3
+XVFB_SCREEN = "1920x1080x24"  # one Xvfb for the whole run (experiments/common/x_server.py)
 MODELS = ("petra", "sapphire")
 SEED = 1  # generator_parameters.h default: the seed preset:NAME renders with
 DEFAULT_POSE = (35.0, 30.0)  # render_options.h: --camera 35 30 0
@@ -125,19 +124,14 @@ def check_model(inspected, prepared):
     return checks
 
 
-def vtk_round(prepared_path, scratch, warmup, repeat, modes=("surface", "clip"), image_dir=None):
-    """One VTK process under Xvfb rendering `modes` in turn, each `warmup` then `repeat` timed
-    frames; returns the worker's JSON (with each mode's last frame as DIR/vtk_MODE.png if `image_dir`)."""
+def vtk_round(x_env, prepared_path, scratch, warmup, repeat, modes=("surface", "clip"), image_dir=None):
+    """One VTK process on the X display of `x_env` rendering `modes` in turn, each `warmup` then
+    `repeat` timed frames; returns the worker's JSON (with each mode's last frame as
+    DIR/vtk_MODE.png if `image_dir`)."""
     out = os.path.join(scratch, "vtk_round.json")
-    command = XVFB + [SYSTEM_PYTHON, WORKER, "render", prepared_path, "--modes", *modes, "--warmup", str(warmup),
-                      "--repeat", str(repeat), "--json", out] + (["--image-dir", image_dir] if image_dir else [])
-    for attempt in range(1, VTK_ATTEMPTS + 1):
-        try:
-            return run_json(command, out)
-        except subprocess.CalledProcessError as error:  # e.g. "bad X server connection" when a display is taken
-            if attempt == VTK_ATTEMPTS:
-                raise
-            print(f"VTK worker failed (exit {error.returncode}), attempt {attempt}/{VTK_ATTEMPTS}; retrying", flush=True)
+    command = [SYSTEM_PYTHON, WORKER, "render", prepared_path, "--modes", *modes, "--warmup", str(warmup),
+               "--repeat", str(repeat), "--json", out] + (["--image-dir", image_dir] if image_dir else [])
+    return run_json(command, out, env=x_env)
 
 
 def camera_flags(camera):
@@ -170,14 +164,14 @@ def pixel_box(png, is_model):
     return [int(cols.min()), int(rows.min()), int(cols.max()), int(rows.max())] if rows.size else None
 
 
-def camera_check(exp, grdecl, prepared_path, camera, scratch):
+def camera_check(exp, x_env, grdecl, prepared_path, camera, scratch):
     """Renders one VTK surface frame and our cutaway frame (kept as camera_check_<model>_{vtk,ours}.png)
     and compares the box of VTK's non-white pixels with the box of the pixels showing a cell in our
     `--cell-ids` image (so our colour bar does not count); exits when they differ by more than
     CAMERA_TOLERANCE_PX."""
     model = os.path.splitext(os.path.basename(grdecl))[0]
     vtk_png, ours_png = (exp.path(f"camera_check_{model}_{side}.png") for side in ("vtk", "ours"))
-    vtk_round(prepared_path, scratch, 0, 1, modes=("surface",), image_dir=scratch)
+    vtk_round(x_env, prepared_path, scratch, 0, 1, modes=("surface",), image_dir=scratch)
     os.replace(os.path.join(scratch, "vtk_surface.png"), vtk_png)
     ids_png = os.path.join(scratch, "cell_ids.png")
     exp.render(grdecl, *camera_flags(camera), "--size", *camera["size"], *PAPER_FLAGS, "--cell-ids", ids_png,
@@ -220,18 +214,18 @@ def summarise_ours(rounds):
             "plain_faces_drawn": rounds[0]["plain_faces_drawn"], "cutaway_faces_drawn": rounds[0]["cutaway_faces_drawn"]}
 
 
-def measure_model(exp, preset, proto, draws, scratch):
+def measure_model(exp, x_env, preset, proto, draws, scratch):
     """Everything about one model: checks, camera, interleaved rounds, summaries and ratios."""
     grdecl = generate(exp, preset, scratch)
     inspected = inspect(exp, grdecl)
     prepared_path, prepared = prepare_vtk(grdecl, proto["size"], scratch)
     checks = check_model(inspected, prepared)
     camera = prepared["camera"]
-    camera_result = camera_check(exp, grdecl, prepared_path, camera, scratch)
+    camera_result = camera_check(exp, x_env, grdecl, prepared_path, camera, scratch)
     vtk_rounds, ours_rounds = [], {name: [] for name in draws}
     for index in range(proto["rounds"]):
         print(f"{preset}: round {index + 1}/{proto['rounds']}", flush=True)
-        vtk_rounds.append(vtk_round(prepared_path, scratch, proto["vtk_warmup"], proto["vtk_repeat"]))
+        vtk_rounds.append(vtk_round(x_env, prepared_path, scratch, proto["vtk_warmup"], proto["vtk_repeat"]))
         for name, flags in draws.items():
             ours_rounds[name].append(ours_round(exp, grdecl, camera, proto, flags))
     vtk = summarise_vtk(vtk_rounds)
@@ -256,7 +250,7 @@ def machine_context(exp, models):
             "gl_version_ours": ours["gl_version"], "gl_renderer_vtk": vtk_mode["gl_renderer"],
             "vtk_window_class": vtk_mode["window_class"], "vtk_version": first["rounds"]["vtk"][0]["vtk_version"],
             "lp_num_threads_vtk": first["rounds"]["vtk"][0]["lp_num_threads"], "lp_num_threads_ours": ours["lp_num_threads"],
-            "date": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "xvfb": " ".join(XVFB),
+            "date": time.strftime("%Y-%m-%dT%H:%M:%S%z"), "xvfb": f"one Xvfb -screen 0 {XVFB_SCREEN} for the run",
             "cutaway_executable": exp.cutaway, "git_revision_of_executable": ours["git_revision"]}
 
 
@@ -264,8 +258,8 @@ def compute(exp):
     """Measures every model; returns the whole result document."""
     proto = protocol(exp.quick)
     draws = configurations()
-    with tempfile.TemporaryDirectory(prefix="cutaway-peer-vtk-") as scratch:
-        models = [measure_model(exp, preset, proto, draws, scratch) for preset in MODELS]
+    with tempfile.TemporaryDirectory(prefix="cutaway-peer-vtk-") as scratch, x_server.display(XVFB_SCREEN) as x_env:
+        models = [measure_model(exp, x_env, preset, proto, draws, scratch) for preset in MODELS]
     return {"experiment": "peer_vtk", "quick": exp.quick,
             "protocol": {**proto, "camera_pose_deg": DEFAULT_POSE, "fovy_deg": models[0]["camera"]["fovy_deg"],
                          "ours_flags": list(PAPER_FLAGS) + ["--baseline"], "configurations": {name: list(flags) for name, flags in draws.items()},
