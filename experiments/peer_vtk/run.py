@@ -18,8 +18,8 @@ Protocol:
   as `--camera AZ EL 0` computes it (orbit_camera.py) and passed explicitly to both sides; vertical
   fov 30 degrees; same near/far planes. Checked by the bounding boxes of the model's pixels in one
   image of each side (camera_check in the JSON).
-- VTK (vtk_worker.py, offscreen W x H window on one Xvfb display kept for the whole run, GLX on
-  Mesa llvmpipe): "surface"
+- VTK (vtk_worker.py, offscreen W x H window without multisampling, as ours, on one Xvfb display
+  kept for the whole run, GLX on Mesa llvmpipe): "surface"
   (vtkDataSetSurfaceFilter, PORO cell colours, cell edges; executes once) and "clip" (per frame
   vtkTableBasedClipDataSet by the plane through the centre facing the camera, then the surface
   filter; re-executed every frame, its time included). Frame = wall clock around Render() +
