@@ -1,12 +1,13 @@
 """One Xvfb display for a whole experiment, for programs that need an X server (VTK's GLX window).
 
-Starting a server per process (xvfb-run -a) raced with the previous server's shutdown: after a
-few runs every new client aborted with "bad X server connection" while a stale lock or socket
-was left behind. One server, started here on a display it picks itself (-displayfd) and stopped
-when the block ends, has no such window.
+An X server resets when its last client leaves, and a client connecting during the reset is
+refused: VTK then aborts with "bad X server connection" (peer_vtk lost whole runs to it, with one
+xvfb-run per worker and with one shared server alike). One server for the run, on a display it
+picks itself (-displayfd), started with -noreset and stopped when the block ends, has no such
+window.
 
-    with x_server.display("1920x1080x24") as env:
-        subprocess.run(command, env=env, check=True)
+    with x_server.display("1920x1080x24") as x:
+        subprocess.run(command, env=x.env, check=True)
 """
 import contextlib
 import os
@@ -17,23 +18,34 @@ import subprocess
 START_TIMEOUT_S = 30
 
 
+class XDisplay:
+    """A running Xvfb: `env` is os.environ with DISPLAY set to it; `alive()` whether it still runs."""
+
+    def __init__(self, server, number):
+        self.server = server
+        self.number = number
+        self.env = dict(os.environ, DISPLAY=f":{number}")
+        self.env.pop("WAYLAND_DISPLAY", None)
+
+    def alive(self):
+        return self.server.poll() is None
+
+
 @contextlib.contextmanager
 def display(screen="1920x1080x24"):
-    """Starts `Xvfb -displayfd` with one screen of `screen` (WxHxDEPTH); yields os.environ with
-    DISPLAY set to it; stops the server on exit."""
+    """Starts `Xvfb -displayfd` with one screen of `screen` (WxHxDEPTH); yields its XDisplay;
+    stops the server on exit."""
     xvfb = shutil.which("Xvfb")
     if xvfb is None:
         raise SystemExit("Xvfb not found (Debian package xvfb; scripts/install-deps.sh installs it)")
     read_end, write_end = os.pipe()
-    server = subprocess.Popen([xvfb, "-displayfd", str(write_end), "-screen", "0", screen, "-nolisten", "tcp"],
+    server = subprocess.Popen([xvfb, "-displayfd", str(write_end), "-screen", "0", screen, "-nolisten", "tcp", "-noreset"],
                               pass_fds=(write_end,), stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
     os.close(write_end)
     try:
         with os.fdopen(read_end) as pipe:
             number = _read_display_number(pipe, server)
-        env = dict(os.environ, DISPLAY=f":{number}")
-        env.pop("WAYLAND_DISPLAY", None)
-        yield env
+        yield XDisplay(server, number)
     finally:
         server.send_signal(signal.SIGTERM)
         try:

@@ -49,6 +49,7 @@ import peer_report  # noqa: E402
 SYSTEM_PYTHON = "/usr/bin/python3"  # where Debian's python3-vtk9 lives
 WORKER = os.path.join(HERE, "vtk_worker.py")
 XVFB_SCREEN = "1920x1080x24"  # one Xvfb for the whole run (experiments/common/x_server.py)
+VTK_ATTEMPTS = 3  # a worker refused by the X server is run again (each failure is logged)
 MODELS = ("petra", "sapphire")
 SEED = 1  # generator_parameters.h default: the seed preset:NAME renders with
 DEFAULT_POSE = (35.0, 30.0)  # render_options.h: --camera 35 30 0
@@ -124,14 +125,23 @@ def check_model(inspected, prepared):
     return checks
 
 
-def vtk_round(x_env, prepared_path, scratch, warmup, repeat, modes=("surface", "clip"), image_dir=None):
-    """One VTK process on the X display of `x_env` rendering `modes` in turn, each `warmup` then
-    `repeat` timed frames; returns the worker's JSON (with each mode's last frame as
-    DIR/vtk_MODE.png if `image_dir`)."""
+def vtk_round(x, prepared_path, scratch, warmup, repeat, modes=("surface", "clip"), image_dir=None):
+    """One VTK process on the X display `x` rendering `modes` in turn, each `warmup` then `repeat`
+    timed frames; returns the worker's JSON (with each mode's last frame as DIR/vtk_MODE.png if
+    `image_dir`). A failed worker is run again, up to VTK_ATTEMPTS times, with its error logged."""
     out = os.path.join(scratch, "vtk_round.json")
     command = [SYSTEM_PYTHON, WORKER, "render", prepared_path, "--modes", *modes, "--warmup", str(warmup),
                "--repeat", str(repeat), "--json", out] + (["--image-dir", image_dir] if image_dir else [])
-    return run_json(command, out, env=x_env)
+    for attempt in range(1, VTK_ATTEMPTS + 1):
+        worker = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True, env=x.env)
+        if worker.returncode == 0:
+            with open(out) as f:
+                return json.load(f)
+        print(f"VTK worker failed (exit {worker.returncode}, attempt {attempt}/{VTK_ATTEMPTS}, Xvfb "
+              f"{'running' if x.alive() else 'gone'}): {worker.stderr.strip()[-400:]}", flush=True)
+        if not x.alive():
+            break
+    raise SystemExit(f"VTK worker failed {attempt} time(s): {' '.join(command)}")
 
 
 def camera_flags(camera):
@@ -164,14 +174,14 @@ def pixel_box(png, is_model):
     return [int(cols.min()), int(rows.min()), int(cols.max()), int(rows.max())] if rows.size else None
 
 
-def camera_check(exp, x_env, grdecl, prepared_path, camera, scratch):
+def camera_check(exp, x, grdecl, prepared_path, camera, scratch):
     """Renders one VTK surface frame and our cutaway frame (kept as camera_check_<model>_{vtk,ours}.png)
     and compares the box of VTK's non-white pixels with the box of the pixels showing a cell in our
     `--cell-ids` image (so our colour bar does not count); exits when they differ by more than
     CAMERA_TOLERANCE_PX."""
     model = os.path.splitext(os.path.basename(grdecl))[0]
     vtk_png, ours_png = (exp.path(f"camera_check_{model}_{side}.png") for side in ("vtk", "ours"))
-    vtk_round(x_env, prepared_path, scratch, 0, 1, modes=("surface",), image_dir=scratch)
+    vtk_round(x, prepared_path, scratch, 0, 1, modes=("surface",), image_dir=scratch)
     os.replace(os.path.join(scratch, "vtk_surface.png"), vtk_png)
     ids_png = os.path.join(scratch, "cell_ids.png")
     exp.render(grdecl, *camera_flags(camera), "--size", *camera["size"], *PAPER_FLAGS, "--cell-ids", ids_png,
@@ -214,18 +224,18 @@ def summarise_ours(rounds):
             "plain_faces_drawn": rounds[0]["plain_faces_drawn"], "cutaway_faces_drawn": rounds[0]["cutaway_faces_drawn"]}
 
 
-def measure_model(exp, x_env, preset, proto, draws, scratch):
+def measure_model(exp, x, preset, proto, draws, scratch):
     """Everything about one model: checks, camera, interleaved rounds, summaries and ratios."""
     grdecl = generate(exp, preset, scratch)
     inspected = inspect(exp, grdecl)
     prepared_path, prepared = prepare_vtk(grdecl, proto["size"], scratch)
     checks = check_model(inspected, prepared)
     camera = prepared["camera"]
-    camera_result = camera_check(exp, x_env, grdecl, prepared_path, camera, scratch)
+    camera_result = camera_check(exp, x, grdecl, prepared_path, camera, scratch)
     vtk_rounds, ours_rounds = [], {name: [] for name in draws}
     for index in range(proto["rounds"]):
         print(f"{preset}: round {index + 1}/{proto['rounds']}", flush=True)
-        vtk_rounds.append(vtk_round(x_env, prepared_path, scratch, proto["vtk_warmup"], proto["vtk_repeat"]))
+        vtk_rounds.append(vtk_round(x, prepared_path, scratch, proto["vtk_warmup"], proto["vtk_repeat"]))
         for name, flags in draws.items():
             ours_rounds[name].append(ours_round(exp, grdecl, camera, proto, flags))
     vtk = summarise_vtk(vtk_rounds)
@@ -258,8 +268,8 @@ def compute(exp):
     """Measures every model; returns the whole result document."""
     proto = protocol(exp.quick)
     draws = configurations()
-    with tempfile.TemporaryDirectory(prefix="cutaway-peer-vtk-") as scratch, x_server.display(XVFB_SCREEN) as x_env:
-        models = [measure_model(exp, x_env, preset, proto, draws, scratch) for preset in MODELS]
+    with tempfile.TemporaryDirectory(prefix="cutaway-peer-vtk-") as scratch, x_server.display(XVFB_SCREEN) as x:
+        models = [measure_model(exp, x, preset, proto, draws, scratch) for preset in MODELS]
     return {"experiment": "peer_vtk", "quick": exp.quick,
             "protocol": {**proto, "camera_pose_deg": DEFAULT_POSE, "fovy_deg": models[0]["camera"]["fovy_deg"],
                          "ours_flags": list(PAPER_FLAGS) + ["--baseline"], "configurations": {name: list(flags) for name, flags in draws.items()},
