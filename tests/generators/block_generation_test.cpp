@@ -11,17 +11,6 @@
 namespace cutaway::generators {
 namespace {
 
-GeneratorParameters faulted_with_inactive_cells() {
-    GeneratorParameters p = testing::small_parameters();
-    p.dims = {17, 13, 11};
-    p.fault_count = 4;
-    p.inactive_fraction = 0.2;
-    p.pinch_out_fraction = 0.05;
-    p.seed = 11;
-    p.time_steps = 0;
-    return p;
-}
-
 void expect_generated_block(const grid::CornerPointGrid& whole, const grid::IjkBox& box, const GeneratorParameters& p) {
     SCOPED_TRACE(test::box_text(box));
     ProgressLog quiet(nullptr);
@@ -29,6 +18,15 @@ void expect_generated_block(const grid::CornerPointGrid& whole, const grid::IjkB
     test::expect_block_equals_cut(block.grid, whole, box);
     EXPECT_EQ(*block.grid.int_property("FACIES"), grid::box_values(*whole.int_property("FACIES"), whole.dims(), box));
     EXPECT_EQ(block.report.active_cells, block.grid.active_count());
+}
+
+/// Four faults, 5% pinched and 20% clustered inactive cells, dimensions no split divides evenly.
+GeneratorParameters faulted_with_inactive_cells() {
+    GeneratorParameters p = testing::small_parameters();
+    p.dims = {17, 13, 11};
+    p.fault_count = 4;
+    p.pinch_out_fraction = 0.05, p.inactive_fraction = 0.2;
+    return p;
 }
 
 TEST(BlockGeneration, SlabsWithHalosEqualTheWholeModelsBlocks) {
