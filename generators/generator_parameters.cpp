@@ -45,23 +45,31 @@ std::vector<std::string> describe(const GeneratorParameters& p) {
     };
 }
 
-std::size_t estimated_peak_bytes(const GeneratorParameters& p) {
-    const double cells = double(p.dims.cell_count());
-    const double columns = double(p.dims.nx) * double(p.dims.ny);
+std::size_t estimated_peak_bytes(const GeneratorParameters& p) { return estimated_peak_bytes(p, grid::IjkBox::whole(p.dims)); }
+
+std::size_t estimated_peak_bytes(const GeneratorParameters& p, const grid::IjkBox& box) {
+    const grid::GridDims b = box.dims();
+    const double cells = double(b.cell_count());
+    const double columns = double(b.nx) * double(b.ny);
     // In doubles: (NX+1) overflows int for NX = 2^31-1 (an estimate of 18446744073.7 GB).
-    const double pillars = (double(p.dims.nx) + 1) * (double(p.dims.ny) + 1);
+    const double pillars = (double(b.nx) + 1) * (double(b.ny) + 1);
+    const int time_steps = box == grid::IjkBox::whole(p.dims) ? p.time_steps : 0;  // a block has no SWAT
     // Compact ZCORN (4 doubles per column and interface), pillar interface depths (up to two
     // variants per pillar), per-cell arrays: ACTNUM, PORO, PERMX, NTG, FACIES, SWAT steps, the
     // front's arrival times and queue, and the fields the properties are drawn from.
-    const double zcorn = 4 * columns * (p.dims.nz + 1) * 8.0;
-    const double interfaces = 2 * pillars * (p.dims.nz + 1) * 8.0;
-    const double per_cell = 1 + 4 * 4 + 4.0 * p.time_steps + 4 + 16 + 8;
+    const double zcorn = 4 * columns * (b.nz + 1) * 8.0;
+    const double interfaces = 2 * pillars * (b.nz + 1) * 8.0;
+    const double per_cell = 1 + 4 * 4 + 4.0 * time_steps + 4 + 16 + 8;
     const double bytes = 1.15 * (zcorn + interfaces + per_cell * cells) + 64e6;
     return bytes >= double(std::numeric_limits<std::size_t>::max()) ? std::numeric_limits<std::size_t>::max()
                                                                      : std::size_t(bytes);
 }
 
 void validate(const GeneratorParameters& p, std::size_t memory_limit_bytes) {
+    validate(p, memory_limit_bytes, grid::IjkBox::whole(p.dims));
+}
+
+void validate(const GeneratorParameters& p, std::size_t memory_limit_bytes, const grid::IjkBox& box) {
     const std::string dims =
         std::to_string(p.dims.nx) + " " + std::to_string(p.dims.ny) + " " + std::to_string(p.dims.nz);
     require_parameter(p.dims.nx > 0 && p.dims.ny > 0 && p.dims.nz > 0, "--dims", "NX NY NZ, each at least 1", dims);
@@ -104,10 +112,15 @@ void validate(const GeneratorParameters& p, std::size_t memory_limit_bytes) {
     require_parameter(p.time_steps >= 0 && p.time_steps <= 1000, "--time-steps", "an integer in [0, 1000]", p.time_steps);
     require_parameter(p.injector_count >= 1 && p.injector_count <= 64, "--injectors", "an integer in [1, 64]",
                       p.injector_count);
-    const std::size_t needed = estimated_peak_bytes(p);
+    require_parameter(box.i0 >= 0 && box.j0 >= 0 && box.k0 >= 0 && box.i0 <= box.i1 && box.j0 <= box.j1 &&
+                          box.k0 <= box.k1 && box.i1 < p.dims.nx && box.j1 < p.dims.ny && box.k1 < p.dims.nz,
+                      "block", "a box of cells within the grid of " + dims,
+                      std::to_string(box.i0) + " " + std::to_string(box.j0) + " " + std::to_string(box.k0) + " to " +
+                          std::to_string(box.i1) + " " + std::to_string(box.j1) + " " + std::to_string(box.k1));
+    const std::size_t needed = estimated_peak_bytes(p, box);
     const double gib = double(1u << 30);
     require_parameter(needed <= memory_limit_bytes, "--memory-limit-gb",
-                      "room for " + std::to_string(p.dims.cell_count()) + " cells (about " +
+                      "room for " + std::to_string(box.dims().cell_count()) + " cells (about " +
                           parameter_text(std::round(double(needed) / gib * 100) / 100) +
                           " GiB needed: lower --dims or --time-steps, or raise the memory limit)",
                       parameter_text(std::round(double(memory_limit_bytes) / gib * 100) / 100) + " GiB");

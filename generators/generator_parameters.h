@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "grid/grid_dims.h"
+#include "grid/primary_selection.h"
 
 namespace cutaway::generators {
 
@@ -46,9 +47,13 @@ std::vector<std::string> describe(const GeneratorParameters& parameters);
 
 /// Bytes the generator holds at its peak for `parameters` (arrays it allocates, with margins).
 std::size_t estimated_peak_bytes(const GeneratorParameters& parameters);
+/// The same for generating only the cells of `box` (generate_block: no SWAT).
+std::size_t estimated_peak_bytes(const GeneratorParameters& parameters, const grid::IjkBox& box);
 
 /// Throws std::invalid_argument naming the parameter, its value and the allowed range, when the
 /// parameters cannot give a model, or would need more than `memory_limit_bytes`.
 void validate(const GeneratorParameters& parameters, std::size_t memory_limit_bytes);
+/// The same for generating only the cells of `box` (whole-model indices, within the grid).
+void validate(const GeneratorParameters& parameters, std::size_t memory_limit_bytes, const grid::IjkBox& box);
 
 }  // namespace cutaway::generators

@@ -27,28 +27,31 @@ double permeability_md(double poro, Facies facies) {
 
 }  // namespace
 
-RockProperties make_rock_properties(const GeneratorParameters& p, const ModelFrame& frame, DeterministicRandom& random) {
+RockProperties make_rock_properties(const GeneratorParameters& p, const ModelFrame& frame, DeterministicRandom& random,
+                                    const grid::IjkBox& box) {
     const grid::GridDims& d = p.dims;
-    RockProperties rock;
-    rock.poro = layered_field(d.nx, d.ny, d.nz, frame.dx, frame.dy, p.poro_correlation_length, kLayerCorrelation,
-                              random);
+    const LayeredField field(d.nx, d.ny, d.nz, frame.dx, frame.dy, p.poro_correlation_length, kLayerCorrelation, random);
+    std::vector<double> shifts(std::size_t(d.nz));  // drawn after every layer's lattice
+    for (double& shift : shifts) shift = kLayerShiftShare * random.normal();
     const double lateral = std::sqrt(1 - kLayerShiftShare * kLayerShiftShare);
     const double upper = std::max(0.45, p.poro_mean + 3 * p.poro_std);
-    rock.permx.resize(rock.poro.size());
-    rock.ntg.resize(rock.poro.size());
-    rock.facies.resize(rock.poro.size());
-    std::size_t n = 0;
-    for (int k = 0; k < d.nz; ++k) {
-        const double shift = kLayerShiftShare * random.normal();
-        for (std::size_t c = 0; c < std::size_t(d.nx) * std::size_t(d.ny); ++c, ++n) {
-            const double poro = std::clamp(p.poro_mean + p.poro_std * (lateral * rock.poro[n] + shift), 0.01, upper);
-            const Facies facies = facies_of(poro, p.poro_mean, p.poro_std);
-            rock.poro[n] = float(poro);
-            rock.facies[n] = facies;
-            rock.permx[n] = float(permeability_md(poro, facies));
-            rock.ntg[n] = float(std::clamp((poro - 0.02) / (p.poro_mean + p.poro_std - 0.02), 0.05, 1.0));
-        }
-    }
+    RockProperties rock;
+    const std::size_t cells = box.dims().cell_count();
+    rock.poro.reserve(cells);
+    rock.permx.reserve(cells);
+    rock.ntg.reserve(cells);
+    rock.facies.reserve(cells);
+    for (int k = box.k0; k <= box.k1; ++k)
+        for (int j = box.j0; j <= box.j1; ++j)
+            for (int i = box.i0; i <= box.i1; ++i) {
+                const double poro = std::clamp(p.poro_mean + p.poro_std * (lateral * field.at(i, j, k) + shifts[std::size_t(k)]),
+                                               0.01, upper);
+                const Facies facies = facies_of(poro, p.poro_mean, p.poro_std);
+                rock.poro.push_back(float(poro));
+                rock.facies.push_back(facies);
+                rock.permx.push_back(float(permeability_md(poro, facies)));
+                rock.ntg.push_back(float(std::clamp((poro - 0.02) / (p.poro_mean + p.poro_std - 0.02), 0.05, 1.0)));
+            }
     return rock;
 }
 

@@ -5,21 +5,23 @@
 #include <vector>
 
 #include "deterministic_random.h"
+#include "grid/primary_selection.h"
 #include "generator_parameters.h"
 #include "model_frame.h"
 
 namespace cutaway::generators {
 
 struct RockProperties {
-    std::vector<float> poro;            ///< fraction, NX*NY*NZ
-    std::vector<float> permx;           ///< mD, NX*NY*NZ
-    std::vector<float> ntg;             ///< fraction, NX*NY*NZ
-    std::vector<std::int32_t> facies;   ///< 1 shale, 2 sand, 3 clean sand, NX*NY*NZ
+    std::vector<float> poro;            ///< fraction, one per cell of the box
+    std::vector<float> permx;           ///< mD
+    std::vector<float> ntg;             ///< fraction
+    std::vector<std::int32_t> facies;   ///< 1 shale, 2 sand, 3 clean sand
 };
 
 /// PORO = mean + std * (correlated field + a per-layer shift), clipped to [0.01, 0.45 or above
-/// the mean]; correlation `poro_correlation_length` laterally, 0.7 between adjacent layers.
+/// the mean]; correlation `poro_correlation_length` laterally, 0.7 between adjacent layers. For
+/// the cells of `box` (whole-model indices), in Eclipse order within it.
 RockProperties make_rock_properties(const GeneratorParameters& parameters, const ModelFrame& frame,
-                                    DeterministicRandom& random);
+                                    DeterministicRandom& random, const grid::IjkBox& box);
 
 }  // namespace cutaway::generators

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "grid/order_statistic.h"
+
 namespace cutaway::generators {
 namespace {
 
@@ -39,18 +41,12 @@ double SmoothField2D::at(double x, double y) const {
     return value / norm;
 }
 
-std::vector<float> layered_field(int count_x, int count_y, int layers, double dx, double dy,
-                                 double correlation_length, double rho, DeterministicRandom& random) {
-    std::vector<float> values(std::size_t(count_x) * std::size_t(count_y) * std::size_t(layers));
-    const double length_x = dx * count_x, length_y = dy * count_y;
-    SmoothField2D field(random, length_x, length_y, correlation_length);
-    std::size_t n = 0;
-    for (int k = 0; k < layers; ++k) {
-        if (k > 0) field = SmoothField2D(field, rho, random);
-        for (int j = 0; j < count_y; ++j)
-            for (int i = 0; i < count_x; ++i) values[n++] = float(field.at((i + 0.5) * dx, (j + 0.5) * dy));
-    }
-    return values;
+LayeredField::LayeredField(int count_x, int count_y, int layers, double dx, double dy, double correlation_length,
+                           double rho, DeterministicRandom& random)
+    : count_x_(count_x), count_y_(count_y), dx_(dx), dy_(dy) {
+    layers_.reserve(std::size_t(layers));
+    layers_.emplace_back(random, dx * count_x, dy * count_y, correlation_length);
+    for (int k = 1; k < layers; ++k) layers_.emplace_back(layers_.back(), rho, random);
 }
 
 float quantile(std::vector<float> values, double fraction) {
@@ -58,6 +54,14 @@ float quantile(std::vector<float> values, double fraction) {
     const auto rank = std::min(values.size() - 1, std::size_t(fraction * double(values.size())));
     std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(rank), values.end());
     return values[rank];
+}
+
+float quantile(const LayeredField& field, double fraction) {
+    return grid::streamed_quantile(field.size(), fraction, [&field](const auto& sink) {
+        for (int k = 0; k < field.layers(); ++k)
+            for (int j = 0; j < field.count_y(); ++j)
+                for (int i = 0; i < field.count_x(); ++i) sink(field.at(i, j, k));
+    });
 }
 
 }  // namespace cutaway::generators

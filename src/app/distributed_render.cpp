@@ -1,11 +1,13 @@
-// `mpirun -np N cutaway render ...` (distributed_render.h). Every rank reads the whole model
-// (the GRDECL file or the generated preset), takes what must be global from it (model frame,
-// face tolerance, colour and primary ranges), keeps only its slab and frees the rest; the
-// renderer then holds and draws the slab only.
+// `mpirun -np N cutaway render ...` (distributed_render.h). No rank holds the whole model: each
+// loads only its block with its halo (a preset generates it, a file keeps only its values; first
+// an equal split to count the active cells per layer, then the balanced slab), and what must be
+// global (active cells per layer, model frame, face tolerance, colour and primary ranges) comes
+// from the blocks by collectives, equal to what one process computes from the whole model.
 #include "app/distributed_render.h"
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <new>
@@ -22,6 +24,7 @@
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cutaway_renderer.h"
+#include "distributed/global_model.h"
 #include "distributed/mpi_session.h"
 #include "distributed/rank_blocks.h"
 #include "distributed/rank_renderer.h"
@@ -30,6 +33,7 @@
 #include "gl/image.h"
 #include "grid/face_classification.h"
 #include "grid/grdecl_error.h"
+#include "grid/grid_box.h"
 #include "io/output_error.h"
 #include "io/staged_file.h"
 
@@ -46,62 +50,6 @@ void check_distributed_options(const RenderOptions& options) {
         throw std::invalid_argument("--exact-check: not supported under mpirun (it recomputes the cut on one renderer)");
     if (options.baseline) throw std::invalid_argument("--baseline: not supported under mpirun");
 }
-
-/// One rank's part of the run. Built in two steps: prepare() without collectives (every rank
-/// reads the whole model and checks everything a rank could fail on), then, once all ranks agree,
-/// start() builds the rank's renderer (collective: the IceT context) and frees the whole model.
-struct RankScene {
-    void prepare(const RenderOptions& options, const distributed::MpiSession& mpi) {
-        check_distributed_options(options);
-        const double rss_before = double(run_context::proc_status_bytes("VmRSS"));
-        model = load_model(options.model, options.model_memory_limit_bytes());
-        property = choose_property(model.grid, options);
-        ijk_box = choose_primary_range(model.grid, property, options);
-        frame = pipeline::make_model_frame(model.grid, options.z_scale);
-        check_view(frame, options);
-        axis = distributed::slab_axis_from_name(options.rank_slabs);
-        slab = distributed::split_into_slabs(model.grid, mpi.size(), axis)[std::size_t(mpi.rank())];
-        load_peak_bytes = double(run_context::proc_status_bytes("VmHWM")) - rss_before;
-        context = gl::create_context(options.context_options());
-        shaders = std::make_unique<gl::ShaderLibrary>(gl::ShaderLibrary::default_root());
-        const int limit = pipeline::max_image_side();
-        if (options.width > limit || options.height > limit)
-            throw std::invalid_argument("--size " + std::to_string(options.width) + " " + std::to_string(options.height) +
-                                        ": expected sides of at most " + std::to_string(limit) +
-                                        " (this GL's texture/viewport limit)");
-    }
-
-    void start(const RenderOptions& options) {
-        const auto setup_started = std::chrono::steady_clock::now();
-        rank.emplace(*shaders, model.grid, frame, slab, grid::default_face_tolerance(model.grid), options.width,
-                     options.height);
-        rank->set_colouring(property.values(), property.colour_bar_label());
-        rank->select_range(property.primary_range, ijk_box);
-        glFinish();
-        setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
-        whole_cells = model.grid.cell_count();
-        whole_active = model.grid.active_count();
-        property.owned = {};
-        property.external = nullptr;
-        model.grid = {};  // the whole model goes; the slab stays
-        camera = pipeline::make_orbit_camera(frame, options.camera_pose(), options.width, options.height);
-        if (options.freeze_pose)
-            rank->renderer().freeze(pipeline::make_orbit_camera(frame, *options.freeze_pose, options.width, options.height));
-    }
-
-    LoadedModel model;
-    PropertyChoice property;
-    std::optional<grid::IjkBox> ijk_box;
-    pipeline::ModelFrame frame;
-    distributed::SlabAxis axis = distributed::SlabAxis::k;
-    grid::IjkBox slab;
-    double setup_seconds = 0, load_peak_bytes = 0;
-    std::size_t whole_cells = 0, whole_active = 0;
-    std::unique_ptr<gl::GlContext> context;
-    std::unique_ptr<gl::ShaderLibrary> shaders;
-    std::optional<distributed::RankRenderer> rank;
-    pipeline::Camera camera;
-};
 
 /// Exit code of `main` for an exception (app/main.cpp's mapping).
 int exit_code_of(const std::exception_ptr& error) {
@@ -133,6 +81,140 @@ std::string message_of(const std::exception_ptr& error) {
         return "unknown error";
     }
 }
+
+/// A failure every rank agreed on: the lowest failing rank's message, the highest exit code.
+struct AgreedFailure {
+    std::string message;
+    int code = 0;
+};
+
+/// Runs `step` on every rank, then all agree (collective): when it failed on any rank, every rank
+/// throws AgreedFailure, so all leave together and rank 0 reports why. A step may hold
+/// collectives only where every rank reaches them or every rank has thrown before them.
+void on_all_ranks(const distributed::MpiSession& mpi, const std::function<void()>& step) {
+    std::exception_ptr failure;
+    try {
+        step();
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    const std::string error = mpi.first_error(failure ? message_of(failure) : std::string());
+    const int code = int(mpi.max(failure ? double(exit_code_of(failure)) : 0.0));
+    if (!error.empty()) throw AgreedFailure{error, code};
+}
+
+/// The values of `values` (one per cell of `source`, the cells `source_box`) at the active cells
+/// of `box`: this rank's own cells, without the halo.
+std::vector<float> own_active_values(const grid::CornerPointGrid& source, const grid::IjkBox& source_box,
+                                     const std::vector<float>& values, const grid::IjkBox& box) {
+    std::vector<float> own;
+    const grid::GridDims& d = source.dims();
+    for (int k = box.k0; k <= box.k1; ++k)
+        for (int j = box.j0; j <= box.j1; ++j)
+            for (int i = box.i0; i <= box.i1; ++i)
+                if (const std::size_t cell = d.cell_index(i - source_box.i0, j - source_box.j0, k - source_box.k0);
+                    source.active(cell))
+                    own.push_back(values[cell]);
+    return own;
+}
+
+/// One rank's part of the run, prepared in agreed steps (on_all_ranks): the rank loads an equal
+/// split's block to count the active cells per layer, then its balanced slab with the halo; the
+/// global quantities come by collectives. start() builds the rank's renderer (collective: the
+/// IceT context) and frees the loaded block.
+struct RankScene {
+    void prepare(const RenderOptions& options, const distributed::MpiSession& mpi) {
+        const double rss_before = double(run_context::proc_status_bytes("VmRSS"));
+        std::optional<grid::IjkBox> provisional;
+        std::vector<std::uint64_t> active_per_layer;
+        on_all_ranks(mpi, [&] {
+            check_distributed_options(options);
+            axis = distributed::slab_axis_from_name(options.rank_slabs);
+            whole_dims = model_dims(options.model, options.model_memory_limit_bytes());
+            ijk_box = selection_box(options, whole_dims);
+            provisional = distributed::equal_slab(whole_dims, mpi.size(), mpi.rank(), axis);
+            active_per_layer.assign(std::size_t(distributed::layer_count(whole_dims, axis)), 0);
+            if (!provisional) return;
+            model = load_block(options.model, *provisional, options.model_memory_limit_bytes(), options.property);
+            active_per_layer = distributed::active_per_layer(model.grid, *provisional, whole_dims, axis);
+        });
+        mpi.sum(active_per_layer);
+        grid::PrimaryRange own_range;
+        std::vector<float> own_values;
+        on_all_ranks(mpi, [&] {
+            slab = distributed::split_into_slabs(active_per_layer, whole_dims, mpi.size(), axis)[std::size_t(mpi.rank())];
+            for (std::uint64_t count : active_per_layer) whole_active += count;
+            source = grid::with_halo(slab, whole_dims);
+            if (!(provisional && *provisional == source)) {
+                const double first_load_s = model.load_seconds;
+                model = {};
+                model = load_block(options.model, source, options.model_memory_limit_bytes(), options.property);
+                model.load_seconds += first_load_s;
+            }
+            property = choose_property(model.grid, options, source.k0);
+            own_range = property.colour_range;
+            if (options.range.empty()) own_values = own_active_values(model.grid, source, property.values(), slab);
+        });
+        load_peak_bytes = double(run_context::proc_status_bytes("VmHWM")) - rss_before;
+        on_all_ranks(mpi, [&] {
+            const distributed::ModelPart part{model.grid, source, whole_dims};
+            const grid::Box3 bounds = distributed::global_bounds(mpi, part);
+            tolerance = grid::face_tolerance_for(bounds);
+            frame = distributed::global_model_frame(mpi, part, bounds, options.z_scale);
+            property.colour_range = distributed::global_value_range(mpi, own_range);
+            property.primary_range = options.range.empty()
+                                         ? distributed::global_range_for_fraction(mpi, own_values, primary_fraction(options),
+                                                                                  property.colour_range.max)
+                                         : grid::PrimaryRange{options.range[0], options.range[1]};
+        });
+        on_all_ranks(mpi, [&] {
+            check_view(frame, options);
+            block = distributed::make_grid_block(model.grid, source, whole_dims, slab, tolerance);
+            context = gl::create_context(options.context_options());
+            shaders = std::make_unique<gl::ShaderLibrary>(gl::ShaderLibrary::default_root());
+            const int limit = pipeline::max_image_side();
+            if (options.width > limit || options.height > limit)
+                throw std::invalid_argument("--size " + std::to_string(options.width) + " " +
+                                            std::to_string(options.height) + ": expected sides of at most " +
+                                            std::to_string(limit) + " (this GL's texture/viewport limit)");
+        });
+    }
+
+    void start(const RenderOptions& options) {
+        const auto setup_started = std::chrono::steady_clock::now();
+        rank.emplace(*shaders, std::move(*block), frame, options.width, options.height);
+        rank->set_colouring(property.values(), property.colour_bar_label());
+        rank->select_range(property.primary_range, ijk_box);
+        glFinish();
+        setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
+        property.owned = {};
+        property.external = nullptr;
+        model.grid = {};  // the loaded block and its halo go; the renderer's block stays
+        // Framed as the single-process frame is: beside the colour bar rank 0 draws.
+        const float bar_width = rank->renderer().colour_bar_reserved_width(options.frame_settings());
+        camera = pipeline::make_orbit_camera(frame, options.camera_pose(), options.width, options.height, bar_width);
+        if (options.freeze_pose)
+            rank->renderer().freeze(
+                pipeline::make_orbit_camera(frame, *options.freeze_pose, options.width, options.height, bar_width));
+    }
+
+    grid::GridDims whole_dims;
+    LoadedModel model;  ///< this rank's block with its halo: the cells `source`
+    grid::IjkBox source;
+    PropertyChoice property;
+    std::optional<grid::IjkBox> ijk_box;
+    pipeline::ModelFrame frame;
+    double tolerance = 0;
+    distributed::SlabAxis axis = distributed::SlabAxis::k;
+    grid::IjkBox slab;
+    std::optional<distributed::GridBlock> block;
+    double setup_seconds = 0, load_peak_bytes = 0;
+    std::size_t whole_active = 0;
+    std::unique_ptr<gl::GlContext> context;
+    std::unique_ptr<gl::ShaderLibrary> shaders;
+    std::optional<distributed::RankRenderer> rank;
+    pipeline::Camera camera;
+};
 
 /// Per-frame exchange measurements of one rank.
 struct ExchangeTimes {
@@ -233,7 +315,7 @@ json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene
               {"composite_stage_ms", "the fenced stage: G-buffer read-back, packing, IceT, upload at rank 0"},
               {"allreduce_sent_per_rank_estimate", "2(N-1)/N x message (ring/Rabenseifner bound); MPI reports no byte count"},
               {"icet_sent_all_ranks", "ICET_BYTES_SENT summed over ranks and both composites"},
-              {"model_load", "every rank reads or generates the whole model, then keeps its slab: load_peak_bytes is the whole model's; rss_bytes_after_frames is the slab's"}}}};
+              {"model_load", "each rank loads only its block with a one-cell halo (a preset generates it; a file keeps only its values as it is parsed), first an equal split's block to count active cells per layer, then its balanced slab: load_peak_bytes is the peak resident growth while loading, peak_rss_bytes the rank's peak resident memory (VmHWM)"}}}};
 }
 
 int render_frames(const RenderOptions& options, const distributed::MpiSession& mpi, RankScene& scene) {
@@ -283,7 +365,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     stats["lp_num_threads"] = run_context::lp_num_threads();
     stats["git_revision"] = run_context::git_revision();
     stats["size"] = {options.width, options.height};
-    stats["cells"] = scene.whole_cells;
+    stats["cells"] = scene.whole_dims.cell_count();
     stats["active_cells"] = scene.whole_active;
     stats["primary_cells"] = primary_count;
     stats["model"] = scene.model.description;
@@ -311,17 +393,11 @@ int run_distributed_render(const RenderOptions& options) {
     // all of them with rank 0 reporting it (the ranks check the same inputs, so an input error is
     // reported once).
     RankScene scene;
-    std::exception_ptr failure;
     try {
         scene.prepare(options, mpi);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    const std::string error = mpi.first_error(failure ? message_of(failure) : std::string());
-    const int code = int(mpi.max(failure ? double(exit_code_of(failure)) : 0.0));
-    if (!error.empty()) {
-        if (mpi.root()) std::cerr << "cutaway: " << error << '\n';
-        return code;
+    } catch (const AgreedFailure& failure) {
+        if (mpi.root()) std::cerr << "cutaway: " << failure.message << '\n';
+        return failure.code;
     }
     try {
         return render_frames(options, mpi, scene);

@@ -9,22 +9,49 @@
 #include "grid/grdecl_reader.h"
 
 namespace cutaway::app {
+namespace {
+
+const std::string preset_prefix = "preset:";
+
+bool is_preset(const std::vector<std::string>& model) {
+    if (model.empty()) throw std::invalid_argument("no model given: expected a GRDECL file or preset:NAME");
+    return model.front().rfind(preset_prefix, 0) == 0;
+}
+
+/// The parameters of `model`'s preset (one preset:NAME argument).
+generators::GeneratorParameters preset_parameters(const std::vector<std::string>& model) {
+    if (model.size() > 1) throw std::invalid_argument(model.front() + ": a preset takes no further files");
+    const std::string name = model.front().substr(preset_prefix.size());
+    const auto& known = generators::presets();
+    const auto preset = std::find_if(known.begin(), known.end(), [&](const auto& p) { return p.name == name; });
+    if (preset == known.end())
+        throw std::invalid_argument(model.front() + ": expected preset:NAME with NAME one of " +
+                                    generators::preset_names() + ", found '" + name + "'");
+    return *preset;
+}
+
+std::vector<std::filesystem::path> files_of(const std::vector<std::string>& model) {
+    return {model.begin(), model.end()};
+}
+
+std::string files_description(const std::vector<std::string>& model) {
+    std::string description;
+    for (const std::string& file : model) description += (description.empty() ? "" : " + ") + file;
+    return description;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point started) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+}
+
+}  // namespace
 
 LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes,
                        const std::optional<std::string>& only_property) {
     const auto started = std::chrono::steady_clock::now();
     LoadedModel loaded;
-    const std::string prefix = "preset:";
-    if (model.empty()) throw std::invalid_argument("no model given: expected a GRDECL file or preset:NAME");
-    if (model.front().rfind(prefix, 0) == 0) {
-        if (model.size() > 1) throw std::invalid_argument(model.front() + ": a preset takes no further files");
-        const std::string name = model.front().substr(prefix.size());
-        const auto& known = generators::presets();
-        const auto preset = std::find_if(known.begin(), known.end(), [&](const auto& p) { return p.name == name; });
-        if (preset == known.end())
-            throw std::invalid_argument(model.front() + ": expected preset:NAME with NAME one of " +
-                                        generators::preset_names() + ", found '" + name + "'");
-        generators::GeneratorParameters parameters = *preset;
+    if (is_preset(model)) {
+        generators::GeneratorParameters parameters = preset_parameters(model);
         const bool without_flood = only_property && *only_property != generators::generated_dynamic_property;
         if (without_flood) parameters.time_steps = 0;
         generators::ProgressLog quiet(nullptr);
@@ -34,10 +61,42 @@ LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory
     } else {
         grid::GrdeclReadOptions options;
         options.memory_limit_bytes = memory_limit_bytes;
-        loaded.grid = grid::load_grdecl(std::vector<std::filesystem::path>(model.begin(), model.end()), options, nullptr);
-        for (const std::string& file : model) loaded.description += (loaded.description.empty() ? "" : " + ") + file;
+        loaded.grid = grid::load_grdecl(files_of(model), options, nullptr);
+        loaded.description = files_description(model);
     }
-    loaded.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    loaded.load_seconds = seconds_since(started);
+    return loaded;
+}
+
+grid::GridDims model_dims(const std::vector<std::string>& model, std::size_t memory_limit_bytes) {
+    if (is_preset(model)) return preset_parameters(model).dims;
+    grid::GrdeclReadOptions options;
+    options.memory_limit_bytes = memory_limit_bytes;
+    return grid::read_grdecl_dims(files_of(model), options);
+}
+
+LoadedModel load_block(const std::vector<std::string>& model, const grid::IjkBox& box, std::size_t memory_limit_bytes,
+                       const std::string& property) {
+    const auto started = std::chrono::steady_clock::now();
+    LoadedModel loaded;
+    if (is_preset(model)) {
+        const generators::GeneratorParameters parameters = preset_parameters(model);
+        if (property == generators::generated_dynamic_property)
+            throw std::invalid_argument("--property " + property + ": a preset's " + property +
+                                        " steps need the whole model's water flood, which a rank generating its block "
+                                        "alone cannot compute (write the model with `cutaway generate` and render the file)");
+        generators::ProgressLog quiet(nullptr);
+        loaded.grid = generators::generate_block(parameters, box, quiet, memory_limit_bytes).grid;
+        loaded.description = model.front() + " (seed " + std::to_string(parameters.seed) + ", generated by block, no " +
+                             generators::generated_dynamic_property + " steps)";
+    } else {
+        grid::GrdeclReadOptions options;
+        options.memory_limit_bytes = memory_limit_bytes;
+        options.block = box;
+        loaded.grid = grid::load_grdecl(files_of(model), options, nullptr);
+        loaded.description = files_description(model) + " (read by block)";
+    }
+    loaded.load_seconds = seconds_since(started);
     return loaded;
 }
 

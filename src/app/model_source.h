@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "grid/corner_point_grid.h"
+#include "grid/primary_selection.h"
 
 namespace cutaway::app {
 
@@ -23,5 +24,18 @@ struct LoadedModel {
 /// std::nullopt keeps every property (the viewer switches between them).
 LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes,
                        const std::optional<std::string>& only_property = std::nullopt);
+
+/// The whole model's dimensions without loading it: a preset's, or the files' SPECGRID/DIMENS
+/// (read no further).
+grid::GridDims model_dims(const std::vector<std::string>& model, std::size_t memory_limit_bytes);
+
+/// Only the cells of `box` (whole-model indices) of the model load_model gives, equal to the same
+/// box cut from it bit for bit, in memory that scales with the box: a preset generates only the
+/// block (generators::generate_block), files keep only the block's ZCORN, ACTNUM and per-cell
+/// values as they are parsed (grid::GrdeclReadOptions::block). `property`: the one the caller will
+/// use (empty: the default); a preset's SWAT needs the whole model's flood and throws
+/// std::invalid_argument.
+LoadedModel load_block(const std::vector<std::string>& model, const grid::IjkBox& box, std::size_t memory_limit_bytes,
+                       const std::string& property);
 
 }  // namespace cutaway::app

@@ -196,7 +196,7 @@ annotation::ColourBarLabel PropertyChoice::colour_bar_label() const {
     return {label, colour_range.min, colour_range.max, annotation::property_unit(name)};
 }
 
-PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options) {
+PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer) {
     PropertyChoice choice;
     const std::vector<std::string> statics = grid.property_names();
     const std::vector<std::string> dynamics = grid.dynamic_property_names();
@@ -210,7 +210,7 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
         // No property in the model: colour and select by layer index so the frame still says something.
         choice.name = choice.label = "K (layer index; the model has no property)";
         choice.owned.resize(grid.cell_count());
-        for (std::size_t c = 0; c < grid.cell_count(); ++c) choice.owned[c] = float(grid::cell_ijk(grid.dims(), c).k);
+        for (std::size_t c = 0; c < grid.cell_count(); ++c) choice.owned[c] = float(grid::cell_ijk(grid.dims(), c).k + first_layer);
     } else if (const std::vector<float>* values = grid.property(name); values && options.step < 0) {
         choice.name = choice.label = name;
         choice.external = values;
@@ -240,20 +240,25 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
 
 std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
                                                  const RenderOptions& options) {
+    std::optional<grid::IjkBox> box = selection_box(options, grid.dims());
+    if (!options.range.empty())
+        property.primary_range = {options.range[0], options.range[1]};
+    else
+        property.primary_range = grid::range_for_fraction(grid, property.values(), property.name, primary_fraction(options));
+    return box;
+}
+
+double primary_fraction(const RenderOptions& options) { return options.primary_fraction > 0 ? options.primary_fraction : 0.01; }
+
+std::optional<grid::IjkBox> selection_box(const RenderOptions& options, const grid::GridDims& d) {
     if (!options.range.empty() && options.primary_fraction > 0)
         throw std::invalid_argument("give either --range or --primary-fraction, not both");
     if (!options.range.empty() && !(options.range[0] <= options.range[1]))
         throw std::invalid_argument("--range: expected LO <= HI, found " + number_text(options.range[0]) + " > " +
                                     number_text(options.range[1]));
-    if (!options.range.empty())
-        property.primary_range = {options.range[0], options.range[1]};
-    else
-        property.primary_range = grid::range_for_fraction(grid, property.values(), property.name,
-                                                          options.primary_fraction > 0 ? options.primary_fraction : 0.01);
     std::optional<grid::IjkBox> box;
     if (options.ijk_box.size() == 6) {
         const auto& b = options.ijk_box;
-        const grid::GridDims& d = grid.dims();
         const int size[3] = {d.nx, d.ny, d.nz};
         for (int axis = 0; axis < 3; ++axis)
             if (b[std::size_t(axis)] > b[std::size_t(axis) + 3] || b[std::size_t(axis) + 3] >= size[axis])

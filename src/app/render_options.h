@@ -95,11 +95,17 @@ struct PropertyChoice {
 };
 
 /// Throws std::invalid_argument for an unknown property or step, naming the known ones.
-PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options);
+/// `first_layer`: the whole model's k of the grid's first layer (a block's), for the layer-index
+/// colouring of a model without properties.
+PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer = 0);
 
 /// Sets property.primary_range from --range (or --primary-fraction) and returns the --ijk-box,
 /// if any: the selection the renderer makes on the GPU (CutawayRenderer::select_range).
 std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
                                                  const RenderOptions& options);
+/// The checks of --range and --primary-fraction, and the --ijk-box (checked against `dims`).
+std::optional<grid::IjkBox> selection_box(const RenderOptions& options, const grid::GridDims& dims);
+/// --primary-fraction, or its default 0.01.
+double primary_fraction(const RenderOptions& options);
 
 }  // namespace cutaway::app

@@ -4,6 +4,8 @@
 // Render space: X east, Y north, Z up, model units (Z scaled by z_scale).
 #include <vector>
 
+#include "grid/point3.h"
+
 #include <glm/glm.hpp>
 
 #include "grid/corner_point_grid.h"
@@ -31,5 +33,41 @@ struct ModelFrame {
 /// thickness at least 1/5 of its larger horizontal extent (reservoirs are often 100x wider than
 /// thick). Throws std::invalid_argument when the grid has no active cell.
 ModelFrame make_model_frame(const grid::CornerPointGrid& grid, double z_scale);
+
+/// make_model_frame without the outline, for a model whose active cells span `bounds` and whose
+/// depths grow with k (`depth_direction` +1) or shrink (-1).
+ModelFrame frame_from_bounds(const grid::Box3& bounds, int depth_direction, double z_scale);
+
+/// The top-most and bottom-most active layer of every column of `grid` (i fastest; -1: none).
+void active_layer_span(const grid::CornerPointGrid& grid, std::vector<int>& top, std::vector<int>& bottom);
+
+/// The outline's search: the farthest active corner along each of 64 directions, among the
+/// corners of each column's top-most and bottom-most active cells (their hull holds every active
+/// corner: a corner lies on its pillar between those two). Ties go to the candidate the
+/// whole-model scan meets first, so candidates offered in any order, and searches over parts of
+/// the model merged, give make_model_frame's outline bit for bit.
+class OutlineSearch {
+public:
+    explicit OutlineSearch(const ModelFrame& frame);
+    /// The candidates of the columns of `grid`, the cells from `origin` on of a model `whole`
+    /// columns wide: `top` and `bottom` hold, per column of `grid` (i fastest), the whole model's
+    /// top-most and bottom-most active layer of that column (-1: none); corners of cells outside
+    /// `grid`'s layers are left to the part that holds them.
+    void consider_columns(const grid::CornerPointGrid& grid, const grid::CellIjk& origin, int whole_nx,
+                          const std::vector<int>& top, const std::vector<int>& bottom);
+    /// The search as numbers (5 per direction) for another part to merge().
+    std::vector<double> packed() const;
+    void merge(const std::vector<double>& packed);
+    /// The distinct extreme corners, in direction order (ModelFrame::outline).
+    std::vector<glm::vec3> outline() const;
+
+private:
+    void consider(const glm::vec3& point, double order);
+    ModelFrame frame_;
+    std::vector<glm::vec3> axis_;
+    std::vector<float> best_;
+    std::vector<double> order_;
+    std::vector<glm::vec3> extreme_;
+};
 
 }  // namespace cutaway::pipeline

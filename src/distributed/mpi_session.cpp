@@ -46,6 +46,21 @@ std::uint64_t MpiSession::sum(std::uint64_t value) const {
     return value;
 }
 
+void MpiSession::max(std::vector<double>& values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+}
+
+void MpiSession::sum(std::vector<std::uint64_t>& values) const {
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), int(values.size()), MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+}
+
+std::vector<double> MpiSession::all_gather(const std::vector<double>& values) const {
+    std::vector<double> all(values.size() * std::size_t(size_));
+    MPI_Allgather(values.data(), int(values.size()), MPI_DOUBLE, all.data(), int(values.size()), MPI_DOUBLE,
+                  MPI_COMM_WORLD);
+    return all;
+}
+
 std::vector<double> MpiSession::gather(const std::vector<double>& values) const {
     std::vector<double> all(root() ? values.size() * std::size_t(size_) : 0);
     MPI_Gather(values.data(), int(values.size()), MPI_DOUBLE, all.data(), int(values.size()), MPI_DOUBLE, 0,

@@ -28,6 +28,12 @@ public:
 
     double max(double value) const;
     std::uint64_t sum(std::uint64_t value) const;
+    /// Element-wise over ranks, in place (the same length on every rank); a minimum is the max
+    /// of the negated values.
+    void max(std::vector<double>& values) const;
+    void sum(std::vector<std::uint64_t>& values) const;
+    /// `values` (the same length on every rank) of every rank, rank-major, on every rank.
+    std::vector<double> all_gather(const std::vector<double>& values) const;
     /// Gathers `values` (the same length on every rank) at rank 0, rank-major; empty elsewhere.
     std::vector<double> gather(const std::vector<double>& values) const;
     void barrier() const;

@@ -13,18 +13,50 @@ SlabAxis slab_axis_from_name(const std::string& name) {
 
 const char* slab_axis_name(SlabAxis axis) { return axis == SlabAxis::i ? "i" : axis == SlabAxis::j ? "j" : "k"; }
 
-std::vector<grid::IjkBox> split_into_slabs(const grid::CornerPointGrid& grid, int ranks, SlabAxis axis) {
-    const grid::GridDims& d = grid.dims();
-    const int layers = axis == SlabAxis::i ? d.nx : axis == SlabAxis::j ? d.ny : d.nz;
-    std::vector<std::size_t> active(std::size_t(layers), 0);
+int layer_count(const grid::GridDims& d, SlabAxis axis) { return axis == SlabAxis::i ? d.nx : axis == SlabAxis::j ? d.ny : d.nz; }
+
+namespace {
+
+/// The box of every cell with layers [lo, hi] along `axis`.
+grid::IjkBox layers_box(const grid::GridDims& d, SlabAxis axis, int lo, int hi) {
+    grid::IjkBox box = grid::IjkBox::whole(d);
+    (axis == SlabAxis::i ? box.i0 : axis == SlabAxis::j ? box.j0 : box.k0) = lo;
+    (axis == SlabAxis::i ? box.i1 : axis == SlabAxis::j ? box.j1 : box.k1) = hi;
+    return box;
+}
+
+}  // namespace
+
+std::vector<std::uint64_t> active_per_layer(const grid::CornerPointGrid& grid, const grid::IjkBox& box,
+                                            const grid::GridDims& dims, SlabAxis axis) {
+    std::vector<std::uint64_t> active(std::size_t(layer_count(dims, axis)), 0);
+    const int offset = axis == SlabAxis::i ? box.i0 : axis == SlabAxis::j ? box.j0 : box.k0;
     for (std::size_t cell = 0; cell < grid.cell_count(); ++cell) {
         if (!grid.active(cell)) continue;
-        const grid::CellIjk c = grid::cell_ijk(d, cell);
-        ++active[std::size_t(axis == SlabAxis::i ? c.i : axis == SlabAxis::j ? c.j : c.k)];
+        const grid::CellIjk c = grid::cell_ijk(grid.dims(), cell);
+        ++active[std::size_t(offset + (axis == SlabAxis::i ? c.i : axis == SlabAxis::j ? c.j : c.k))];
     }
+    return active;
+}
+
+std::optional<grid::IjkBox> equal_slab(const grid::GridDims& dims, int ranks, int rank, SlabAxis axis) {
+    const int layers = layer_count(dims, axis);
+    const int lo = int(std::int64_t(layers) * rank / ranks), end = int(std::int64_t(layers) * (rank + 1) / ranks);
+    if (lo == end) return std::nullopt;
+    return layers_box(dims, axis, lo, end - 1);
+}
+
+std::vector<grid::IjkBox> split_into_slabs(const grid::CornerPointGrid& grid, int ranks, SlabAxis axis) {
+    return split_into_slabs(active_per_layer(grid, grid::IjkBox::whole(grid.dims()), grid.dims(), axis), grid.dims(),
+                            ranks, axis);
+}
+
+std::vector<grid::IjkBox> split_into_slabs(const std::vector<std::uint64_t>& active, const grid::GridDims& d,
+                                           int ranks, SlabAxis axis) {
+    const int layers = layer_count(d, axis);
     int occupied = 0;
-    std::size_t total = 0;
-    for (std::size_t count : active) {
+    std::uint64_t total = 0;
+    for (std::uint64_t count : active) {
         occupied += count > 0 ? 1 : 0;
         total += count;
     }
@@ -51,12 +83,7 @@ std::vector<grid::IjkBox> split_into_slabs(const grid::CornerPointGrid& grid, in
             ++end;
         }
         if (r == ranks - 1) end = layers;
-        grid::IjkBox box{0, 0, 0, d.nx - 1, d.ny - 1, d.nz - 1};
-        int& lo = axis == SlabAxis::i ? box.i0 : axis == SlabAxis::j ? box.j0 : box.k0;
-        int& hi = axis == SlabAxis::i ? box.i1 : axis == SlabAxis::j ? box.j1 : box.k1;
-        lo = begin;
-        hi = end - 1;
-        boxes.push_back(box);
+        boxes.push_back(layers_box(d, axis, begin, end - 1));
         begin = end;
     }
     return boxes;

@@ -8,7 +8,11 @@ namespace cutaway::distributed {
 RankRenderer::RankRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& whole,
                            const pipeline::ModelFrame& frame, const grid::IjkBox& slab, double tolerance, int width,
                            int height)
-    : block_(make_grid_block(whole, slab, tolerance)),
+    : RankRenderer(shaders, make_grid_block(whole, slab, tolerance), frame, width, height) {}
+
+RankRenderer::RankRenderer(const gl::ShaderLibrary& shaders, GridBlock block, const pipeline::ModelFrame& frame,
+                           int width, int height)
+    : block_(std::move(block)),
       renderer_(shaders, block_.grid, frame, block_.classes, width, height),
       allreduce_(width, height),
       compositor_(width, height) {
@@ -27,12 +31,12 @@ RankRenderer::RankRenderer(const gl::ShaderLibrary& shaders, const grid::CornerP
     renderer_.set_hooks(std::move(hooks));
 }
 
-void RankRenderer::set_colouring(const std::vector<float>& whole_values, const pipeline::ColourBarLabel& label) {
-    renderer_.set_colouring(box_values(whole_values, block_.whole_dims, block_.box), label);
+void RankRenderer::set_colouring(const std::vector<float>& source_values, const pipeline::ColourBarLabel& label) {
+    renderer_.set_colouring(block_.own_values(source_values), label);
 }
 
-void RankRenderer::set_primaries(const std::vector<std::uint8_t>& whole_flags) {
-    renderer_.set_primaries(box_values(whole_flags, block_.whole_dims, block_.box));
+void RankRenderer::set_primaries(const std::vector<std::uint8_t>& source_flags) {
+    renderer_.set_primaries(block_.own_values(source_flags));
 }
 
 void RankRenderer::select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box) {

@@ -34,14 +34,18 @@ public:
     /// face tolerance.
     RankRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& whole, const pipeline::ModelFrame& frame,
                  const grid::IjkBox& slab, double tolerance, int width, int height);
+    /// Collective: the same for a block the rank cut from the grid it loaded (make_grid_block).
+    RankRenderer(const gl::ShaderLibrary& shaders, GridBlock block, const pipeline::ModelFrame& frame, int width,
+                 int height);
 
     pipeline::CutawayRenderer& renderer() { return renderer_; }
     const pipeline::CutawayRenderer& renderer() const { return renderer_; }
     const GridBlock& block() const { return block_; }
 
-    /// Whole-model arrays (one entry per cell of the whole model), narrowed to the slab.
-    void set_colouring(const std::vector<float>& whole_values, const pipeline::ColourBarLabel& label);
-    void set_primaries(const std::vector<std::uint8_t>& whole_flags);
+    /// Arrays of the block's source grid (one entry per cell of the whole model, or of the loaded
+    /// block with its halo: GridBlock::source), narrowed to the slab.
+    void set_colouring(const std::vector<float>& source_values, const pipeline::ColourBarLabel& label);
+    void set_primaries(const std::vector<std::uint8_t>& source_flags);
     /// `box` in whole-model cell indices.
     void select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box = std::nullopt);
 

@@ -54,8 +54,9 @@ FaceClassification::FaceClassification(std::vector<FaceClass> classes, double to
     }
 }
 
-double default_face_tolerance(const CornerPointGrid& grid) {
-    const Box3 box = grid_bounds(grid);
+double default_face_tolerance(const CornerPointGrid& grid) { return face_tolerance_for(grid_bounds(grid)); }
+
+double face_tolerance_for(const Box3& box) {
     if (box.empty()) return 1e-9;
     const double dx = box.max.x - box.min.x, dy = box.max.y - box.min.y, dz = box.max.z - box.min.z;
     return std::max(1e-6 * std::sqrt(dx * dx + dy * dy + dz * dz), 1e-9);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "grid/corner_point_grid.h"
+#include "grid/point3.h"
 
 namespace cutaway::grid {
 
@@ -44,5 +45,7 @@ private:
 /// Default tolerance: 1e-6 of the active cells' bounding-box diagonal (covers text rounding of
 /// depths printed with 6-7 significant digits, far below any real fault throw).
 double default_face_tolerance(const CornerPointGrid& grid);
+/// The same for active cells spanning `bounds` (grid_bounds of the whole model).
+double face_tolerance_for(const Box3& bounds);
 
 }  // namespace cutaway::grid

@@ -111,6 +111,33 @@ std::string byte_text(double bytes) {
 
 }  // namespace
 
+/// Which values of a whole-grid array the reader keeps: all, or those of the block's cells.
+class CellFilter {
+public:
+    CellFilter(const GridDims& dims, const std::optional<IjkBox>& block) : dims_(dims), block_(block) {}
+    /// Cells kept (the block's, or the grid's).
+    GridDims kept_dims() const { return block_ ? block_->dims() : dims_; }
+    /// Whether per-cell value `n` (Eclipse order) is kept.
+    bool keeps_cell(std::size_t n) const { return !block_ || block_->contains(cell_ijk(dims_, n)); }
+    /// Whether ZCORN value `n` (Eclipse order: 2NX per row, 2NY rows per plane, 2NZ planes) is kept.
+    bool keeps_corner(std::size_t n) const {
+        if (!block_) return true;
+        const std::size_t row_length = 2 * std::size_t(dims_.nx), rows = n / row_length;
+        return block_->contains({int(n % row_length / 2), int(rows / 2 % std::size_t(dims_.ny)),
+                                 int(rows / (4 * std::size_t(dims_.ny)))});
+    }
+    /// Calls keep(first kept index) for each kept value of a run of `count` values from `first`.
+    template <typename Keeps, typename Keep>
+    static void each_kept(std::size_t first, std::size_t count, Keeps&& keeps, Keep&& keep) {
+        for (std::size_t n = first; n < first + count; ++n)
+            if (keeps(n)) keep();
+    }
+
+private:
+    GridDims dims_;
+    std::optional<IjkBox> block_;
+};
+
 struct GrdeclReader::State {
     GrdeclReadOptions options;
     std::optional<GridDims> dims;
@@ -126,6 +153,7 @@ struct GrdeclReader::State {
     std::string first_file;
     std::size_t bytes_reserved = 0;
     std::size_t warnings_not_shown = 0;
+    bool stop_at_dims = false;  ///< read_grdecl_dims: stop once the dimensions are known
 };
 
 namespace {
@@ -138,6 +166,7 @@ public:
 
     void run() {
         for (;;) {
+            if (state_.stop_at_dims && state_.dims) return;
             const Token token = next_token();
             if (token.kind == TokenKind::end) return;
             if (token.kind == TokenKind::slash) {
@@ -296,6 +325,21 @@ private:
         return *state_.dims;
     }
 
+    CellFilter filter() { return CellFilter(require_dims(), state_.options.block); }
+
+    /// Reads one value per cell of the grid, appending sink(value) for the kept cells.
+    template <typename T, typename Parse>
+    void read_kept_cells(std::vector<T>& kept, Parse&& parse) {
+        const CellFilter cells = filter();
+        std::size_t n = 0;
+        read_values(require_dims().cell_count(), [&](const Token& token, std::string_view text, std::size_t count) {
+            const T value = parse(token, text);
+            if (!state_.options.block) kept.insert(kept.end(), count, value);
+            else CellFilter::each_kept(n, count, [&](std::size_t c) { return cells.keeps_cell(c); }, [&] { kept.push_back(value); });
+            n += count;
+        });
+    }
+
     // ---- keywords ----------------------------------------------------------------------
 
     void read_dims() {
@@ -320,9 +364,20 @@ private:
                 fail(keyword_line_, "the dimensions given before (" + dims_text(*state_.dims) + ")", dims_text(dims));
             return;
         }
-        // Refuse absurd sizes before anything is allocated: the geometry alone needs this much.
-        const double cells = double(dims.nx) * double(dims.ny) * double(dims.nz);
-        const double bytes = double(dims.nx) * dims.ny * (dims.nz + 1.0) * 32.0 + cells + double(dims.nx + 1) * (dims.ny + 1) * 48.0;
+        const std::optional<IjkBox>& block = state_.options.block;
+        if (block && !(block->i0 >= 0 && block->j0 >= 0 && block->k0 >= 0 && block->i0 <= block->i1 &&
+                       block->j0 <= block->j1 && block->k0 <= block->k1 && block->i1 < dims.nx && block->j1 < dims.ny &&
+                       block->k1 < dims.nz))
+            fail(keyword_line_, "a grid holding the block to read (cells " + std::to_string(block->i0) + " " +
+                                    std::to_string(block->j0) + " " + std::to_string(block->k0) + " to " +
+                                    std::to_string(block->i1) + " " + std::to_string(block->j1) + " " +
+                                    std::to_string(block->k1) + ")",
+                 dims_text(dims));
+        // Refuse absurd sizes before anything is allocated: the geometry alone needs this much
+        // (the kept cells' depths and flags, every pillar).
+        const GridDims kept = CellFilter(dims, block).kept_dims();
+        const double cells = double(kept.nx) * double(kept.ny) * double(kept.nz);
+        const double bytes = double(kept.nx) * kept.ny * (kept.nz + 1.0) * 32.0 + cells + double(dims.nx + 1) * (dims.ny + 1) * 48.0;
         if (bytes > double(state_.options.memory_limit_bytes))
             fail(keyword_line_, "a grid within the memory limit of " + byte_text(double(state_.options.memory_limit_bytes)),
                  dims_text(dims) + " needing at least " + byte_text(bytes));
@@ -350,25 +405,31 @@ private:
     void read_zcorn() {
         const GridDims& dims = require_dims();
         forbid_repeat(state_.zcorn.has_value());
-        reserve(ZcornStore::compact_bytes(dims), "ZCORN");
-        ZcornStore& store = state_.zcorn.emplace(dims);
+        const CellFilter cells = filter();
+        const GridDims kept = cells.kept_dims();
+        reserve(ZcornStore::compact_bytes(kept), "ZCORN");
+        ZcornStore& store = state_.zcorn.emplace(kept);
+        // Reserved before the store allocates its full layout (it holds both for a moment).
+        const auto expanding = [&] { reserve(ZcornStore::full_bytes(kept), "ZCORN with gaps between layers (full layout)"); };
+        std::size_t n = 0;
         read_values(dims.zcorn_value_count(), [&](const Token& token, std::string_view text, std::size_t count) {
-            // Reserved before the store allocates its full layout (it holds both for a moment).
-            store.push_repeated(coordinate_value(token, text), count, [&] {
-                reserve(ZcornStore::full_bytes(dims), "ZCORN with gaps between layers (full layout)");
-            });
+            const double value = coordinate_value(token, text);
+            if (!state_.options.block) store.push_repeated(value, count, expanding);
+            else CellFilter::each_kept(n, count, [&](std::size_t c) { return cells.keeps_corner(c); },
+                                       [&] { store.push_repeated(value, 1, expanding); });
+            n += count;
         });
     }
 
     void read_actnum() {
-        const GridDims& dims = require_dims();
         forbid_repeat(!state_.actnum.empty());
-        reserve(dims.cell_count(), "ACTNUM");
-        state_.actnum.reserve(dims.cell_count());
-        read_values(dims.cell_count(), [&](const Token& token, std::string_view text, std::size_t count) {
+        const std::size_t kept = filter().kept_dims().cell_count();
+        reserve(kept, "ACTNUM");
+        state_.actnum.reserve(kept);
+        read_kept_cells(state_.actnum, [&](const Token& token, std::string_view text) {
             const long long value = integer_value(token, text);
             if (value < 0 || value > 3) fail(token.line, "an ACTNUM flag 0..3", describe(token));
-            state_.actnum.insert(state_.actnum.end(), count, std::uint8_t(value != 0));
+            return std::uint8_t(value != 0);
         });
     }
 
@@ -401,13 +462,11 @@ private:
 
     template <typename T, typename Parse>
     std::vector<T> read_cell_array(Parse&& parse) {
-        const GridDims& dims = require_dims();
-        reserve(dims.cell_count() * sizeof(T), keyword_);
+        const std::size_t kept = filter().kept_dims().cell_count();
+        reserve(kept * sizeof(T), keyword_);
         std::vector<T> values;
-        values.reserve(dims.cell_count());
-        read_values(dims.cell_count(), [&](const Token& token, std::string_view text, std::size_t count) {
-            values.insert(values.end(), count, parse(token, text));
-        });
+        values.reserve(kept);
+        read_kept_cells(values, parse);
         return values;
     }
 
@@ -452,9 +511,11 @@ private:
             return;
         }
         const std::size_t cells = state_.dims ? state_.dims->cell_count() : 0;
+        const CellFilter kept_cells(state_.dims ? *state_.dims : GridDims{}, state_.options.block);
+        const std::size_t kept = cells > 0 ? kept_cells.kept_dims().cell_count() : 0;
         std::vector<double> values;
         std::size_t count = 0;
-        bool numeric = true;
+        bool numeric = true, reserved = false;
         for (;;) {
             const Token token = next_token();
             if (token.kind == TokenKind::slash) break;
@@ -468,14 +529,16 @@ private:
                                    : std::nullopt;
             numeric = numeric && value.has_value();
             if (numeric && count + item.count <= cells) {
-                if (values.empty()) reserve(cells * sizeof(double), keyword_);
-                values.insert(values.end(), item.count, *value);
+                if (!reserved) reserve(kept * sizeof(double), keyword_);
+                reserved = true;
+                CellFilter::each_kept(count, item.count, [&](std::size_t c) { return kept_cells.keeps_cell(c); },
+                                      [&] { values.push_back(*value); });
             }
             count += std::min(item.count, std::size_t(1) << 40);
         }
-        if (!values.empty()) state_.bytes_reserved -= cells * sizeof(double);  // released on return
+        if (reserved) state_.bytes_reserved -= kept * sizeof(double);  // released on return
         if (numeric && cells > 0 && count == cells) {
-            reserve(cells * sizeof(float), keyword_);
+            reserve(kept * sizeof(float), keyword_);
             store_float_property(std::vector<float>(values.begin(), values.end()));
             warn(keyword_line_, "unknown keyword " + shown_keyword(keyword_) + " read as a per-cell real property");
             return;
@@ -558,6 +621,21 @@ void KeywordParser::read_include() {
 
 }  // namespace
 
+namespace {
+
+/// `coord` (the whole grid's pillars) narrowed to the pillars of `block`'s cells.
+void narrow_coord(const GridDims& dims, const IjkBox& block, std::vector<double>& coord) {
+    std::vector<double> kept;
+    kept.reserve(block.dims().coord_value_count());
+    for (int pj = block.j0; pj <= block.j1 + 1; ++pj) {
+        const auto first = coord.begin() + std::ptrdiff_t(6 * dims.pillar_index(block.i0, pj));
+        kept.insert(kept.end(), first, first + std::ptrdiff_t(6 * (block.i1 - block.i0 + 2)));
+    }
+    coord = std::move(kept);
+}
+
+}  // namespace
+
 GrdeclReader::GrdeclReader(GrdeclReadOptions options) : state_(std::make_unique<State>()) {
     state_->options = options;
 }
@@ -591,7 +669,9 @@ CornerPointGrid GrdeclReader::finish() {
     if (!s.dims) missing("SPECGRID", "SPECGRID or DIMENS giving the grid dimensions");
     if (s.coord.empty()) missing("COORD", "COORD with the pillars");
     if (!s.zcorn) missing("ZCORN", "ZCORN with the corner depths");
-    CornerPointGrid grid(*s.dims, std::move(s.coord), std::move(*s.zcorn), std::move(s.actnum));
+    if (s.options.block) narrow_coord(*s.dims, *s.options.block, s.coord);
+    CornerPointGrid grid(CellFilter(*s.dims, s.options.block).kept_dims(), std::move(s.coord), std::move(*s.zcorn),
+                         std::move(s.actnum));
     grid.metadata() = std::move(s.metadata);
     for (auto& [name, values] : s.float_properties) grid.set_property(name, std::move(values));
     for (auto& [name, values] : s.int_properties) grid.set_int_property(name, std::move(values));
@@ -602,6 +682,18 @@ CornerPointGrid GrdeclReader::finish() {
     fresh->warnings = std::move(s.warnings);  // still readable after finish()
     state_ = std::move(fresh);
     return grid;
+}
+
+GridDims read_grdecl_dims(const std::vector<std::filesystem::path>& files, const GrdeclReadOptions& options) {
+    GrdeclReadOptions without_block = options;
+    without_block.block.reset();
+    GrdeclReader reader(without_block);
+    reader.state_->stop_at_dims = true;
+    for (const auto& file : files) {
+        reader.read_file(file);
+        if (reader.state_->dims) return *reader.state_->dims;
+    }
+    return reader.finish().dims();  // throws: no SPECGRID or DIMENS
 }
 
 CornerPointGrid load_grdecl(const std::vector<std::filesystem::path>& files, const GrdeclReadOptions& options,

@@ -5,12 +5,14 @@
 #include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "grid/corner_point_grid.h"
 #include "grid/grdecl_error.h"
+#include "grid/primary_selection.h"
 
 namespace cutaway::grid {
 
@@ -22,6 +24,11 @@ struct GrdeclReadOptions {
     int max_include_depth = 32;
     /// Whether INCLUDE may open files (off for in-memory parsing such as fuzzing).
     bool allow_include = true;
+    /// Keep only the cells of this box (whole-grid indices; it must lie within SPECGRID/DIMENS):
+    /// ZCORN, ACTNUM and per-cell properties are filtered as they are parsed, so only the box's
+    /// values are ever held; COORD is read whole (one line per pillar) and narrowed at finish().
+    /// The grid finish() returns is the box's, equal to grid::extract_box of the whole grid.
+    std::optional<IjkBox> block;
 };
 
 /// Reads GRDECL files into one grid. Files after the first may add properties only.
@@ -46,8 +53,13 @@ public:
     struct State;  // opaque: the keywords read so far
 
 private:
+    friend GridDims read_grdecl_dims(const std::vector<std::filesystem::path>& files, const GrdeclReadOptions& options);
     std::unique_ptr<State> state_;
 };
+
+/// The grid dimensions of `files` (SPECGRID or DIMENS), reading no further than them; throws
+/// GrdeclError like load_grdecl when they are missing or malformed.
+GridDims read_grdecl_dims(const std::vector<std::filesystem::path>& files, const GrdeclReadOptions& options = {});
 
 /// Reads `files` in order onto one grid (e.g. a grid file then its property files).
 CornerPointGrid load_grdecl(const std::vector<std::filesystem::path>& files, const GrdeclReadOptions& options = {},

@@ -51,13 +51,21 @@ std::vector<std::uint8_t> select_primaries(const CornerPointGrid& grid, const st
     return flags;
 }
 
-PrimaryRange range_for_fraction(const CornerPointGrid& grid, const std::vector<float>& values,
-                                const std::string& property_name, double fraction) {
+void check_fraction(double fraction) {
     if (!(fraction > 0 && fraction <= 1))
         throw std::invalid_argument("primary fraction " + std::to_string(fraction) + ": expected a value in (0, 1]");
+}
+
+std::size_t primary_count_for_fraction(double fraction, std::size_t active) {
+    return std::max<std::size_t>(1, std::size_t(std::llround(fraction * double(active))));
+}
+
+PrimaryRange range_for_fraction(const CornerPointGrid& grid, const std::vector<float>& values,
+                                const std::string& property_name, double fraction) {
+    check_fraction(fraction);
     std::vector<float> active = active_values(grid, values, property_name);
     if (active.empty()) throw std::invalid_argument("property " + property_name + ": the grid has no active cell");
-    const auto wanted = std::max<std::size_t>(1, std::size_t(std::llround(fraction * double(active.size()))));
+    const std::size_t wanted = primary_count_for_fraction(fraction, active.size());
     const auto nth = active.begin() + std::ptrdiff_t(active.size() - wanted);
     std::nth_element(active.begin(), nth, active.end());
     const float top = *std::max_element(nth, active.end());

@@ -17,6 +17,11 @@ struct IjkBox {
     bool contains(const CellIjk& c) const {
         return c.i >= i0 && c.i <= i1 && c.j >= j0 && c.j <= j1 && c.k >= k0 && c.k <= k1;
     }
+    /// The box's own dimensions (cells along each axis).
+    GridDims dims() const { return {i1 - i0 + 1, j1 - j0 + 1, k1 - k0 + 1}; }
+    /// Every cell of a grid of `d`.
+    static IjkBox whole(const GridDims& d) { return {0, 0, 0, d.nx - 1, d.ny - 1, d.nz - 1}; }
+    bool operator==(const IjkBox&) const = default;
 };
 
 struct PrimaryRange {
@@ -35,6 +40,11 @@ std::vector<std::uint8_t> select_primaries(const CornerPointGrid& grid, const st
 /// fraction by value (ties at v are all included, so the count may exceed the target).
 PrimaryRange range_for_fraction(const CornerPointGrid& grid, const std::vector<float>& values,
                                 const std::string& property_name, double fraction);
+
+/// Throws std::invalid_argument unless `fraction` lies in (0, 1].
+void check_fraction(double fraction);
+/// How many of `active` cells range_for_fraction aims at (at least 1).
+std::size_t primary_count_for_fraction(double fraction, std::size_t active);
 
 /// Min and max of `values` over active cells (throws on NaN, naming the property and cell).
 PrimaryRange active_value_range(const CornerPointGrid& grid, const std::vector<float>& values,

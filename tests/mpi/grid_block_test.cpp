@@ -5,6 +5,8 @@
 
 #include <stdexcept>
 
+#include "cutaway/model_frame.h"
+#include "distributed/global_model.h"
 #include "distributed/grid_block.h"
 #include "distributed/rank_blocks.h"
 #include "generators/generator.h"
@@ -95,6 +97,37 @@ TEST(GridBlock, WholeIdsMapBackAndZeroStaysZero) {
     EXPECT_EQ(block.whole_id(0), 0u);
     EXPECT_EQ(block.whole_id(1), std::uint32_t(whole.dims().cell_index(2, 3, 4) + 1));
     EXPECT_EQ(block.whole_id(std::uint32_t(block.grid.cell_count())), std::uint32_t(whole.dims().cell_index(9, 8, 6) + 1));
+}
+
+}  // namespace
+}  // namespace cutaway::test
+
+namespace cutaway::test {
+namespace {
+
+void expect_same_frame(const pipeline::ModelFrame& a, const pipeline::ModelFrame& b) {
+    EXPECT_EQ(a.centre.x, b.centre.x);
+    EXPECT_EQ(a.centre.y, b.centre.y);
+    EXPECT_EQ(a.centre.z, b.centre.z);
+    EXPECT_EQ(a.z_scale, b.z_scale);
+    EXPECT_EQ(a.up_sign, b.up_sign);
+    EXPECT_EQ(a.render_min, b.render_min);
+    EXPECT_EQ(a.render_max, b.render_max);
+    ASSERT_EQ(a.outline.size(), b.outline.size());
+    for (std::size_t p = 0; p < a.outline.size(); ++p) EXPECT_EQ(a.outline[p], b.outline[p]) << "outline point " << p;
+}
+
+// One process is an MPI session of one rank: the global frame of the whole model as its one part,
+// and of every block with its halo merged by hand (as the ranks' collectives merge them), equal
+// make_model_frame of the whole model.
+TEST(GlobalModel, FrameOfTheBlocksEqualsTheWholeModelsFrame) {
+    const distributed::MpiSession mpi;
+    const grid::CornerPointGrid whole = faulted_model();
+    const pipeline::ModelFrame expected = pipeline::make_model_frame(whole, 0.0);
+    const distributed::ModelPart all{whole, grid::IjkBox::whole(whole.dims()), whole.dims()};
+    const grid::Box3 bounds = distributed::global_bounds(mpi, all);
+    expect_same_frame(distributed::global_model_frame(mpi, all, bounds, 0.0), expected);
+    EXPECT_EQ(grid::face_tolerance_for(bounds), grid::default_face_tolerance(whole));
 }
 
 }  // namespace
