@@ -126,7 +126,7 @@ void bm_distributed_frame(benchmark::State& state, const BenchSetup& setup, cons
     state.counters["active_cells"] = double(model.grid.active_count());
     state.counters["max_block_cells"] = mpi.max(double(rank.block().grid.cell_count()));
     state.counters["primary_cells"] = double(mpi.sum(rank.renderer().primary_cell_count()));
-    state.counters["max_peak_rss_bytes"] = mpi.max(double(app::run_context::proc_status_bytes("VmHWM")));
+    state.counters["max_peak_rss_bytes"] = mpi.max(double(run_context::proc_status_bytes("VmHWM")));
     state.SetLabel(preset + " " + std::to_string(mpi.size()) + " ranks, " + distributed::slab_axis_name(o.slabs) + " slabs, " +
                    settings.strategy);
 }
@@ -141,9 +141,9 @@ public:
 void add_context(const DistributedBenchOptions& o, const distributed::MpiSession& mpi, const gl::GlContext& context) {
     benchmark::AddCustomContext("gl_renderer", gl::gl_renderer());
     benchmark::AddCustomContext("gl_platform", context.platform());
-    benchmark::AddCustomContext("LP_NUM_THREADS", app::run_context::lp_num_threads());
-    benchmark::AddCustomContext("git_revision", app::run_context::git_revision());
-    benchmark::AddCustomContext("uname", app::run_context::uname_text());
+    benchmark::AddCustomContext("LP_NUM_THREADS", run_context::lp_num_threads());
+    benchmark::AddCustomContext("git_revision", run_context::git_revision());
+    benchmark::AddCustomContext("uname", run_context::uname_text());
     benchmark::AddCustomContext("ranks", std::to_string(mpi.size()));
     benchmark::AddCustomContext("resolution", std::to_string(o.width) + "x" + std::to_string(o.height));
     benchmark::AddCustomContext("slab_axis", distributed::slab_axis_name(o.slabs));
