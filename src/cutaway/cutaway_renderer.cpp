@@ -241,7 +241,8 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
             });
         if (last_filtered_)
             gl::timed_stage(timer_, "mean_filter", [&] {
-                mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera);
+                mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera,
+                                   mean_filter_reference_depth(frame_, cut_camera));
                 resolve_cut(filtered_cut_, s, cut_camera);
             });
         frozen_valid_ = frozen_camera_.has_value();
