@@ -22,10 +22,11 @@ bool raycast_border(vec2 window, vec3 plane_point, vec3 plane_normal) {
     const vec2 offsets[4] = vec2[](vec2(1.0, 0.0), vec2(-1.0, 0.0), vec2(0.0, 1.0), vec2(0.0, -1.0));
     for (int n = 0; n < 4; ++n) {
         bool hit;
-        vec3 point = ray_plane_hit(window + border_width * offsets[n], plane_point, plane_normal, hit);
+        vec2 neighbour = window + border_width * offsets[n];
+        vec3 point = ray_plane_hit(neighbour, plane_point, plane_normal, hit);
         if (!hit) continue;
         CutSample there = cut_at(point);
-        if (there.fragment_depth < there.cut_depth && !cut_is_rear_shell(there.texel)) return true;
+        if (clipped(there, point, ivec2(floor(neighbour))) && !cut_is_rear_shell(there.texel)) return true;
     }
     return false;
 }

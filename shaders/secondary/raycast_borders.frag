@@ -27,7 +27,7 @@ void main() {
     float depth = texelFetch(normal_depth, texel, 0).a;
     vec2 ndc = gl_FragCoord.xy / viewport_size * 2.0 - 1.0;
     vec3 world = (inverse_view * vec4(ndc / projection_scale * depth, -depth, 1.0)).xyz;
-    if (!raycast_border(gl_FragCoord.xy, world, plane.xyz)) return;
+    if (at_view_rear_shell(world, texel) || !raycast_border(gl_FragCoord.xy, world, plane.xyz)) return;  // secondary.frag
     bool shell = uint(plane.w + 0.5) - 1u == face_class_shell;
     uvec2 id = imageLoad(scene_id, texel).rg;
     if (!shell && hide_internal_lines && (id.y & flag_cut_fill) != 0u) return;

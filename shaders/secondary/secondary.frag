@@ -20,7 +20,10 @@ uniform float border_width;     // w, pixels
 
 void main() {
     CutSample here = cut_from_clip(v_in.cut_clip, v_in.cut_eye_depth);
-    if (here.fragment_depth < here.cut_depth) discard;
+    if (clipped(here, v_in.world_position, ivec2(gl_FragCoord.xy))) discard;
+    // Frozen view: no border lines on the model camera's rear shell (as on the cut's own clamp),
+    // which the frozen cut may touch where the cut camera saw a primary in front of it.
+    bool on_view_rear = at_view_rear_shell(v_in.world_position, ivec2(gl_FragCoord.xy));
     bool inside_view = (v_in.face_info & 4u) != 0u;
     uint face_class = v_in.face_info & 3u;
     vec3 normal = inside_view ? cut_normal_at(here.texel) : v_in.face_normal;
@@ -40,7 +43,7 @@ void main() {
 #ifdef BORDER_THRESHOLD
     // Naive: depth within epsilon of the cut, epsilon = the depth w pixels span at this distance.
     bool shell = face_class == face_class_shell;
-    if (here.cut_depth > 0.0 && !cut_is_rear_shell(here.texel) && (shell || !hide_lines) &&
+    if (here.cut_depth > 0.0 && !cut_is_rear_shell(here.texel) && !on_view_rear && (shell || !hide_lines) &&
         here.fragment_depth - here.cut_depth < border_width * here.fragment_depth / focal_px) {
         colour = shell ? shell_cut_colour : line_colour_on(colour);
         flags |= shell ? (flag_border | flag_shell_cut) : flag_border;

@@ -33,6 +33,10 @@ uniform mat4 cut_view;          // cut camera (the model camera unless the view 
 uniform mat4 cut_view_projection;
 uniform vec2 cut_size;          // cut image, pixels
 uniform bool has_cut;           // false: nothing is cut anywhere (plain frame)
+// Freeze view: stage 2 keeps the model camera's rear shell in front of the cut too
+// (common/cut_lookup.glsl), so a cell in front of the cut still gives its exposed faces seen from
+// inside (the only ones that can lie on that rear shell).
+uniform bool keep_rear_faces;
 const int max_pyramid_levels = 16;
 uniform int pyramid_levels;     // levels of the pyramid (its level 0 is half the cut image)
 uniform ivec2 pyramid_sizes[max_pyramid_levels];
@@ -135,7 +139,7 @@ void main() {
     uint slot = begin + gl_LocalInvocationIndex;
     if (slot >= end) return;
     int brick_class = classify_box(brick_boxes[2u * brick].xyz, brick_boxes[2u * brick + 1u].xyz);
-    if (brick_class == culled || brick_class == in_front) {
+    if (brick_class == culled || (brick_class == in_front && !keep_rear_faces)) {
         if (gl_LocalInvocationIndex == 0u) {
             atomicAdd(bricks_culled, 1u);
             atomicAdd(cells_culled, end - begin);
@@ -145,12 +149,10 @@ void main() {
     uint cell = brick_cells[slot];
     if (is_primary(cell)) return;  // primaries are drawn by stage 3
     int cell_class = brick_class == behind ? behind : classify_cell(cell);
-    if (cell_class == culled || cell_class == in_front) {
-        atomicAdd(cells_culled, 1u);
-        return;
-    }
+    if (cell_class == culled || cell_class == in_front) atomicAdd(cells_culled, 1u);
+    if (cell_class == culled || (cell_class == in_front && !keep_rear_faces)) return;
     if (cell_class == behind) atomicAdd(cells_behind, 1u);
-    else atomicAdd(cells_straddling, 1u);
+    if (cell_class == straddling) atomicAdd(cells_straddling, 1u);
     uint records[6];
     uint count = 0u;
     uint classes = cell_face_classes[cell];
@@ -161,8 +163,11 @@ void main() {
         FaceFrame f = face_frame(cell, side, eye_position);
         // Behind the cut a cell shows only its exposed faces seen from outside (a face both of
         // whose triangles face away lies behind the cell's own front); through the cut, whatever
-        // the draw keeps (interior faces only from inside their cell).
-        bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing) : f.any_triangle_front_facing);
+        // the draw keeps (interior faces only from inside their cell); in front of it, the
+        // exposed faces seen from inside (keep_rear_faces).
+        bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing)
+                                     : cell_class == in_front ? exposed && f.back_facing
+                                                              : f.any_triangle_front_facing);
         if (keep) records[count++] = pack_face_record(cell, side, face_class);
     }
     if (count == 0u) return;

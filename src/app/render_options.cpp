@@ -54,8 +54,10 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
     using namespace pipeline;
     FrameSettings s = settings;
     s.border = parse_choice<BorderMode>("--border", border, {{"raycast", BorderMode::raycast}, {"threshold", BorderMode::threshold}});
-    s.mean_filter_kernel = parse_choice<MeanFilterKernel>(
-        "--mean-filter-kernel", kernel, {{"full", MeanFilterKernel::full}, {"sampled", MeanFilterKernel::sampled}});
+    s.mean_filter_kernel = parse_choice<MeanFilterKernel>("--mean-filter-kernel", kernel,
+                                                          {{"full", MeanFilterKernel::full},
+                                                           {"sampled", MeanFilterKernel::sampled},
+                                                           {"distance-scaled", MeanFilterKernel::distance_scaled}});
     s.ssao = parse_choice<bool>("--ssao", ssao, {{"on", true}, {"off", false}});
     s.contours = parse_choice<bool>("--contours", contours, {{"on", true}, {"off", false}});
     s.only = parse_choice<OnlyLayer>("--only", only, {{"both", OnlyLayer::both}, {"primaries", OnlyLayer::primaries},
@@ -114,7 +116,7 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--line-width", o.settings.line_width_px, "cell edge line width, pixels (0: none)")
         ->check(finite_in(0, 16, "pixels"));
     c.add_option("--mean-filter", o.settings.mean_filter, "mean filter size k (odd; 0 = off)")->check(finite_in(0, 65));
-    c.add_option("--mean-filter-kernel", o.kernel, "full|sampled");
+    c.add_option("--mean-filter-kernel", o.kernel, "full|sampled|distance-scaled (radius shrinking with distance to the camera)");
     c.add_option("--ssao", o.ssao, "on|off");
     c.add_option("--aperture", o.aperture,
                  "horizontal and vertical aperture H V: full opening angles, degrees 0..180 (each wall leans out by "

@@ -178,13 +178,24 @@ CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camer
             {&primary_flags_, &layout_.compact_of_cell, grid_.dims(), selection_generation_}};
 }
 
+float CutawayRenderer::rear_margin(const Camera& camera) const {
+    // Far enough in front of the shell that its own fragments (the same faces, rasterised again)
+    // stay behind the clamp despite rounding: 1e-4 of the model's radius, plus 64 steps of the
+    // 32-bit depth encoding over the camera's depth range (which dominates for tiny models: 1e-5
+    // of the radius left 11 pixels in front of the cut on a 6-cell grid).
+    return 1e-4f * float(frame_.radius()) + 4e-6f * (camera.far_plane - camera.near_plane);
+}
+
 void CutawayRenderer::resolve_cut(const CutTargets& targets, const FrameSettings& s, const Camera& cut_camera) {
-    // Far enough in front of the shell that its own fragments (the same faces, rasterised from the
-    // model camera) stay behind the cut despite rounding: 1e-4 of the model's radius, plus 64
-    // steps of the 32-bit depth encoding over the camera's depth range (which dominates for tiny
-    // models: 1e-5 of the radius left 11 pixels in front of the cut on a 6-cell grid).
-    const float rear_margin = 1e-4f * float(frame_.radius()) + 4e-6f * (cut_camera.far_plane - cut_camera.near_plane);
-    cut_resolve_.apply(targets, cut_camera, s.see_through ? nullptr : &rear_shell_.depth(), rear_margin);
+    cut_resolve_.apply(targets, cut_camera, s.see_through ? nullptr : &rear_shell_.depth(), rear_margin(cut_camera));
+}
+
+const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera) {
+    // The frozen cut was resolved against the frozen camera's rear shell already: the texture is
+    // free until the cut is made again.
+    rear_shell_.render(buffers_, camera);
+    if (hooks_.combine_max) hooks_.combine_max({&rear_shell_.depth()});
+    return rear_shell_.depth();
 }
 
 const CutTargets& CutawayRenderer::active_cut() const { return last_filtered_ ? filtered_cut_ : cut_; }
@@ -230,26 +241,30 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
             });
         if (last_filtered_)
             gl::timed_stage(timer_, "mean_filter", [&] {
-                mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera);
+                mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera,
+                                   mean_filter_reference_depth(frame_, cut_camera));
                 resolve_cut(filtered_cut_, s, cut_camera);
             });
         frozen_valid_ = frozen_camera_.has_value();
     }
     empty_vertex_array_.bind();
+    const bool keep_view_rear = cut_drawn && frozen_camera_ && !s.see_through;
     if (cut_needed && s.draw == DrawMode::visible)
         gl::timed_stage(timer_, "culling", [&] {
-            visible_.select(buffers_, camera, cut_drawn ? &active_cut() : nullptr, cut_camera);
+            visible_.select(buffers_, camera, cut_drawn ? &active_cut() : nullptr, cut_camera, keep_view_rear);
         });
     if (cut_needed && s.draw == DrawMode::all_faces) secondary_face_list();  // built on first use, untimed
     const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "secondary", [&] {
+        const CutClip clip{active_cut(), cut_camera, keep_view_rear ? &render_view_rear_shell(camera) : nullptr,
+                           rear_margin(camera)};
         scene_.clear();
         scene_.framebuffer.bind();
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(s.depth_ties_to_last ? GL_LEQUAL : GL_LESS);
         if (!cut_needed) return;
-        secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, active_cut(), cut_camera);
-        if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, active_cut(), cut_camera);
+        secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, clip);
+        if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, clip);
     });
     gl::timed_stage(timer_, "primary", [&] {
         scene_.framebuffer.bind();
@@ -317,7 +332,7 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode dr
             if (draw == DrawMode::visible) visible_.draw(buffers_);
             else buffers_.draw_faces(buffers_.all_faces());
         };
-        secondary_.draw(context, submit, plain, cut_, camera);
+        secondary_.draw(context, submit, plain, CutClip{cut_, camera});
     });
     frozen_valid_ = false;
     last_drawn_ = {};

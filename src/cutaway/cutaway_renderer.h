@@ -73,7 +73,8 @@ struct FrameHooks {
     /// (timed as stage "cut_combine", with the resolve pass that follows) on the strategy's cut
     /// and the rear shell (unless see-through), before the cut is resolved and filtered; for the
     /// cone-field strategies on their seed image instead of the cut (inside stage 1, before the
-    /// transform), so every renderer transforms the same seeds.
+    /// transform), so every renderer transforms the same seeds; while the view is frozen, also on
+    /// the model camera's rear shell at the start of stage 2.
     std::function<void(const std::vector<const gl::Texture*>& depth_images)> combine_max;
     /// Sums the primaries' centres over all renderers (the cone-field strategies' slope is taken
     /// at the centroid of all primaries). Called whenever the selection changes.
@@ -164,8 +165,13 @@ private:
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut() const;
+    /// Render units the rear-shell clamp keeps in front of the rear shell seen from `camera`.
+    float rear_margin(const Camera& camera) const;
     /// Normals and positions of `targets`' cut, clamped in front of the rear shell (unless see_through).
     void resolve_cut(const CutTargets& targets, const FrameSettings& settings, const Camera& cut_camera);
+    /// Freeze view: the rear shell seen from the model `camera`, which stage 2 keeps (CutClip).
+    /// Reuses rear_shell_ (only needed while the cut is made).
+    const gl::Texture& render_view_rear_shell(const Camera& camera);
     /// Stage 2's faces for `draw`: the culling pass's selection, or the full secondary list.
     void draw_secondary_faces(DrawMode draw);
     const FaceBuffer& secondary_face_list();

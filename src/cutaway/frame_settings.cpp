@@ -3,7 +3,13 @@
 namespace cutaway::pipeline {
 
 const char* to_string(BorderMode mode) { return mode == BorderMode::raycast ? "raycast" : "threshold"; }
-const char* to_string(MeanFilterKernel kernel) { return kernel == MeanFilterKernel::full ? "full" : "sampled"; }
+const char* to_string(MeanFilterKernel kernel) {
+    switch (kernel) {
+        case MeanFilterKernel::sampled: return "sampled";
+        case MeanFilterKernel::distance_scaled: return "distance-scaled";
+        default: return "full";
+    }
+}
 const char* to_string(SeedSource seeds) { return seeds == SeedSource::boxes ? "boxes" : "geometry"; }
 const char* to_string(DrawMode draw) { return draw == DrawMode::visible ? "visible" : "all-faces"; }
 const char* to_string(OnlyLayer only) {

@@ -6,7 +6,7 @@
 namespace cutaway::pipeline {
 
 enum class BorderMode { raycast, threshold };
-enum class MeanFilterKernel { full, sampled };
+enum class MeanFilterKernel { full, sampled, distance_scaled };  ///< post/mean_filter.h
 enum class OnlyLayer { both, primaries, secondaries };
 /// Seeds of the cone-field strategies: each primary's box back face (widened by a pixel) or the
 /// primaries' own faces (the exact rear hull of the cells).

@@ -9,17 +9,26 @@
 
 namespace cutaway::pipeline {
 
+/// What stage 2 clips against: `cut` seen from `cut_camera` and, while the view is frozen, the
+/// model camera's rear shell (shaders/common/cut_lookup.glsl: a point at most `rear_margin` render
+/// units in front of it is never clipped, so the frozen cut cannot open the model to the background).
+struct CutClip {
+    const CutTargets& cut;
+    const Camera& cut_camera;
+    const gl::Texture* view_rear_shell = nullptr;  ///< RearShellDepth::depth() from the model camera; null: none
+    float rear_margin = 0;
+};
+
 class SecondaryPass {
 public:
     explicit SecondaryPass(const gl::ShaderLibrary& shaders);
     /// Sets up the secondary program, then `submit` issues the face draw (a face list or the
-    /// culling pass's indirect draw) into the bound scene framebuffer, clipped by `cut` seen from
-    /// `cut_camera`.
+    /// culling pass's indirect draw) into the bound scene framebuffer, clipped by `clip`.
     void draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
-              const CutTargets& cut, const Camera& cut_camera);
+              const CutClip& clip);
     /// Ray-cast borders over the visible secondary pixels of `scene` (after draw, ray-cast mode).
     void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
-                               const CutTargets& cut, const Camera& cut_camera);
+                               const CutClip& clip);
 
 private:
     gl::ProgramCache programs_;

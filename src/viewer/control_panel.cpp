@@ -112,7 +112,7 @@ unsigned lines_and_post_section(ViewerState& state) {
         s.mean_filter = half ? 2 * half + 1 : 0;
         changed = true;
     }
-    changed |= choice_combo("kernel", o.kernel, {"full", "sampled"});
+    changed |= choice_combo("kernel", o.kernel, {"full", "sampled", "distance-scaled"});
     changed |= on_off_checkbox("SSAO", o.ssao);
     changed |= ImGui::Checkbox("saturation contrast", &s.saturation);
     changed |= choice_combo("show", o.only, {"both", "primaries", "secondaries"});

@@ -4,11 +4,12 @@
 
 namespace cutaway::viewer {
 
-void draw_timing_overlay(const FrameTimings& timings) {
+void draw_timing_overlay(const FrameTimings& timings, float colour_bar_share) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    // Bottom right: the colour bar and its labels sit at the right edge's middle.
-    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + viewport->WorkSize.x - 8, viewport->WorkPos.y + viewport->WorkSize.y - 8),
-                            ImGuiCond_Always, ImVec2(1, 1));
+    // Bottom right, beside the columns the colour bar keeps (its lowest labels reach down to the
+    // bottom third of the window, where the overlay's table is).
+    const float right = viewport->WorkPos.x + viewport->WorkSize.x * (1.0f - colour_bar_share) - 8;
+    ImGui::SetNextWindowPos(ImVec2(right, viewport->WorkPos.y + viewport->WorkSize.y - 8), ImGuiCond_Always, ImVec2(1, 1));
     ImGui::SetNextWindowBgAlpha(0.6f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;

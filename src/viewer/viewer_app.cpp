@@ -127,7 +127,8 @@ bool ViewerApp::frame(bool last_frame_due) {
         info_.render_width = render_width();
         info_.render_height = render_height();
         changes |= draw_control_panel(state_, *scene_, info_, requests);
-        draw_timing_overlay(timings_);
+        const pipeline::CutawayRenderer& renderer = scene_->renderer();
+        draw_timing_overlay(timings_, renderer.colour_bar_reserved_width(settings_) / float(renderer.width()));
     }
     if (requests.reset_camera) changes |= press_key("R");
     if (requests.screenshot) changes |= press_key("F12");

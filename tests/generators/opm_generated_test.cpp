@@ -10,6 +10,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
+
+#include <unistd.h>
 
 #include <opm/input/eclipse/Deck/Deck.hpp>
 #include <opm/input/eclipse/EclipseState/Grid/EclipseGrid.hpp>
@@ -37,7 +40,9 @@ class OpmReadsPreset : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(OpmReadsPreset, SameActiveCountAndVolumes) {
     const GeneratorParameters p = find_preset(GetParam());
-    const fs::path path = fs::temp_directory_path() / (std::string("cutaway_opm_") + GetParam() + ".grdecl");
+    // The process id in the name: test runs of other checkouts on the machine use the same temp folder.
+    const fs::path path =
+        fs::temp_directory_path() / ("cutaway_opm_" + std::string(GetParam()) + "_" + std::to_string(::getpid()) + ".grdecl");
     {
         std::ofstream out(path, std::ios::binary);
         out << testing::grdecl_text(p);

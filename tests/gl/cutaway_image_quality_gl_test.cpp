@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <optional>
 #include <random>
 
 #include "gl_test_support.h"
@@ -16,11 +17,14 @@ namespace {
 
 constexpr int width = 320, height = 240;
 
-/// Share of the uncut model's silhouette that shows background in the cutaway frame.
+/// Share of the uncut model's silhouette that shows background in the cutaway frame (its cut made
+/// from `frozen`, freeze view, when given).
 double background_in_silhouette(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings settings,
-                                const pipeline::Camera& camera) {
+                                const pipeline::Camera& camera, const std::optional<pipeline::Camera>& frozen = {}) {
+    if (frozen) renderer.freeze(*frozen);
     renderer.render(settings, camera);
     const std::vector<std::uint32_t> cut = renderer.read_eclipse_ids();
+    renderer.unfreeze();
     settings.cut_enabled = false;
     renderer.render(settings, camera);
     const std::vector<std::uint32_t> uncut = renderer.read_eclipse_ids();
@@ -62,6 +66,50 @@ TEST(CutawayImageQuality, PetraIsNotSeeThrough) { check_no_see_through(petra(), 
 
 TEST(CutawayImageQuality, FaultedModelWithInactiveCellsIsNotSeeThrough) {
     check_no_see_through(faulted_model_with_inactive_cells({24, 20, 8}, 0.25, 7), 2);
+}
+
+// Freeze view: the cut is made from one camera, then the model camera moves (paper figure 10:
+// azimuth 35 frozen, turned to 80). The frozen cut's own rear-shell clamp follows the frozen
+// camera's rays, so from the moved camera the rear shell must be kept as well (the model
+// camera's, shaders/common/cut_lookup.glsl); without it figure 10's frozen panel showed the
+// background through the cut.
+TEST(CutawayImageQuality, FrozenViewFromAMovedCameraIsNotSeeThrough) {
+    auto renderer = make_renderer(petra(), width, height);
+    renderer->select_range(grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01));
+    const auto camera_at = [&](float azimuth, float elevation) {
+        return pipeline::make_orbit_camera(renderer->frame(), {azimuth, elevation, 0, glm::vec3(0)}, width, height);
+    };
+    const pipeline::Camera frozen = camera_at(35, 30);
+    struct Move {
+        float azimuth, elevation;
+        bool aperture_180;
+        pipeline::DrawMode draw;
+    };
+    // Figure 10's turn, larger turns either way and upwards, aperture 180, both stage-2 face sources.
+    const Move moves[] = {{80, 30, false, pipeline::DrawMode::visible},   {80, 30, false, pipeline::DrawMode::all_faces},
+                          {-20, 30, false, pipeline::DrawMode::visible},  {125, 40, false, pipeline::DrawMode::visible},
+                          {35, 70, false, pipeline::DrawMode::visible},   {80, 30, true, pipeline::DrawMode::visible}};
+    double worst = 0, worst_raw = 0;
+    for (const Move& move : moves) {
+        pipeline::FrameSettings settings;
+        settings.ssao = false;  // speed; the cut does not depend on it
+        settings.draw = move.draw;
+        if (move.aperture_180) pipeline::set_aperture_180(settings);
+        const pipeline::Camera camera = camera_at(move.azimuth, move.elevation);
+        const double share = background_in_silhouette(*renderer, settings, camera, frozen);
+        settings.see_through = true;
+        const double raw = background_in_silhouette(*renderer, settings, camera, frozen);
+        std::cout << "  frozen at azimuth 35, seen from " << move.azimuth << "/" << move.elevation
+                  << (move.aperture_180 ? " (aperture 180)" : "") << ": background " << 100 * share
+                  << "% of the silhouette (see-through: " << 100 * raw << "%)\n";
+        worst = std::max(worst, share);
+        worst_raw = std::max(worst_raw, raw);
+    }
+    // 0.5%: issue 15's bound for figures, as for the unfrozen frames above (what may remain: pixels
+    // on the silhouette's edge that the rear shell and the front faces rasterise differently).
+    EXPECT_LT(worst, 0.005);
+    // The raw frozen cut does open these views to the background, so the check above can fail.
+    EXPECT_GT(worst_raw, 0.05);
 }
 
 /// Luminance (0..255, Rec. 709) of the final frame at id-image pixel i (ids: rows bottom to top,

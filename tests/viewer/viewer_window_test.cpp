@@ -11,6 +11,9 @@
 #include <string>
 #include <thread>
 
+#include "annotation/colour_bar_layout.h"
+#include "app/model_source.h"
+#include "app/render_options.h"
 #include "cpu/test_files.h"
 #include "gl/image.h"
 
@@ -134,6 +137,36 @@ TEST_F(ViewerWindowTest, PanelAndTimingOverlayAreDrawnOverTheFrame) {
     };
     EXPECT_GT(changed_share(10, 10), 0.5);
     EXPECT_GT(changed_share(ui.width - 70, ui.height - 50), 0.5);
+}
+
+TEST_F(ViewerWindowTest, PanelAndTimingOverlayLeaveTheColourBarClear) {
+    // The window of paper_figures/viewer_petra.png (16:9, colour bar on) at a smaller size: the
+    // overlay is as large as there, so it reaches nearer the bar.
+    constexpr int width = 800, height = 450;
+    const std::string view = xvfb + cutaway_binary + " view preset:petra --size 800 450 --camera 35 30 0 ";
+    ASSERT_EQ(run_command(view + "--no-ui --frames 2 --screenshot " + path("plain.png")).exit_code, 0);
+    const CommandResult shown = run_command(view + "--frames 3 --screenshot " + path("ui.png"));
+    ASSERT_EQ(shown.exit_code, 0) << shown.output;
+    const gl::RgbaImage plain = gl::read_png(path("plain.png")), ui = gl::read_png(path("ui.png"));
+    ASSERT_EQ(plain.width, width);
+    ASSERT_EQ(plain.height, height);
+    // Every pixel the bar may draw (frame, marks, title and tick labels), from the layout the
+    // renderer draws it with, for the viewer's default colouring (petra's PORO).
+    const app::LoadedModel model = app::load_model({"preset:petra"}, std::size_t(1) << 32, "PORO");
+    const annotation::PixelRect bar =
+        annotation::layout_colour_bar(app::choose_property(model.grid, app::RenderOptions{}).colour_bar_label(), width, height)
+            .bounds();
+    std::size_t covered = 0, changed_elsewhere = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const bool changed = !std::equal(plain.at(x, y), plain.at(x, y) + 3, ui.at(x, y));
+            const bool on_bar = float(x) + 2 > bar.x0 && float(x) - 1 < bar.x1 && float(y) + 2 > bar.y0 && float(y) - 1 < bar.y1;
+            (on_bar ? covered : changed_elsewhere) += changed;
+        }
+    // No text over the bar (the overlay's table covered its lowest label before it moved left
+    // of the bar's columns), with a pixel of margin; the panel and overlay are drawn elsewhere.
+    EXPECT_EQ(covered, 0u) << "bar x " << bar.x0 << ".." << bar.x1 << ", y " << bar.y0 << ".." << bar.y1;
+    EXPECT_GT(changed_elsewhere, std::size_t(width) * height / 10);
 }
 
 TEST_F(ViewerWindowTest, ScriptDrivesCameraAndEveryControl) {

@@ -1,21 +1,39 @@
 #pragma once
-// Mean filter of the cut surface (k x k, full or sampled kernel), as two 1D passes.
+// Mean filter of the cut surface (k x k), as two 1D passes. Kernels (SPEC.md stage extras):
+//   full: every texel of the k x k window;
+//   sampled: every other texel along each axis (a quarter of the fetches);
+//   distance-scaled: the radius shrinks with distance to the camera, so far cut walls, a few
+//     pixels wide, are not smoothed away: r(p) = clamp(round(R * d_ref / d(p)), 1, R), R = k / 2,
+//     d(p) the unfiltered cut's depth at p along the cut camera's axis (R where nothing is cut),
+//     d_ref = mean_filter_reference_depth (the model centre's depth): beyond it a window of
+//     constant size in the model, that of the full kernel at the model's centre; nearer, the full
+//     kernel.
+//     Separable only approximately: the second pass averages first-pass means taken with each
+//     texel's own radius, which is the (2r+1)^2 box mean only where the radius is the same over
+//     the window; where it is R over the whole window (the cut nearer than d_ref there) the result
+//     is the full kernel's.
 #include "cutaway/camera.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
+#include "cutaway/model_frame.h"
 #include "gl/program_cache.h"
 
 namespace cutaway::pipeline {
 
+/// d_ref of the distance-scaled kernel: the depth of the model's centre along `cut_camera`'s axis
+/// (render units, at least the near plane).
+float mean_filter_reference_depth(const ModelFrame& frame, const Camera& cut_camera);
+
 class MeanFilter {
 public:
     explicit MeanFilter(const gl::ShaderLibrary& shaders);
-    /// Filters input.depth into output.depth (same size) with an odd kernel `size` >= 3.
+    /// Filters input.depth into output.depth (same size) with an odd kernel `size` >= 3;
+    /// `reference_depth`: d_ref of the distance-scaled kernel (unused by the others).
     void apply(const CutTargets& input, const CutTargets& output, int size, MeanFilterKernel kernel,
-               const Camera& cut_camera);
+               const Camera& cut_camera, float reference_depth);
 
 private:
-    const gl::Program& program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera);
+    const gl::Program& program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera, float reference_depth);
     gl::ProgramCache programs_;
     gl::Texture rows_;               ///< R32F: the first (row) pass
     gl::Framebuffer rows_framebuffer_;

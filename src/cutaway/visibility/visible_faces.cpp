@@ -33,7 +33,8 @@ VisibleFaces::VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& b
       chunks_(QuadDraw::chunks_for(face_capacity_)),
       commands_(chunks_ * draw_command_bytes, nullptr) {}
 
-void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera) {
+void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera,
+                          bool keep_rear_faces) {
     if (cut) pyramid_.build(cut->surface);
     glNamedBufferSubData(counters_.id(), 0, sizeof(cleared_counters), cleared_counters.data());
     const gl::Program& p = cull_;
@@ -46,6 +47,7 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
     gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
     gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
     gl::set_uniform(p, "has_cut", cut != nullptr);
+    gl::set_uniform(p, "keep_rear_faces", keep_rear_faces);
     gl::set_uniform(p, "brick_count", unsigned(brick_count_));
     gl::set_uniform(p, "face_capacity", unsigned(face_capacity_));
     gl::set_uniform(p, "cut_surface", 0);

@@ -20,6 +20,7 @@ struct CullingCounts {
     std::uint64_t bricks = 0;
     std::uint64_t bricks_culled = 0;     ///< outside the frustum or entirely in front of the cut
     std::uint64_t cells_culled = 0;      ///< cells of culled bricks, and culled secondaries of the others
+                                         ///< (with keep_rear_faces, those in front of the cut still give their rear faces)
     std::uint64_t cells_behind = 0;      ///< secondaries entirely behind the cut (exposed faces only)
     std::uint64_t cells_straddling = 0;  ///< secondaries the cut passes through (every visible face)
 };
@@ -31,8 +32,11 @@ public:
     VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_capacity);
 
     /// Builds the cut's min/max pyramid (from `cut`, the texture stage 2 reads; null: no cut) and
-    /// selects the faces of secondary cells for the model `camera`.
-    void select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera);
+    /// selects the faces of secondary cells for the model `camera`. `keep_rear_faces` (freeze
+    /// view, stage 2 keeping the model camera's rear shell): cells in front of the cut still give
+    /// their exposed faces seen from inside.
+    void select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera,
+                bool keep_rear_faces = false);
     /// Draws the selected faces with the bound face program, as `grid`'s indexed quads.
     void draw(const GridBuffers& grid) const;
     /// Reads the counters of the last selection back (a GPU->CPU sync: not in timed frames).
