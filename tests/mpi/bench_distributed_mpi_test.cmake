@@ -7,7 +7,7 @@ execute_process(COMMAND ${MPIEXEC} --oversubscribe -np ${RANKS} ${BENCH} --prese
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "expected exit code 0, found ${code}\nstderr: ${err}\nstdout: ${out}")
 endif()
-string(REGEX MATCHALL "\"name\": \"BM_distributed_frame/zaphirus\"" runs "${out}")
+string(REGEX MATCHALL "\"name\": \"BM_distributed_frame/zaphirus[/\"]" runs "${out}")
 list(LENGTH runs count)
 if(NOT count EQUAL 1)
   message(FATAL_ERROR "expected one report of BM_distributed_frame/zaphirus (rank 0's), found ${count}:\n${out}")
