@@ -5,7 +5,7 @@
 // (single-pass wireframe, Baerentzen et al. 2006) without a geometry shader.
 // Variants: CULL_FRONT_INTERIOR (secondaries: an interior face seen from outside its cell always
 // coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries, shell),
-// CULL_FRONT (the rear shell: only faces seen from inside their cell).
+// CULL_FRONT (the rear shell: only faces seen from inside their cell); PLAIN_FRAME (no cut read).
 #include "common/grid.glsl"
 #include "common/face_frame.glsl"
 
@@ -55,8 +55,10 @@ void main() {
         v_out.compact_cell = 0u;
         v_out.face_info = 0u;
         v_out.edge_distance = vec4(1e6);
+#ifndef PLAIN_FRAME
         v_out.cut_clip = vec4(0.0, 0.0, 0.0, 1.0);
         v_out.cut_eye_depth = 0.0;
+#endif
         return;
     }
     vec4 clip[4];
@@ -78,6 +80,8 @@ void main() {
     v_out.compact_cell = cell;
     v_out.face_info = face_class | (back_facing ? 4u : 0u);
     v_out.edge_distance = distances;
+#ifndef PLAIN_FRAME
     v_out.cut_clip = cut_view_projection * vec4(q[me], 1.0);
     v_out.cut_eye_depth = -(cut_view * vec4(q[me], 1.0)).z;
+#endif
 }

@@ -10,9 +10,10 @@ struct FaceFrame {
     bool any_triangle_front_facing;  // either drawn triangle (0,1,2), (0,2,3) faces the eye (or is edge-on)
 };
 
-FaceFrame face_frame(uint cell, uint side, vec3 eye) {
+// The frame of the quad q (a face's 4 corners in face_corners order) of `cell`.
+FaceFrame face_frame_of_quad(vec3 q[4], uint cell, vec3 eye) {
     FaceFrame f;
-    for (uint k = 0u; k < 4u; ++k) f.q[k] = corner_position(cell, face_corners[side * 4u + k]);
+    f.q = q;
     f.normal = cross(f.q[2] - f.q[0], f.q[3] - f.q[1]);
     if (cell_normals_flipped(cell)) f.normal = -f.normal;
     vec3 centre = 0.25 * (f.q[0] + f.q[1] + f.q[2] + f.q[3]);
@@ -24,4 +25,17 @@ FaceFrame face_frame(uint cell, uint side, vec3 eye) {
     float sign = cell_normals_flipped(cell) ? -1.0 : 1.0;
     f.any_triangle_front_facing = sign * dot(first, eye - f.q[0]) >= 0.0 || sign * dot(second, eye - f.q[0]) >= 0.0;
     return f;
+}
+
+FaceFrame face_frame(uint cell, uint side, vec3 eye) {
+    vec3 q[4];
+    for (uint k = 0u; k < 4u; ++k) q[k] = corner_position(cell, face_corners[side * 4u + k]);
+    return face_frame_of_quad(q, cell, eye);
+}
+
+// The same from the cell's 8 corners (corner_position order), rebuilt once by the caller.
+FaceFrame face_frame_from_corners(vec3 corners[8], uint cell, uint side, vec3 eye) {
+    vec3 q[4];
+    for (uint k = 0u; k < 4u; ++k) q[k] = corners[face_corners[side * 4u + k]];
+    return face_frame_of_quad(q, cell, eye);
 }

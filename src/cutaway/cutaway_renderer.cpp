@@ -317,22 +317,20 @@ double CutawayRenderer::render_unfenced_ms(const FrameSettings& settings, const 
 gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode draw) {
     timer_.clear();
     empty_vertex_array_.bind();
-    FrameSettings plain;
-    plain.border = BorderMode::threshold;
+    const FrameSettings plain;  // its line width
     if (draw == DrawMode::all_faces) buffers_.all_faces();  // built on first use, untimed
     const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "baseline", [&] {
-        cut_.clear();
         if (draw == DrawMode::visible) visible_.select(buffers_, camera, nullptr, camera);
-        scene_.clear();
-        scene_.framebuffer.bind();
+        scene_.clear_plain();
+        scene_.plain_framebuffer.bind();
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         const auto submit = [&] {
             if (draw == DrawMode::visible) visible_.draw(buffers_);
             else buffers_.draw_faces(buffers_.all_faces());
         };
-        secondary_.draw(context, submit, plain, CutClip{cut_, camera});
+        secondary_.draw_plain(context, submit, plain);
     });
     frozen_valid_ = false;
     last_drawn_ = {};
@@ -383,6 +381,12 @@ std::vector<std::uint32_t> CutawayRenderer::read_eclipse_ids() const {
 }
 
 FloatImage CutawayRenderer::read_scene_depth() const { return read_alpha(scene_.normal_depth, width_, height_); }
+
+std::vector<float> CutawayRenderer::read_window_depth() const {
+    std::vector<float> depth(std::size_t(width_) * std::size_t(height_));
+    glGetTextureImage(scene_.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
+    return depth;
+}
 
 FloatImage CutawayRenderer::read_cut_depth() const {
     const CutTargets& cut = active_cut();

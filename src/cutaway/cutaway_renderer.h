@@ -147,6 +147,9 @@ public:
     std::vector<std::uint32_t> read_eclipse_ids() const;
     /// Linear depth of the visible surface in the model camera (0 = background).
     FloatImage read_scene_depth() const;
+    /// The depth buffer of the last frame or plain frame (window depth 0..1, 1 = background),
+    /// rows bottom to top.
+    std::vector<float> read_window_depth() const;
     /// The cut surface used by the last frame: depth along the cut camera's axis (0 = no cut).
     FloatImage read_cut_depth() const;
     /// The strategy's cut of the last frame, before any mean filter: depth s along the cut

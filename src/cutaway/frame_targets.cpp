@@ -4,6 +4,12 @@
 
 namespace cutaway::pipeline {
 
+namespace {
+const float zero[4] = {0, 0, 0, 0};
+const GLuint zero_id[4] = {0, 0, 0, 0};
+const float far_depth = 1.0f;
+}  // namespace
+
 CutTargets::CutTargets(int width, int height)
     : surface(GL_TEXTURE_2D, GL_RGBA32F, width, height),
       position(GL_TEXTURE_2D, GL_RGBA32F, width, height),
@@ -16,7 +22,6 @@ CutTargets::CutTargets(int width, int height)
 }
 
 void CutTargets::clear() const {
-    const float zero[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, zero);
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, zero);
@@ -38,6 +43,11 @@ SceneTargets::SceneTargets(int width, int height)
     const std::array<GLenum, 4> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
                                         GL_COLOR_ATTACHMENT3};
     framebuffer.finish(buffers, "scene");
+    plain_framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
+    plain_framebuffer.attach(GL_COLOR_ATTACHMENT2, id);
+    plain_framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+    const std::array<GLenum, 3> plain_buffers{GL_COLOR_ATTACHMENT0, GL_NONE, GL_COLOR_ATTACHMENT2};
+    plain_framebuffer.finish(plain_buffers, "plain scene");
     shell_framebuffer.attach(GL_COLOR_ATTACHMENT0, shell_depth);
     shell_framebuffer.attach(GL_DEPTH_ATTACHMENT, shell_depth_buffer);
     const std::array<GLenum, 1> shell_buffers{GL_COLOR_ATTACHMENT0};
@@ -45,9 +55,6 @@ SceneTargets::SceneTargets(int width, int height)
 }
 
 void SceneTargets::clear() const {
-    const float zero[4] = {0, 0, 0, 0};
-    const GLuint zero_id[4] = {0, 0, 0, 0};
-    const float far_depth = 1.0f;
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 1, zero);
     glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 2, zero_id);
@@ -55,6 +62,12 @@ void SceneTargets::clear() const {
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_DEPTH, 0, &far_depth);
+}
+
+void SceneTargets::clear_plain() const {
+    glClearNamedFramebufferfv(plain_framebuffer.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferuiv(plain_framebuffer.id(), GL_COLOR, 2, zero_id);
+    glClearNamedFramebufferfv(plain_framebuffer.id(), GL_DEPTH, 0, &far_depth);
 }
 
 PostTargets::PostTargets(int width, int height)

@@ -25,10 +25,14 @@ struct SceneTargets {
     gl::Texture face_plane;    ///< RGBA32F: world normal of the visible secondary face, w = 1 (0 elsewhere)
     gl::Texture depth;         ///< DEPTH32F
     gl::Framebuffer framebuffer;
+    /// The plain frame's (`--baseline`): colour, id and depth only (secondary/plain.frag), so a
+    /// frame without a cut writes 12 bytes per pixel instead of the G-buffer's 48.
+    gl::Framebuffer plain_framebuffer;
     gl::Texture shell_depth;   ///< R32F linear depth of the uncut shell (contours)
     gl::Texture shell_depth_buffer;
     gl::Framebuffer shell_framebuffer;
     void clear() const;
+    void clear_plain() const;
 };
 
 /// Post-processing: ambient occlusion factor and the final RGBA8 image.

@@ -96,7 +96,9 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
       pillar_texels_(pillars_, GL_RGBA32F),
       corner_plane_texels_(corner_planes_, GL_RGBA32F),
       cell_texels_(cells_, GL_RG32UI),
-      value_texels_(values_, GL_R32F) {}
+      value_texels_(values_, GL_R32F),
+      face_class_texels_(cell_face_classes_, GL_R32UI),
+      primary_bit_texels_(primary_bits_, GL_R32UI) {}
 
 const FaceBuffer& GridBuffers::all_faces() const {
     if (!all_.buffer) all_ = FaceBuffer::from(pipeline::all_faces(layout_));
@@ -155,6 +157,8 @@ void GridBuffers::bind_geometry() const {
 void GridBuffers::bind_culling_inputs() const {
     cell_face_classes_.bind_base(GL_SHADER_STORAGE_BUFFER, cell_face_classes_binding);
     primary_bits_.bind_base(GL_SHADER_STORAGE_BUFFER, primary_bits_binding);
+    face_class_texels_.bind(face_class_texture_unit);
+    primary_bit_texels_.bind(primary_bit_texture_unit);
 }
 
 void GridBuffers::draw_faces(const FaceBuffer& faces) const {

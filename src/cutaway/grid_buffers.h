@@ -15,7 +15,7 @@ enum BufferBinding : unsigned { faces_binding = 3, primary_cells_binding = 5,
                                 cell_face_classes_binding = 9, primary_bits_binding = 10 };
 /// Texture units of the geometry's buffer textures (common/grid.glsl).
 enum GeometryTextureUnit : unsigned { pillar_texture_unit = 8, corner_depth_texture_unit = 9, cell_texture_unit = 10,
-                                      value_texture_unit = 11 };
+                                      value_texture_unit = 11, face_class_texture_unit = 12, primary_bit_texture_unit = 13 };
 
 struct FaceBuffer {
     gl::Buffer buffer;
@@ -72,6 +72,7 @@ private:
     /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
     /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
     gl::BufferTexture pillar_texels_, corner_plane_texels_, cell_texels_, value_texels_;
+    gl::BufferTexture face_class_texels_, primary_bit_texels_;  ///< the culling pass's reads (texel gathers)
     mutable FaceBuffer all_;
     QuadDraw quads_;
 };

@@ -7,6 +7,8 @@ namespace cutaway::pipeline {
 
 SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/secondary.frag"}}),
+      plain_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/plain.frag"}},
+                           {{"CULL_FRONT_INTERIOR", ""}, {"PLAIN_FRAME", ""}})),
       borders_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"},
                               {GL_FRAGMENT_SHADER, "secondary/raycast_borders.frag"}})) {}
 
@@ -71,6 +73,13 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     gl::set_uniform(p, "line_width", settings.line_width_px);
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
+    submit();
+}
+
+void SecondaryPass::draw_plain(const FaceDrawContext& context, const std::function<void()>& submit,
+                               const FrameSettings& settings) {
+    prepare_face_program(plain_, context);
+    gl::set_uniform(plain_, "line_width", settings.line_width_px);
     submit();
 }
 

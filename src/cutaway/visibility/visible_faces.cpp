@@ -3,14 +3,43 @@
 #include <algorithm>
 #include <array>
 #include <span>
+#include <utility>
 
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 namespace {
 
-enum CullingBinding : unsigned { brick_cells_binding = 6, brick_begin_binding = 7, brick_boxes_binding = 8,
-                                 culling_binding = 11, visible_faces_binding = 12, draw_commands_binding = 14 };
+enum CullingBinding : unsigned { brick_begin_binding = 7, brick_boxes_binding = 8,
+                                 culling_binding = 11, visible_faces_binding = 12, draw_commands_binding = 14,
+                                 brick_classes_binding = 15 };
+/// Texture units of cull_cells.comp's buffer textures (the grid's own take 8-13).
+enum CullingTextureUnit : unsigned { brick_cell_texture_unit = 14, brick_begin_texture_unit = 15, brick_class_texture_unit = 16 };
+
+/// Bricks one workgroup of cull_cells.comp takes in turn: on llvmpipe a workgroup costs about
+/// 10 us before its first instruction (measured: an empty dispatch of sapphire's 3,250 one-brick
+/// groups took 36 ms), so a group per brick cost more than the selection; 16 leaves ~200 groups
+/// on sapphire, plenty for any number of threads.
+constexpr unsigned bricks_per_group = 16;
+
+/// Workgroups for `count` items, spread over Y beyond the 65535 groups GL guarantees along X.
+std::pair<GLuint, GLuint> dispatch_grid(std::size_t count) {
+    const std::size_t groups_x = std::min<std::size_t>(std::max<std::size_t>(count, 1), 65535);
+    return {GLuint(groups_x), GLuint((std::max<std::size_t>(count, 1) + groups_x - 1) / groups_x)};
+}
+
+/// The uniforms of visibility/classify.glsl.
+void set_classification_uniforms(const gl::Program& p, const Camera& camera, const CutTargets* cut,
+                                 const Camera& cut_camera, bool keep_rear_faces) {
+    gl::set_uniform(p, "view_projection", camera.view_projection());
+    gl::set_uniform(p, "eye_position", camera.eye);
+    gl::set_uniform(p, "cut_view", cut_camera.view);
+    gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
+    gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
+    gl::set_uniform(p, "has_cut", cut != nullptr);
+    gl::set_uniform(p, "keep_rear_faces", keep_rear_faces);
+    gl::set_uniform(p, "cut_surface", 0);
+}
 
 /// The counters of visibility/cull_cells.comp.
 constexpr std::array<std::uint32_t, 5> cleared_counters{0, 0, 0, 0, 0};
@@ -20,12 +49,17 @@ constexpr std::size_t draw_command_bytes = 5 * sizeof(std::uint32_t);
 }  // namespace
 
 VisibleFaces::VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_capacity)
-    : cull_(shaders.build({{GL_COMPUTE_SHADER, "visibility/cull_cells.comp"}})),
+    : classify_(shaders.build({{GL_COMPUTE_SHADER, "visibility/classify_bricks.comp"}})),
+      cull_(shaders.build({{GL_COMPUTE_SHADER, "visibility/cull_cells.comp"}})),
       finish_(shaders.build({{GL_COMPUTE_SHADER, "visibility/finish_culling.comp"}})),
       pyramid_(shaders),
       brick_cells_(gl::Buffer::from(std::span<const std::uint32_t>(bricks.cells))),
       brick_begin_(gl::Buffer::from(std::span<const std::uint32_t>(bricks.begin))),
       brick_boxes_(gl::Buffer::from(std::span<const float>(bricks.boxes))),
+      brick_classes_(std::max<std::size_t>(bricks.brick_count(), 1) * sizeof(std::uint32_t), nullptr),
+      brick_cell_texels_(brick_cells_, GL_R32UI),
+      brick_begin_texels_(brick_begin_, GL_R32UI),
+      brick_class_texels_(brick_classes_, GL_R32UI),
       brick_count_(bricks.brick_count()),
       face_capacity_(std::max<std::size_t>(face_capacity, 1)),
       counters_(sizeof(cleared_counters), cleared_counters.data(), GL_DYNAMIC_STORAGE_BIT),
@@ -37,34 +71,38 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
                           bool keep_rear_faces) {
     if (cut) pyramid_.build(cut->surface);
     glNamedBufferSubData(counters_.id(), 0, sizeof(cleared_counters), cleared_counters.data());
+    if (cut) cut->surface.bind(0);
+    brick_begin_.bind_base(GL_SHADER_STORAGE_BUFFER, brick_begin_binding);
+    brick_boxes_.bind_base(GL_SHADER_STORAGE_BUFFER, brick_boxes_binding);
+    brick_classes_.bind_base(GL_SHADER_STORAGE_BUFFER, brick_classes_binding);
+    counters_.bind_base(GL_SHADER_STORAGE_BUFFER, culling_binding);
+
+    set_classification_uniforms(classify_, camera, cut, cut_camera, keep_rear_faces);
+    gl::set_uniform(classify_, "brick_count", unsigned(brick_count_));
+    pyramid_.bind_for(classify_);
+    classify_.use();
+    const auto [brick_groups_x, brick_groups_y] = dispatch_grid((brick_count_ + 63) / 64);
+    glDispatchCompute(brick_groups_x, brick_groups_y, 1);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
     const gl::Program& p = cull_;
+    set_classification_uniforms(p, camera, cut, cut_camera, keep_rear_faces);
     gl::set_uniform(p, "grid_size", grid.grid_size());
     gl::set_uniform(p, "up_sign", float(grid.frame().up_sign));
     gl::set_uniform(p, "z_scale", float(grid.frame().z_scale));
-    gl::set_uniform(p, "view_projection", camera.view_projection());
-    gl::set_uniform(p, "eye_position", camera.eye);
-    gl::set_uniform(p, "cut_view", cut_camera.view);
-    gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
-    gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
-    gl::set_uniform(p, "has_cut", cut != nullptr);
-    gl::set_uniform(p, "keep_rear_faces", keep_rear_faces);
     gl::set_uniform(p, "brick_count", unsigned(brick_count_));
+    gl::set_uniform(p, "bricks_per_group", bricks_per_group);
     gl::set_uniform(p, "face_capacity", unsigned(face_capacity_));
-    gl::set_uniform(p, "cut_surface", 0);
-    if (cut) cut->surface.bind(0);
     pyramid_.bind_for(p);
     grid.bind_geometry();
     grid.bind_culling_inputs();
-    brick_cells_.bind_base(GL_SHADER_STORAGE_BUFFER, brick_cells_binding);
-    brick_begin_.bind_base(GL_SHADER_STORAGE_BUFFER, brick_begin_binding);
-    brick_boxes_.bind_base(GL_SHADER_STORAGE_BUFFER, brick_boxes_binding);
-    counters_.bind_base(GL_SHADER_STORAGE_BUFFER, culling_binding);
+    brick_cell_texels_.bind(brick_cell_texture_unit);
+    brick_begin_texels_.bind(brick_begin_texture_unit);
+    brick_class_texels_.bind(brick_class_texture_unit);
     faces_.bind_base(GL_SHADER_STORAGE_BUFFER, visible_faces_binding);
     p.use();
-    // One workgroup per brick, spread over Y beyond the 65535 groups GL guarantees along X.
-    const std::size_t groups_x = std::min<std::size_t>(std::max<std::size_t>(brick_count_, 1), 65535);
-    const std::size_t groups_y = (std::max<std::size_t>(brick_count_, 1) + groups_x - 1) / groups_x;
-    glDispatchCompute(GLuint(groups_x), GLuint(groups_y), 1);
+    const auto [groups_x, groups_y] = dispatch_grid((brick_count_ + bricks_per_group - 1) / bricks_per_group);
+    glDispatchCompute(groups_x, groups_y, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gl::set_uniform(finish_, "face_capacity", unsigned(face_capacity_));
     gl::set_uniform(finish_, "chunk_count", unsigned(chunks_));
@@ -87,7 +125,7 @@ CullingCounts VisibleFaces::read_counts() const {
 }
 
 std::size_t VisibleFaces::memory_bytes() const {
-    return brick_cells_.size_bytes() + brick_begin_.size_bytes() + brick_boxes_.size_bytes() + faces_.size_bytes() +
+    return brick_cells_.size_bytes() + brick_begin_.size_bytes() + brick_boxes_.size_bytes() + brick_classes_.size_bytes() + faces_.size_bytes() +
            counters_.size_bytes() + commands_.size_bytes() + pyramid_.memory_bytes();
 }
 

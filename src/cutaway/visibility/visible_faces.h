@@ -45,9 +45,11 @@ public:
     const CutDepthPyramid& pyramid() const { return pyramid_; }
 
 private:
-    gl::Program cull_, finish_;
+    gl::Program classify_, cull_, finish_;
     CutDepthPyramid pyramid_;
     gl::Buffer brick_cells_, brick_begin_, brick_boxes_;
+    gl::Buffer brick_classes_;  ///< class of each brick this frame (classify_bricks.comp)
+    gl::BufferTexture brick_cell_texels_, brick_begin_texels_, brick_class_texels_;  ///< cull_cells.comp's reads
     std::size_t brick_count_ = 0;
     std::size_t face_capacity_ = 0;
     gl::Buffer counters_, faces_;
