@@ -5,11 +5,17 @@
 // (single-pass wireframe, Baerentzen et al. 2006) without a geometry shader.
 // Variants: CULL_FRONT_INTERIOR (secondaries: an interior face seen from outside its cell always
 // coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries, shell),
-// CULL_FRONT (the rear shell: only faces seen from inside their cell); PLAIN_FRAME (no cut read).
+// CULL_FRONT (the rear shell: only faces seen from inside their cell); PLAIN_FRAME (no cut read);
+// STORED_CORNERS (the face's corners read from src/cutaway/exposed_surface.h's buffer, 4 per
+// face in drawing order) with CULL_HIDDEN_BACK (a face both of whose triangles face away, which
+// its own cell hides, is dropped: what visibility/cull_cells.comp keeps behind the cut).
 #include "common/grid.glsl"
 #include "common/face_frame.glsl"
 
 layout(std430, binding = 3) readonly buffer Faces { uint faces[]; };
+#ifdef STORED_CORNERS
+layout(binding = 14) uniform samplerBuffer stored_corner_texels;  // RGB32F, 4 per face
+#endif
 
 uniform mat4 view_projection;
 uniform vec3 eye_position;  // render space
@@ -34,7 +40,13 @@ void main() {
     uint cell = face_record_cell(record);
     uint side = face_record_side(record);
     uint face_class = face_record_class(record);
+#ifdef STORED_CORNERS
+    vec3 stored[4];
+    for (int k = 0; k < 4; ++k) stored[k] = texelFetch(stored_corner_texels, 4 * (gl_VertexID / 4) + k).xyz;
+    FaceFrame f = face_frame_of_quad(stored, cell, eye_position);
+#else
     FaceFrame f = face_frame(cell, side, eye_position);
+#endif
     vec3 q[4] = f.q;
     vec3 normal = f.normal;
     bool back_facing = f.back_facing;
@@ -44,6 +56,9 @@ void main() {
 #endif
 #ifdef CULL_BACK
     culled = culled || back_facing;
+#endif
+#ifdef CULL_HIDDEN_BACK
+    culled = culled || !f.any_triangle_front_facing;
 #endif
 #ifdef CULL_FRONT
     culled = culled || !back_facing;

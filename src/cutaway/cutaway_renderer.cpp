@@ -318,24 +318,25 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode dr
     timer_.clear();
     empty_vertex_array_.bind();
     const FrameSettings plain;  // its line width
-    if (draw == DrawMode::all_faces) buffers_.all_faces();  // built on first use, untimed
+    // Built on first use, untimed: every face of every cell, or the exposed faces with their corners.
+    if (draw == DrawMode::all_faces) buffers_.all_faces();
+    if (draw == DrawMode::visible && !exposed_) exposed_.emplace(shaders_, buffers_, layout_);
     const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "baseline", [&] {
-        if (draw == DrawMode::visible) visible_.select(buffers_, camera, nullptr, camera);
         scene_.clear_plain();
         scene_.plain_framebuffer.bind();
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         const auto submit = [&] {
-            if (draw == DrawMode::visible) visible_.draw(buffers_);
+            if (draw == DrawMode::visible) exposed_->draw(buffers_);
             else buffers_.draw_faces(buffers_.all_faces());
         };
-        secondary_.draw_plain(context, submit, plain);
+        secondary_.draw_plain(context, submit, plain, draw);
     });
     frozen_valid_ = false;
     last_drawn_ = {};
-    last_drawn_.secondary = draw == DrawMode::all_faces ? buffers_.all_faces().count : 0;
-    visible_used_ = draw == DrawMode::visible;
+    last_drawn_.secondary = draw == DrawMode::all_faces ? buffers_.all_faces().count : exposed_->face_count();
+    visible_used_ = false;
     return timer_.stages().back();
 }
 
@@ -348,7 +349,9 @@ FacesDrawn CutawayRenderer::faces_drawn() const {
     return drawn;
 }
 
-std::size_t CutawayRenderer::gpu_memory_bytes() const { return buffers_.memory_bytes() + visible_.memory_bytes() + selection_.memory_bytes(); }
+std::size_t CutawayRenderer::gpu_memory_bytes() const {
+    return buffers_.memory_bytes() + visible_.memory_bytes() + selection_.memory_bytes() + (exposed_ ? exposed_->memory_bytes() : 0);
+}
 
 void CutawayRenderer::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {
     const bool same_size = x1 - x0 == width_ && y1 - y0 == height_;

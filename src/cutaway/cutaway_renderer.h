@@ -14,6 +14,7 @@
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
+#include "cutaway/exposed_surface.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/grid_buffers.h"
@@ -191,6 +192,7 @@ private:
     const grid::CornerPointGrid& grid_;
     GridBuffers buffers_;
     VisibleFaces visible_;
+    std::optional<ExposedSurface> exposed_;  ///< the plain frame's faces, built on its first use
     GpuPrimarySelection selection_;
     PrimaryCentroid centroid_;
     bool secondary_list_built_ = false;

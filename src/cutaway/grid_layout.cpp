@@ -121,6 +121,10 @@ std::vector<std::uint32_t> outer_faces(const GridLayout& layout) {
     return faces_where(layout, [](grid::FaceClass c) { return c == grid::FaceClass::shell || c == grid::FaceClass::fault; });
 }
 
+std::vector<std::uint32_t> exposed_faces(const GridLayout& layout) {
+    return faces_where(layout, [](grid::FaceClass c) { return c != grid::FaceClass::interior; });
+}
+
 std::vector<std::uint32_t> all_faces(const GridLayout& layout) {
     return faces_where(layout, [](grid::FaceClass) { return true; });
 }

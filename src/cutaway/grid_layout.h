@@ -60,6 +60,10 @@ std::vector<std::uint32_t> shell_faces(const GridLayout& layout);
 /// is where the ray leaves the model (rear_shell_depth.h).
 std::vector<std::uint32_t> outer_faces(const GridLayout& layout);
 
+/// Every face that is not interior (shell, fault, next to an inactive cell): what a frame
+/// without a cut can show (exposed_surface.h).
+std::vector<std::uint32_t> exposed_faces(const GridLayout& layout);
+
 /// Every face of every active cell (the baseline frame).
 std::vector<std::uint32_t> all_faces(const GridLayout& layout);
 

@@ -7,8 +7,7 @@ namespace cutaway::pipeline {
 
 SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/secondary.frag"}}),
-      plain_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/plain.frag"}},
-                           {{"CULL_FRONT_INTERIOR", ""}, {"PLAIN_FRAME", ""}})),
+      plain_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/plain.frag"}}),
       borders_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"},
                               {GL_FRAGMENT_SHADER, "secondary/raycast_borders.frag"}})) {}
 
@@ -77,9 +76,13 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
 }
 
 void SecondaryPass::draw_plain(const FaceDrawContext& context, const std::function<void()>& submit,
-                               const FrameSettings& settings) {
-    prepare_face_program(plain_, context);
-    gl::set_uniform(plain_, "line_width", settings.line_width_px);
+                               const FrameSettings& settings, DrawMode draw) {
+    const gl::ShaderDefines defines = draw == DrawMode::visible
+        ? gl::ShaderDefines{{"PLAIN_FRAME", ""}, {"STORED_CORNERS", ""}, {"CULL_HIDDEN_BACK", ""}}
+        : gl::ShaderDefines{{"PLAIN_FRAME", ""}, {"CULL_FRONT_INTERIOR", ""}};
+    const gl::Program& p = plain_.get(defines);
+    prepare_face_program(p, context);
+    gl::set_uniform(p, "line_width", settings.line_width_px);
     submit();
 }
 

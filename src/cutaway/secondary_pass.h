@@ -27,15 +27,17 @@ public:
     void draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
               const CutClip& clip);
     /// The plain frame (no cut): `submit`'s faces shaded with their edges into the bound plain
-    /// scene framebuffer (SceneTargets::plain_framebuffer), with early depth testing.
-    void draw_plain(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings);
+    /// scene framebuffer (SceneTargets::plain_framebuffer), with early depth testing. `draw`:
+    /// visible = ExposedSurface's faces with stored corners, all_faces = every face's records.
+    void draw_plain(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
+                    DrawMode draw);
     /// Ray-cast borders over the visible secondary pixels of `scene` (after draw, ray-cast mode).
     void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
                                const CutClip& clip);
 
 private:
     gl::ProgramCache programs_;
-    gl::Program plain_;
+    gl::ProgramCache plain_;
     gl::Program borders_;
     gl::Framebuffer no_attachments_;  ///< sized by default width/height for the image-store pass
 };

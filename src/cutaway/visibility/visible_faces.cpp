@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <span>
-#include <utility>
 
+#include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
@@ -21,12 +21,6 @@ enum CullingTextureUnit : unsigned { brick_cell_texture_unit = 14, brick_begin_t
 /// groups took 36 ms), so a group per brick cost more than the selection; 16 leaves ~200 groups
 /// on sapphire, plenty for any number of threads.
 constexpr unsigned bricks_per_group = 16;
-
-/// Workgroups for `count` items, spread over Y beyond the 65535 groups GL guarantees along X.
-std::pair<GLuint, GLuint> dispatch_grid(std::size_t count) {
-    const std::size_t groups_x = std::min<std::size_t>(std::max<std::size_t>(count, 1), 65535);
-    return {GLuint(groups_x), GLuint((std::max<std::size_t>(count, 1) + groups_x - 1) / groups_x)};
-}
 
 /// The uniforms of visibility/classify.glsl.
 void set_classification_uniforms(const gl::Program& p, const Camera& camera, const CutTargets* cut,
@@ -81,7 +75,7 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
     gl::set_uniform(classify_, "brick_count", unsigned(brick_count_));
     pyramid_.bind_for(classify_);
     classify_.use();
-    const auto [brick_groups_x, brick_groups_y] = dispatch_grid((brick_count_ + 63) / 64);
+    const auto [brick_groups_x, brick_groups_y] = gl::dispatch_grid((brick_count_ + 63) / 64);
     glDispatchCompute(brick_groups_x, brick_groups_y, 1);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
@@ -101,7 +95,7 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
     brick_class_texels_.bind(brick_class_texture_unit);
     faces_.bind_base(GL_SHADER_STORAGE_BUFFER, visible_faces_binding);
     p.use();
-    const auto [groups_x, groups_y] = dispatch_grid((brick_count_ + bricks_per_group - 1) / bricks_per_group);
+    const auto [groups_x, groups_y] = gl::dispatch_grid((brick_count_ + bricks_per_group - 1) / bricks_per_group);
     glDispatchCompute(groups_x, groups_y, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gl::set_uniform(finish_, "face_capacity", unsigned(face_capacity_));

@@ -1,0 +1,19 @@
+#pragma once
+// Workgroup counts for a compute dispatch of any size.
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+
+#include "gl/gl_objects.h"
+
+namespace cutaway::gl {
+
+/// `groups` workgroups as (X, Y) counts, spread over Y beyond the 65535 groups GL guarantees
+/// along X; the shader computes its group index as gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x
+/// and skips indices past the end.
+inline std::pair<GLuint, GLuint> dispatch_grid(std::size_t groups) {
+    const std::size_t groups_x = std::min<std::size_t>(std::max<std::size_t>(groups, 1), 65535);
+    return {GLuint(groups_x), GLuint((std::max<std::size_t>(groups, 1) + groups_x - 1) / groups_x)};
+}
+
+}  // namespace cutaway::gl
