@@ -260,7 +260,7 @@ def main():
     if largest:
         peaks = [r["peak_rss_bytes"] for r in largest["per_rank"]]
         lines += [f"### Largest model across 4 ranks: {largest['model']} (strategy {largest['strategy']})", "",
-                  f"{largest['active_cells']:,} active cells, {largest['max_rank_active_cells']:,} on the largest rank; frame "
+                  f"{largest['active_cells']:,} active cells, {largest['max_rank_active_cells']:,.0f} on the largest rank; frame "
                   f"{largest['stages_ms']['total']:.0f} ms; peak resident memory per rank {mb(min(peaks))}-{mb(max(peaks))} MB "
                   f"({mb(sum(peaks))} MB in all, on a {os.sysconf('SC_PAGE_SIZE') * os.sysconf('SC_PHYS_PAGES') / 2**30:.0f} GB "
                   f"machine); resident {mb(largest['max_rank_rss_after_frames'])} MB on the largest rank after the frame; "
