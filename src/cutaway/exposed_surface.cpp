@@ -1,6 +1,8 @@
 #include "cutaway/exposed_surface.h"
 
+#include <algorithm>
 #include <stdexcept>
+#include <string>
 
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
@@ -15,8 +17,11 @@ constexpr std::size_t bytes_per_face = 12 * sizeof(float);
 
 FaceBuffer checked_faces(const GridLayout& layout) {
     std::vector<std::uint32_t> records = exposed_faces(layout);
-    // gl_VertexID / 4 indexes one bound range, and 4 corners a face one buffer texture.
-    constexpr std::size_t max_faces = std::size_t(1) << 25;
+    // gl_VertexID / 4 indexes one bound range (GridBuffers::draw_faces: 2^27 faces), and the 4
+    // corners of every face are texels of one buffer texture.
+    GLint max_texels = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+    const std::size_t max_faces = std::min<std::size_t>(std::size_t(1) << 27, std::size_t(max_texels) / 4);
     if (records.size() > max_faces)
         throw std::invalid_argument("the model has " + std::to_string(records.size()) +
                                     " exposed faces; the plain frame draws at most " + std::to_string(max_faces));
