@@ -10,6 +10,7 @@ ZcornStore::ZcornStore(GridDims dims)
     : dims_(dims), plane_size_(std::size_t(4) * std::size_t(dims.nx) * std::size_t(dims.ny)) {
     if (plane_size_ == 0) plane_size_ = 1;
     depths_.resize(plane_size_ * std::size_t(dims.nz + 1));  // zero, untouched
+    slot_written_.assign(std::size_t(dims.nz + 1), false);
 }
 
 std::size_t ZcornStore::compact_bytes(GridDims dims) {
@@ -35,6 +36,7 @@ void ZcornStore::push(double depth) {
     const std::size_t offset = pushed_ % plane_size_;
     if (push_expands(depth)) expand_to_full();
     depths_[slot_of(plane) * plane_size_ + offset] = depth;
+    if (compact_ && depth != 0.0) slot_written_[slot_of(plane)] = true;
     ++pushed_;
 }
 
@@ -47,7 +49,7 @@ void ZcornStore::push_repeated(double depth, std::size_t count, const std::funct
         double* slot = depths_.data() + slot_of(plane) * plane_size_ + pushed_ % plane_size_;
         if (compact_ && plane % 2 == 0 && plane > 0) {
             // A top plane stays compact while it repeats the bottom above (already in the slot).
-            const auto same = std::size_t(std::find_if(slot, slot + run, [depth](double d) { return d != depth; }) - slot);
+            const std::size_t same = same_run(slot, slot_of(plane), run, depth);
             pushed_ += same;
             count -= same;
             if (same < run) {
@@ -58,9 +60,15 @@ void ZcornStore::push_repeated(double depth, std::size_t count, const std::funct
         }
         // The slot is written here for the first time and starts at +0: +0 needs no write.
         if (depth != 0.0 || std::signbit(depth)) std::fill(slot, slot + run, depth);
+        if (compact_ && depth != 0.0) slot_written_[slot_of(plane)] = true;
         pushed_ += run;
         count -= run;
     }
+}
+
+std::size_t ZcornStore::same_run(const double* slot, std::size_t slot_index, std::size_t run, double depth) const {
+    if (!slot_written_[slot_index]) return depth == 0.0 ? run : 0;  // +0 throughout (-0 compares equal, as below)
+    return std::size_t(std::find_if(slot, slot + run, [depth](double d) { return d != depth; }) - slot);
 }
 
 void ZcornStore::expand_to_full() {

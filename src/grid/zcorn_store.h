@@ -63,6 +63,10 @@ private:
         return compact_ && plane % 2 == 0 && plane > 0 && depths_[slot_of(plane) * plane_size_ + pushed_ % plane_size_] != depth;
     }
     void expand_to_full();
+    /// Of `run` depths from `slot` on, how many equal `depth` before the first that does not. A slot
+    /// nothing non-zero was written to holds +0 throughout and is not read: reading untouched
+    /// memory maps a page on kernels without a shared zero page (issue 18's reproducer then held 1.5 GB).
+    std::size_t same_run(const double* slot, std::size_t slot_index, std::size_t run, double depth) const;
 
     GridDims dims_{};
     std::size_t plane_size_ = 1;  // 2NX * 2NY
@@ -70,6 +74,7 @@ private:
     /// so they cost no resident memory until another value lands in them.
     using Depths = std::vector<double, ZeroedAllocator<double>>;
     Depths depths_;
+    std::vector<bool> slot_written_;  ///< per compact slot: a non-zero depth was written to it
     std::size_t pushed_ = 0;
     bool compact_ = true;
 };
