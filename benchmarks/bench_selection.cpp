@@ -45,7 +45,8 @@ void bm_select(benchmark::State& state, const std::vector<std::string>& presets,
     const std::string& preset = presets.at(std::size_t(state.range(1)));
     const app::LoadedModel model = app::load_model({"preset:" + preset}, std::size_t(16) << 30);
     const grid::CornerPointGrid& grid = model.grid;
-    const app::PropertyChoice property = app::choose_property(grid, app::RenderOptions{});
+    const app::RenderOptions defaults;  // PORO
+    const app::PropertyChoice property = app::choose_property(grid, defaults);
     pipeline::CutawayRenderer renderer(shaders, grid, 0.0, 64, 64);
     renderer.set_colouring(property.values(), property.colour_bar_label());
     pipeline::GridLayout layout;  // the CPU path's input

@@ -10,6 +10,9 @@ overrides the figure size (grids of panels stay at least 1000 px wide per panel)
 
 CAMERA = ("--camera", 35, 30, 0)
 SECOND_VIEW = ("--camera", 215, 45, 0)  # the far side, higher: the paper's second view of each model
+# Fig. 14's two-property row: primaries in the high-porosity channels (a spatially coherent
+# cluster in the generated models, as fig. 15's first window), shown among cells coloured by PERMX.
+TWO_PROPERTIES_PORO = (0.30, 0.40)
 
 
 def figure_specs(model, steps):
@@ -41,11 +44,19 @@ def figure_specs(model, steps):
 
 
 def models_figure(presets, size):
-    """Fig. 14: the four models, each coloured by a different property, from two views each."""
+    """Fig. 14: the four models, each coloured by a different property, from two views each; a last
+    row shows two properties in one frame (the paper's ZMap row; shared/data has no ZMap model, so
+    the first preset stands in): cells coloured by PERMX, primaries picked by PORO's high-porosity
+    window (`render --select-by PORO`)."""
     properties = ("PORO", "PERMX", "NTG", "SWAT")  # SWAT: step 0 (sapphire has no FACIES)
     rows = [[(f"{p} ({prop}), azimuth {view[1]}", ["--property", prop, *view], f"preset:{p}") for view in (CAMERA, SECOND_VIEW)]
             for p, prop in zip(presets, properties)]
-    return {"name": "fig14_models", "title": "Fig. 14: the four synthetic models with properties, two views each",
+    lo, hi = TWO_PROPERTIES_PORO
+    rows.append([(f"{presets[0]}: PERMX colours, primaries PORO {lo:.2f}-{hi:.2f}, azimuth {view[1]}",
+                  ["--property", "PERMX", "--select-by", "PORO", "--range", lo, hi, *view], f"preset:{presets[0]}")
+                 for view in (CAMERA, SECOND_VIEW)])
+    return {"name": "fig14_models",
+            "title": "Fig. 14: the four synthetic models with properties, two views each; last row: two properties",
             "rows": rows, "size": size}
 
 

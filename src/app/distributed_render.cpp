@@ -49,6 +49,8 @@ void check_distributed_options(const RenderOptions& options) {
     if (options.exact_check)
         throw std::invalid_argument("--exact-check: not supported under mpirun (it recomputes the cut on one renderer)");
     if (options.baseline) throw std::invalid_argument("--baseline: not supported under mpirun");
+    if (!options.select_by.empty())
+        throw std::invalid_argument("--select-by: not supported under mpirun (the ranks select by the colouring property on the GPU)");
 }
 
 /// Exit code of `main` for an exception (app/main.cpp's mapping).

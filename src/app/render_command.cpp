@@ -56,11 +56,12 @@ int run_render(const RenderOptions& options) {
     for (const std::string& model : options.model) files.emplace_back("the model", model);
     files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
     refuse_shared_outputs(files);
-    LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), options.property);
+    LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options));
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, options);
     const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
+    const std::optional<SecondPropertySelection> selected_by = select_by_second_property(model.grid, options);
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
     if (property.external) property.owned = *std::exchange(property.external, nullptr);
     model.grid.clear_properties();
@@ -72,17 +73,21 @@ int run_render(const RenderOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height);
     check_view(renderer.frame(), options);
     renderer.set_colouring(property.values(), property.colour_bar_label());
-    renderer.select_range(property.primary_range, box);
+    if (selected_by)
+        renderer.set_primaries(selected_by->flags);
+    else
+        renderer.select_range(property.primary_range, box);
     // The corner depths live on the GPU now and nothing reads them on the CPU again.
     model.grid.release_corner_depths();
     glFinish();
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
     memory["resident_after_setup"] = run_context::proc_status_bytes("VmRSS");
     const std::size_t primary_count = renderer.primary_cell_count();
+    const std::string selected_name = selected_by ? selected_by->label : property.label;
+    const grid::PrimaryRange selected_range = selected_by ? selected_by->range : property.primary_range;
     if (primary_count == 0)
-        std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
-                  << property.primary_range.min << ", " << property.primary_range.max
-                  << "]; rendering the context only\n";
+        std::cerr << "cutaway render: no cell of " << selected_name << " lies in the primary range ["
+                  << selected_range.min << ", " << selected_range.max << "]; rendering the context only\n";
     const pipeline::FrameSettings settings = options.frame_settings();
     const float bar_width = renderer.colour_bar_reserved_width(settings);
     const pipeline::Camera camera =
@@ -151,8 +156,8 @@ int run_render(const RenderOptions& options) {
     stats["model"] = model.description;
     stats["model_load_s"] = model.load_seconds;
     stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set
-    stats["property"] = {{"name", property.label}, {"primary_range", {property.primary_range.min, property.primary_range.max}},
-                         {"colour_range", {property.colour_range.min, property.colour_range.max}}};
+    stats["property"] = {{"name", property.label}, {"colour_range", {property.colour_range.min, property.colour_range.max}},
+                         {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
     stats["configuration"] = options.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;

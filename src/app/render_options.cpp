@@ -6,6 +6,7 @@
 
 #include "annotation/property_units.h"
 #include "app/option_checks.h"
+#include "generators/generator.h"
 
 namespace cutaway::app {
 namespace {
@@ -81,7 +82,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
     return {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
-            {"step", step}, {"ijk_box", ijk_box}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"seeds", pipeline::to_string(s.seeds)},
+            {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
@@ -180,6 +181,10 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
                  "write the final frame's Eclipse cell index + 1 per pixel as an RGBA8 PNG "
                  "(R + 256 G + 65536 B + 16777216 A; 0 = no cell)")
         ->check(writable_output());
+    c.add_option("--select-by", o.select_by,
+                 "choose primaries by this property (its --range or --primary-fraction) while --property colours "
+                 "the cells: two properties in one frame")
+        ->check(utf8_text());
     c.add_flag("--baseline", o.baseline, "also time a plain shaded frame of the whole model (baseline_ms)");
     c.add_flag("!--no-metrics", o.metrics, "skip the image metrics (3 extra untimed frames)");
     c.add_flag("--exact-check", o.exact_check,
@@ -248,6 +253,27 @@ std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& gr
     else
         property.primary_range = grid::range_for_fraction(grid, property.values(), property.name, primary_fraction(options));
     return box;
+}
+
+std::optional<SecondPropertySelection> select_by_second_property(const grid::CornerPointGrid& grid,
+                                                                 const RenderOptions& options) {
+    if (options.select_by.empty()) return std::nullopt;
+    RenderOptions by = options;
+    by.property = options.select_by;
+    if (grid.step_count(options.select_by) == 0) by.step = -1;  // --step belongs to a dynamic colouring property
+    PropertyChoice chooser;
+    try {
+        chooser = choose_property(grid, by);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("--select-by: ") + e.what());
+    }
+    const std::optional<grid::IjkBox> box = choose_primary_range(grid, chooser, by);
+    return SecondPropertySelection{chooser.label, chooser.primary_range,
+                                   grid::select_primaries(grid, chooser.values(), chooser.name, chooser.primary_range, box)};
+}
+
+std::optional<std::string> property_to_load(const RenderOptions& options) {
+    return options.select_by == generators::generated_dynamic_property ? options.select_by : options.property;
 }
 
 double primary_fraction(const RenderOptions& options) { return options.primary_fraction > 0 ? options.primary_fraction : 0.01; }

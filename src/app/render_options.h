@@ -29,6 +29,7 @@ struct RenderOptions {
     double primary_fraction = 0;      ///< 0: --range or the default 1%
     int step = -1;                    ///< time step of a dynamic property
     std::vector<int> ijk_box;         ///< I0 J0 K0 I1 J1 K1
+    std::string select_by;            ///< render only: primaries by this property, colours by `property`
     pipeline::FrameSettings settings;
     std::string border = "raycast";
     std::string kernel = "full";
@@ -105,6 +106,20 @@ std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& gr
                                                  const RenderOptions& options);
 /// The checks of --range and --primary-fraction, and the --ijk-box (checked against `dims`).
 std::optional<grid::IjkBox> selection_box(const RenderOptions& options, const grid::GridDims& dims);
+/// Primaries chosen by a second property (`render --select-by NAME`): NAME's --range or
+/// --primary-fraction (and --ijk-box) pick the cells while --property colours them.
+struct SecondPropertySelection {
+    std::string label;          ///< NAME, with its step for a dynamic one
+    grid::PrimaryRange range;   ///< of NAME's values
+    std::vector<std::uint8_t> flags;  ///< one per cell (grid::select_primaries)
+};
+/// std::nullopt without --select-by (the renderer then selects by the colouring values on the
+/// GPU). Throws std::invalid_argument for an unknown property, naming --select-by and the known ones.
+std::optional<SecondPropertySelection> select_by_second_property(const grid::CornerPointGrid& grid,
+                                                                 const RenderOptions& options);
+/// The property a preset must generate for `options` (load_model's only_property): --property,
+/// unless --select-by names the dynamic one.
+std::optional<std::string> property_to_load(const RenderOptions& options);
 /// --primary-fraction, or its default 0.01.
 double primary_fraction(const RenderOptions& options);
 

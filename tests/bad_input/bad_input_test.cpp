@@ -9,12 +9,15 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "cutaway/cell_id_image.h"
 #include "cutaway_process.h"
+#include "gl/image.h"
 
 namespace {
 
@@ -463,6 +466,27 @@ TEST_F(BadInputGl, IntegerPropertySelectsPrimaries) {
     const ProcessResult r = render(grid, {"--no-metrics", "--property", "FACIES", "--range", "2", "2", "--out", out("x.png")});
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("(2 primary cells"), std::string::npos) << r.out;
+}
+
+TEST_F(BadInputGl, SecondPropertySelectsWhileTheFirstColours) {
+    // FACIES 2 are cells 2 and 4 (Eclipse order); by PORO, the colouring property, [2, 2] holds no cell.
+    const fs::path grid = file("tiny.grdecl", kTinyGrid);
+    const ProcessResult r = render(grid, {"--no-metrics", "--property", "PORO", "--select-by", "FACIES", "--range", "2", "2",
+                                          "--only", "primaries", "--out", out("x.png"), "--stats", out("x.json"),
+                                          "--cell-ids", out("ids.png")});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("(2 primary cells"), std::string::npos) << r.out;
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(out("x.json")));
+    EXPECT_EQ(stats["property"]["name"], "PORO");
+    EXPECT_EQ(stats["property"]["selected_by"], "FACIES");
+    EXPECT_EQ(stats["property"]["colour_range"], nlohmann::json::array({0.1f, 0.4f}));
+    // The primaries-only frame shows exactly the FACIES 2 cells (id = Eclipse index + 1).
+    std::set<std::uint32_t> shown;
+    for (const std::uint32_t id : cutaway::pipeline::decode_cell_ids(cutaway::gl::read_png(out("ids.png"))))
+        if (id != 0) shown.insert(id);
+    EXPECT_EQ(shown, (std::set<std::uint32_t>{2, 4}));
+    expect_refused(render(grid, {"--no-metrics", "--select-by", "SATURATION", "--out", out("y.png")}),
+                   {"--select-by", "SATURATION", "not in the model"});
 }
 
 TEST_F(BadInputGl, MetricWithoutPixelsIsAbsentWithItsReason) {

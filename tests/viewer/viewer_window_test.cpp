@@ -153,9 +153,9 @@ TEST_F(ViewerWindowTest, PanelAndTimingOverlayLeaveTheColourBarClear) {
     // Every pixel the bar may draw (frame, marks, title and tick labels), from the layout the
     // renderer draws it with, for the viewer's default colouring (petra's PORO).
     const app::LoadedModel model = app::load_model({"preset:petra"}, std::size_t(1) << 32, "PORO");
+    const app::RenderOptions defaults;  // PORO
     const annotation::PixelRect bar =
-        annotation::layout_colour_bar(app::choose_property(model.grid, app::RenderOptions{}).colour_bar_label(), width, height)
-            .bounds();
+        annotation::layout_colour_bar(app::choose_property(model.grid, defaults).colour_bar_label(), width, height).bounds();
     std::size_t covered = 0, changed_elsewhere = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
