@@ -15,11 +15,14 @@
 //     footprint: visible primary pixels of each timed frame, median; read after the frame's fence,
 //     outside its time), readback_bytes (the cut stage's read-back per frame, the largest seen).
 //   BM_baseline/preset: the plain shaded frame over the same path (not with --baseline=0).
-//   BM_cpu_reference/aperture/strategy/fraction_bp/preset: for each chosen strategy computed on the GPU
-//     that has a CPU reference (the cone-field transforms; --cpu_references narrows them), the CPU path
-//     it replaces: seed pass, seed
-//     read-back and the CPU transform (cone_field/), fenced wall time per frame over the same path
-//     (compare with BM_cutaway's cut_surface counter; the CPU path's upload is not included).
+//   BM_cpu_path/aperture/strategy/fraction_bp/preset: for each chosen strategy computed on the GPU
+//     that has a CPU reference (the cone-field transforms; --cpu_references narrows them), against
+//     the CPU path it replaced, on the same inputs, interleaved per pose: seeds_ms (the GPU seed
+//     pass alone), gpu_ms (the GPU strategy: seed pass + transform into the cut depth), cpu_path_ms
+//     (the same seed pass, seed read-back, the CPU transform of cone_field/, the cut uploaded into
+//     the cut depth), each fenced, medians; transform_speedup = (cpu_path - seeds) / (gpu - seeds),
+//     stage_speedup = cpu_path / gpu. The iteration time is the CPU path's. Neither includes the
+//     cut's normal/position resolve, the same for both (BM_cutaway's cut_surface includes it).
 // Each benchmark checks its own output: at least one primary cell and visible primary pixels.
 #include <benchmark/benchmark.h>
 
@@ -37,7 +40,10 @@
 #include "app/run_context.h"
 #include "bench_cutaway_options.h"
 #include "camera_path.h"
+#include "cutaway/cut_surface/cone_field_strategy.h"
+#include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
+#include "cutaway/frame_targets.h"
 #include "cutaway/cutaway_renderer.h"
 #include "gl/gl_context.h"
 #include "gl/shader_library.h"
@@ -61,7 +67,8 @@ public:
         if (preset != preset_) {
             scene_.renderer.reset();  // holds a reference to the old grid
             scene_.model = std::make_unique<app::LoadedModel>(app::load_model({"preset:" + preset}, memory_limit));
-            scene_.property = app::choose_property(scene_.model->grid, app::RenderOptions{});
+            const app::RenderOptions defaults;  // PORO
+            scene_.property = app::choose_property(scene_.model->grid, defaults);
             scene_.renderer = std::make_unique<pipeline::CutawayRenderer>(shaders_, scene_.model->grid, 0.0, width_, height_);
             const app::PropertyChoice& p = scene_.property;
             scene_.renderer->set_colouring(p.values(), p.colour_bar_label());
@@ -126,6 +133,7 @@ std::vector<bench::PathPose> poses_for(const bench::CutawayBenchOptions& options
 }
 
 struct BenchSetup {
+    const gl::ShaderLibrary& shaders;
     const bench::CutawayBenchOptions& options;
     const std::vector<std::string>& strategies;
     SceneCache& cache;
@@ -208,7 +216,17 @@ void bm_baseline(benchmark::State& state, const BenchSetup& setup) {
     state.SetLabel(setup.options.presets.at(std::size_t(state.range(0))));
 }
 
-void bm_cpu_reference(benchmark::State& state, const BenchSetup& setup) {
+/// Fenced wall time of `work`, milliseconds.
+template <typename Work>
+double fenced_ms(Work&& work) {
+    glFinish();
+    const auto started = std::chrono::steady_clock::now();
+    work();
+    glFinish();
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+}
+
+void bm_cpu_path(benchmark::State& state, const BenchSetup& setup) {
     const bench::CutawayBenchOptions& options = setup.options;
     Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(3))));
     if (select_fraction(scene, double(state.range(2)) / 10000.0) == 0) {
@@ -216,29 +234,39 @@ void bm_cpu_reference(benchmark::State& state, const BenchSetup& setup) {
         return;
     }
     const pipeline::CutSurfaceEntry entry = pipeline::find_cut_surface(setup.strategies.at(std::size_t(state.range(1))));
+    const std::unique_ptr<pipeline::CutSurfaceStrategy> gpu = entry.make(setup.shaders);
+    const std::unique_ptr<pipeline::CutSurfaceStrategy> cpu =
+        pipeline::cone_field_entry(entry.name + " (CPU path)", "the path the GPU transform replaced", entry.cpu_reference)
+            .make(setup.shaders);
+    pipeline::CutSeedPass seed_pass(setup.shaders);
+    const pipeline::CutTargets targets(options.width, options.height);
+    const gl::VertexArray no_vertices;  // the passes draw without vertex buffers
     pipeline::FrameSettings settings;
     settings.strategy = entry.name;
     const std::vector<bench::PathPose> path = poses_for(options, -1, state.range(0));
     const std::vector<pipeline::Camera> cameras = path_cameras(*scene.renderer, path);
-    auto frame_ms = [&](std::size_t k) {
+    // One sample per pose: the seed pass alone, the GPU strategy, the CPU path, interleaved.
+    auto sample = [&](std::size_t k, std::map<std::string, std::vector<double>>& times) {
         settings.aperture_h_deg = settings.aperture_v_deg = path[k].aperture_deg;
-        glFinish();
-        const auto started = std::chrono::steady_clock::now();
-        const cone_field::FloatImage cut = scene.renderer->cpu_cone_cut(settings, cameras[k], entry.cpu_reference);
-        glFinish();
-        benchmark::DoNotOptimize(cut.pixels.data());
-        return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+        const pipeline::CutSurfaceInputs inputs = scene.renderer->cut_inputs(settings, cameras[k]);
+        no_vertices.bind();
+        times["seeds_ms"].push_back(fenced_ms([&] { seed_pass.render_on_gpu(inputs); }));
+        times["gpu_ms"].push_back(fenced_ms([&] { gpu->render(inputs, targets); }));
+        times["cpu_path_ms"].push_back(fenced_ms([&] { cpu->render(inputs, targets); }));
+        return times["cpu_path_ms"].back();
     };
+    std::map<std::string, std::vector<double>> times;
     for (int w = 0; w < options.warmup; ++w)
-        for (std::size_t k = 0; k < path.size(); ++k) frame_ms(k);
-    std::vector<double> times;
+        for (std::size_t k = 0; k < path.size(); ++k) sample(k, times);
+    times.clear();
     std::size_t k = 0;
-    for (auto _ : state) {
-        times.push_back(frame_ms(k++ % path.size()));
-        state.SetIterationTime(times.back() / 1000.0);
-    }
-    state.counters["cpu_reference_ms"] = median(times);
-    state.SetLabel(options.presets.at(std::size_t(state.range(3))) + " " + entry.name + " (CPU reference)");
+    for (auto _ : state) state.SetIterationTime(sample(k++ % path.size(), times) / 1000.0);
+    for (const auto& [name, values] : times) state.counters[name] = median(values);
+    const double seeds = median(times["seeds_ms"]), gpu_ms = median(times["gpu_ms"]), cpu_ms = median(times["cpu_path_ms"]);
+    state.counters["stage_speedup"] = cpu_ms / gpu_ms;
+    state.counters["transform_speedup"] = (cpu_ms - seeds) / std::max(gpu_ms - seeds, 1e-3);
+    state.counters["readback_bytes_cpu_path"] = double(cpu->readback_bytes());
+    state.SetLabel(options.presets.at(std::size_t(state.range(3))) + " " + entry.name + " GPU vs its CPU path");
 }
 
 std::vector<std::string> chosen_strategies(const std::vector<std::string>& requested) {
@@ -284,7 +312,7 @@ void register_benchmarks(const BenchSetup& setup) {
             with_reference.push_back(std::int64_t(i));
     }
     if (!with_reference.empty())
-        benchmark::RegisterBenchmark("BM_cpu_reference", [&setup](benchmark::State& s) { bm_cpu_reference(s, setup); })
+        benchmark::RegisterBenchmark("BM_cpu_path", [&setup](benchmark::State& s) { bm_cpu_path(s, setup); })
             ->ArgNames({"aperture", "strategy", "fraction_bp", "preset"})
             ->ArgsProduct({apertures, with_reference, fractions_bp, indices(o.presets)})
             ->Iterations(std::int64_t(o.repeat) * o.poses)->UseManualTime()->Unit(benchmark::kMillisecond);
@@ -338,7 +366,7 @@ int main(int argc, char** argv) {
         const std::unique_ptr<gl::GlContext> context = gl::create_context(gl::ContextOptions{});
         const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
         SceneCache cache(shaders, options.width, options.height);
-        const BenchSetup setup{options, strategies, cache};
+        const BenchSetup setup{shaders, options, strategies, cache};
         add_context(options, strategies, *context);
         register_benchmarks(setup);
         benchmark::Initialize(&argc, argv);

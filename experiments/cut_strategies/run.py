@@ -15,8 +15,10 @@ Protocol (SPEC.md section 2, issue 16):
   follow stage 1 and do not change its time), no plain-frame baseline, ray-cast borders, visible draw; the 2-pose camera path (azimuth/elevation 0/25 and 180/45 degrees), one
   untimed pass then one timed frame per pose: counters are medians of 2 frames. One frame per
   pose keeps the slowest configuration bounded (per-cell `frustum` at 20% of sapphire: about 2 min
-  a frame on llvmpipe). BM_cpu_reference times the CPU path jfa and jfa2 replaced (seed pass,
-  read-back, CPU transform) over the same frames. The primaries' screen footprint is the
+  a frame on llvmpipe). BM_cpu_path times jfa and jfa2 against the CPU path they replaced on the
+  same frames' inputs, interleaved: the GPU seed pass alone, the GPU strategy (seed pass +
+  transform), the CPU path (seed pass, read-back, CPU transform, upload); the transform speedup
+  leaves out the seed pass both share. The primaries' screen footprint is the
   benchmark's `primary_pixels` (visible primary pixels of the timed frames at 1920x1080, median),
   taken from the `frustum` row (its exposure is 1.0: every primary pixel stays visible).
 - Quality: one `cutaway render --exact-check` per configuration at QUALITY_SIZE (the exact cone
@@ -75,9 +77,10 @@ def time_sweep(exp, config):
     strategies = document["context"]["strategies"].split(",")
     cpu = {}
     for bench in document["benchmarks"]:
-        if bench["name"].startswith("BM_cpu_reference/"):
+        if bench["name"].startswith("BM_cpu_path/"):
             a = bench_args(bench["name"])
-            cpu[(presets[a["preset"]], a["fraction_bp"] / 10000, strategies[a["strategy"]])] = bench["cpu_reference_ms"]
+            cpu[(presets[a["preset"]], a["fraction_bp"] / 10000, strategies[a["strategy"]])] = {
+                k: bench[k] for k in ("seeds_ms", "gpu_ms", "cpu_path_ms", "transform_speedup", "stage_speedup")}
     return document, timed, cpu, strategies
 
 
@@ -149,12 +152,8 @@ def crossover(rows):
 def targets(rows, cpu, table):
     """Issue 16's three targets, measured in this run."""
     by_key = {(r["preset"], r["primary_fraction"], r["strategy"]): r for r in rows}
-    jfa = []
-    for (preset, fraction, name), cpu_ms in sorted(cpu.items()):
-        gpu = by_key.get((preset, fraction, name))
-        if gpu:
-            jfa.append({"preset": preset, "primary_fraction": fraction, "strategy": name, "cpu_path_ms": cpu_ms,
-                        "gpu_cut_surface_ms": gpu["cut_surface_ms"], "cpu_over_gpu": cpu_ms / gpu["cut_surface_ms"]})
+    jfa = [{"preset": preset, "primary_fraction": fraction, "strategy": name, **times}
+           for (preset, fraction, name), times in sorted(cpu.items())]
     sapphire = []
     for t in table:
         if t["preset"] == "sapphire" and t["primary_cells"] >= 1000:
@@ -166,12 +165,15 @@ def targets(rows, cpu, table):
                 for t in table if t["primary_fraction"] == 0.2 and "frustum-clusters" in t]
     summary = {}
     for name in CPU_REFERENCES:
-        ratios = [j["cpu_over_gpu"] for j in jfa if j["strategy"] == name]
-        if ratios:
-            summary[name] = {"median": statistics.median(ratios), "min": min(ratios), "max": max(ratios)}
-    return {"gpu_jfa_vs_cpu_path": {"target": "GPU JFA >= 3x faster than the CPU JFA it replaces (1080p)",
+        for key in ("transform_speedup", "stage_speedup"):
+            ratios = [j[key] for j in jfa if j["strategy"] == name]
+            if ratios:
+                summary.setdefault(name, {})[key] = {"median": statistics.median(ratios), "min": min(ratios), "max": max(ratios),
+                                                     "configurations": len(ratios)}
+    return {"gpu_jfa_vs_cpu_path": {"target": "GPU JFA >= 3x faster than the CPU JFA it replaces (1080p): the transform, "
+                                              "without the GPU seed pass both paths share",
                                     "rows": jfa, "cpu_over_gpu": summary,
-                                    "met": bool(summary.get("jfa")) and summary["jfa"]["min"] >= 3},
+                                    "met": bool(summary.get("jfa")) and summary["jfa"]["transform_speedup"]["min"] >= 3},
             "near_exact_beats_frustum_on_sapphire": {
                 "target": "best exact-or-near-exact GPU strategy faster than frustum from 1,000 primaries on sapphire",
                 "rows": sapphire, "met": bool(sapphire) and all(s["faster"] for s in sapphire)},
@@ -227,11 +229,13 @@ def write_readme(path, result):
     lines += ["", "## Targets (issue 16)", ""]
     j = tg["gpu_jfa_vs_cpu_path"]
     for name, s in j["cpu_over_gpu"].items():
-        lines.append(f"- GPU `{name}` stage 1 against the CPU path it replaced (BM_cpu_reference: seed pass, read-back, "
-                     f"CPU transform; without the upload and resolve the GPU stage includes): CPU/GPU median "
-                     f"{s['median']:.2f}x, range {s['min']:.2f}-{s['max']:.2f}x over {len([r for r in j['rows'] if r['strategy'] == name])} "
-                     f"configurations.")
-    lines.append(f"- Target GPU JFA >= 3x the CPU JFA: **{'met' if j['met'] else 'missed'}**.")
+        t, w = s["transform_speedup"], s["stage_speedup"]
+        lines.append(f"- GPU `{name}` against the CPU path it replaced (BM_cpu_path, same inputs, interleaved): the "
+                     f"transform (CPU: read-back, CPU loop, upload; GPU: the compute passes and the write into the cut "
+                     f"depth) CPU/GPU median {t['median']:.2f}x, range {t['min']:.2f}-{t['max']:.2f}x; with the shared "
+                     f"GPU seed pass on both sides {w['median']:.2f}x ({w['min']:.2f}-{w['max']:.2f}x), over "
+                     f"{t['configurations']} configurations.")
+    lines.append(f"- Target GPU JFA >= 3x the CPU JFA (the transform, every configuration): **{'met' if j['met'] else 'missed'}**.")
     s = tg["near_exact_beats_frustum_on_sapphire"]
     lines.append("- Best near-exact GPU strategy faster than `frustum` from 1,000 primaries on sapphire: **"
                  + (("met" if s["met"] else "missed") if s["rows"] else "not measured in this run") + "**" + "".join(
@@ -339,7 +343,7 @@ def main():
                            "cut_error": "cut_vs_exact of cutaway render --exact-check at quality_size",
                            "alternatives_at_matched_accuracy": list(ALTERNATIVES)},
               "context": context, "rows": rows,
-              "cpu_reference_ms": [{"preset": p, "primary_fraction": f, "strategy": s, "ms": ms} for (p, f, s), ms in cpu.items()],
+              "cpu_path": [{"preset": p, "primary_fraction": f, "strategy": s, **times} for (p, f, s), times in cpu.items()],
               "crossover": {"table": table, "thresholds": thresholds}}
     result["targets"] = targets(rows, cpu, table)
     cx.write_json(exp.path("results.json"), result)
