@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# cutaway's benchmarks on a lent NVIDIA machine (the workplace's `device` tool, EGL device platform).
+# Runs there, in the repository root, with these carried from the build machine (prepared by
+# scripts/device-prepare.sh): .device/bin (cutaway, bench_cutaway built here), .device/lib (their
+# shared libraries except glibc and libstdc++), .gl (the glvnd EGL loader packages).
+#   scripts/device-benchmarks.sh GIT_REVISION SECONDS
+# Writes into $OUT (at most 8 files come back): device.log, context.txt (GPU, driver, CPU),
+# render_sapphire.json + .png (the main job's frame, metrics on: the invariants on another driver),
+# bench_cpu_path.json (GPU jump flooding against the CPU path it replaced), bench_main.json (the
+# main job on the four presets, visible faces against all faces, plain frame beside it),
+# bench_cut_strategies.json (experiments/cut_strategies' timing sweep), scale.jsonl (one
+# `cutaway render` stats object per line, with its wall time). Parts run in that order; each is
+# skipped when too little of SECONDS is left, and one that fails does not stop the others.
+# experiments/device/report.py turns the files into results/device-<gpu>/.
+set -u
+revision=${1:?usage: device-benchmarks.sh GIT_REVISION SECONDS}
+budget=${2:?usage: device-benchmarks.sh GIT_REVISION SECONDS}
+out=${OUT:?OUT: the folder whose files come back}
+start=$(date +%s)
+elapsed() { echo $(($(date +%s) - start)); }
+log() { echo "[$(elapsed) s] $*" | tee -a "$out/device.log"; }
+left() { echo $((budget - $(elapsed))); }
+
+for deb in .gl/*.deb; do dpkg -x "$deb" /; done
+ldconfig
+export LD_LIBRARY_PATH="$PWD/.device/lib:/usr/local/nvidia/lib64:${LD_LIBRARY_PATH:-}"
+vendor=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
+[ -f "$vendor" ] && export __EGL_VENDOR_LIBRARY_FILENAMES="$vendor"
+export CUTAWAY_SHADER_DIR="$PWD/shaders" CUTAWAY_GIT_REVISION="$revision"
+bin="$PWD/.device/bin"
+scratch=$(mktemp -d)
+
+{
+    nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.max.sm,clocks.max.mem --format=csv
+    echo "cpus: $(nproc), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2)"
+    echo "memory: $(grep MemTotal /proc/meminfo)"
+    echo "uname: $(uname -a)"
+    echo "git revision: $revision"
+} >"$out/context.txt" 2>&1
+
+# part NAME MIN_SECONDS COMMAND...: runs COMMAND (stdout and stderr to the log) unless fewer than
+# MIN_SECONDS are left; stops it when the budget runs out.
+part() {
+    local name=$1 need=$2
+    shift 2
+    if [ "$(left)" -lt "$need" ]; then
+        log "$name: skipped ($(left) s left, needs $need)"
+        return
+    fi
+    log "$name: start"
+    timeout "$(left)" bash -c '"$@"' "$name" "$@" >>"$out/device.log" 2>&1
+    log "$name: exit status $?"
+}
+
+bench() { "$bin/bench_cutaway" --size=1920x1080 --benchmark_out_format=json "$@"; }
+
+# One `cutaway render` of a preset with one strategy, its stats and wall time appended to scale.jsonl.
+scale() {
+    local preset=$1 strategy=$2 t0 t1
+    t0=$(date +%s%N)
+    "$bin/cutaway" render "preset:$preset" --egl-platform device --size 1920 1080 --warmup 1 --repeat 3 --no-metrics \
+        --strategy "$strategy" --out "$scratch/frame.png" --stats "$scratch/stats.json" || return 1
+    t1=$(date +%s%N)
+    python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["command_wall_s"] = float(sys.argv[2]); print(json.dumps(s))' \
+        "$scratch/stats.json" "$(((t1 - t0) / 1000000))e-3" >>"$out/scale.jsonl"
+}
+export -f bench scale
+export bin scratch out
+
+part render_sapphire 20 "$bin/cutaway" render preset:sapphire --egl-platform device --size 1920 1080 --warmup 2 \
+    --repeat 9 --baseline --stats "$out/render_sapphire.json" --out "$out/render_sapphire.png"
+part cpu_path 30 bench --benchmark_filter=BM_cpu_path --presets=petra,sapphire --fractions=0.01,0.2 \
+    --strategies=jfa,jfa2 --cpu_references=jfa,jfa2 --apertures=60 --poses=2 --warmup=1 --repeat=3 \
+    --benchmark_out="$out/bench_cpu_path.json"
+part main 40 bench --presets=zaphirus,petra,opharine,sapphire --draws=visible,all-faces --poses=8 --warmup=1 \
+    --repeat=3 --cpu_references=none --benchmark_out="$out/bench_main.json"
+part cut_strategies 60 bench --presets=zaphirus,petra,opharine,sapphire --fractions=0.001,0.01,0.05,0.2 \
+    --strategies=frustum,frustum-clusters,frustum-sweep,chamfer-3x3,chamfer-34,chamfer-5x5,jfa,jfa+1,jfa+2,1+jfa,jfa2 \
+    --apertures=60 --mean_filters=0 --borders=raycast --draws=visible --poses=2 --warmup=2 --repeat=5 \
+    --cpu_references=none --ssao=0 --baseline=0 --benchmark_out="$out/bench_cut_strategies.json"
+
+for preset in scale-1m scale-10m; do
+    for strategy in frustum-clusters frustum-sweep; do part "scale $preset $strategy" 40 scale "$preset" "$strategy"; done
+done
+part "scale scale-100m frustum-clusters" 200 scale scale-100m frustum-clusters
+log "done"
