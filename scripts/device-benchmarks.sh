@@ -11,6 +11,9 @@
 # bench_cut_strategies.json (experiments/cut_strategies' timing sweep), scale.jsonl (one
 # `cutaway render` stats object per line, with its wall time). Parts run in that order; each is
 # skipped when too little of SECONDS is left, and one that fails does not stop the others.
+# PARTS="render_sapphire scale" (say) runs only the parts named (their first word). The EGL
+# platform is render's auto choice: NVIDIA's driver also offers EGL_MESA_platform_surfaceless,
+# and stats.json and the benchmark context record the platform and renderer used.
 # experiments/device/report.py turns the files into results/device-<gpu>/.
 set -u
 revision=${1:?usage: device-benchmarks.sh GIT_REVISION SECONDS}
@@ -43,6 +46,7 @@ scratch=$(mktemp -d)
 part() {
     local name=$1 need=$2
     shift 2
+    if [ -n "${PARTS:-}" ] && [[ " $PARTS " != *" ${name%% *} "* ]]; then return; fi
     if [ "$(left)" -lt "$need" ]; then
         log "$name: skipped ($(left) s left, needs $need)"
         return
@@ -58,7 +62,7 @@ bench() { "$bin/bench_cutaway" --size=1920x1080 --benchmark_out_format=json "$@"
 scale() {
     local preset=$1 strategy=$2 t0 t1
     t0=$(date +%s%N)
-    "$bin/cutaway" render "preset:$preset" --egl-platform device --size 1920 1080 --warmup 1 --repeat 3 --no-metrics \
+    "$bin/cutaway" render "preset:$preset" --size 1920 1080 --warmup 1 --repeat 3 --no-metrics \
         --strategy "$strategy" --out "$scratch/frame.png" --stats "$scratch/stats.json" || return 1
     t1=$(date +%s%N)
     python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["command_wall_s"] = float(sys.argv[2]); print(json.dumps(s))' \
@@ -67,7 +71,7 @@ scale() {
 export -f bench scale
 export bin scratch out
 
-part render_sapphire 20 "$bin/cutaway" render preset:sapphire --egl-platform device --size 1920 1080 --warmup 2 \
+part render_sapphire 20 "$bin/cutaway" render preset:sapphire --size 1920 1080 --warmup 2 \
     --repeat 9 --baseline --stats "$out/render_sapphire.json" --out "$out/render_sapphire.png"
 part cpu_path 30 bench --benchmark_filter=BM_cpu_path --presets=petra,sapphire --fractions=0.01,0.2 \
     --strategies=jfa,jfa2 --cpu_references=jfa,jfa2 --apertures=60 --poses=2 --warmup=1 --repeat=3 \
