@@ -1,0 +1,212 @@
+#!/usr/bin/python3
+"""Results of scripts/device-benchmarks.sh on a lent GPU machine, as results/device-<gpu>/.
+
+  experiments/device/report.py RUN_DIR [RUN_DIR ...]
+RUN_DIR: the files one device call brought back (a later folder's file replaces an earlier one of
+the same name; the calls' device.log files are joined). Copies the raw outputs (benchmark JSON, render stats, scale.jsonl, context.txt,
+device.log, the rendered frame) into results/device-<gpu>/ and writes its README.md: the main
+job's frame against the plain frame and against drawing every face (the paper's path), GPU jump
+flooding against the CPU path it replaced, stage 1 of every cut strategy per model and primary
+fraction, and one frame per model from 1M to 100M cells with wall time and memory. Every ratio is
+between two configurations of the same call on the same GPU. Measures nothing itself.
+"""
+import json
+import os
+import shutil
+import statistics
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
+import cutaway_experiment as cx  # noqa: E402
+
+RAW = ("context.txt", "device.log", "render_sapphire.json", "render_sapphire.png", "bench_cpu_path.json",
+       "bench_main.json", "bench_cut_strategies.json", "scale.jsonl")
+CUT_COLUMNS = ("frustum", "frustum-clusters", "frustum-sweep", "chamfer-5x5", "jfa", "jfa2")
+
+
+def gather(run_dirs):
+    """{file name: path} over the run folders, later ones first."""
+    found = {}
+    for folder in run_dirs:
+        for name in RAW:
+            if os.path.exists(os.path.join(folder, name)):
+                found[name] = os.path.join(folder, name)
+    return found
+
+
+def load_json(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def gpu_name(files):
+    with open(files["context.txt"]) as f:
+        lines = f.read().splitlines()
+    return lines[1].split(",")[0].strip()  # nvidia-smi's csv: header, then "NAME, driver, ..."
+
+
+def ms(value):
+    return f"{value:,.1f}" if value < 100 else f"{value:,.0f}"
+
+
+def context_section(files, documents):
+    with open(files["context.txt"]) as f:
+        context = f.read().strip()
+    lines = ["## Machine", "", "```", context, "```", ""]
+    for name, document in documents.items():
+        c = cx.benchmark_context(document)
+        lines.append(f"- `{name}`: {c.get('gl_renderer')}, {c.get('gl_version')}, platform "
+                     f"{document['context'].get('gl_platform')}, git {c.get('git_revision')}, {c.get('date')}, "
+                     f"{c.get('resolution')}, {c.get('warmup_passes')} warm-up + {c.get('timed_passes')} timed passes per pose")
+    return lines + [""]
+
+
+def main_job_section(document):
+    """The main job (bench_cutaway defaults: 1% PORO primaries, 9x9 mean filter, SSAO, 8 poses)
+    per model: visible faces against every face, and against the plain frame."""
+    runs = [r for r in cx.cutaway_runs(document) if r["pose"] == -1]
+    baselines = {b["label"]: b["real_time"] for b in document["benchmarks"] if b["name"].startswith("BM_baseline/")}
+    lines = ["## The main job against the plain frame and the paper's path", "",
+             "`bench_cutaway` defaults (1% PORO primaries, 9x9 mean filter, SSAO, ray-cast borders, the 8-pose camera "
+             "path), medians of 8 poses x 3 frames. `visible`: stage 2 draws the faces the GPU culling keeps; "
+             "`all-faces`: every face of every cell (the paper's path). Plain frame: `BM_baseline` (exposed faces, "
+             "shaded, same poses).", "",
+             "| model | cut strategy | cutaway ms (visible) | fps | all-faces ms | all-faces / visible | plain frame ms | "
+             "cutaway / plain | stage 2 faces visible / all |", "|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+    keyed = {(r["preset"], r["strategy"], r["draw"]): r for r in runs}
+    for (preset, strategy, draw), r in keyed.items():
+        if draw != "visible" or strategy != "frustum-clusters":
+            continue
+        every = keyed.get((preset, strategy, "all-faces"))
+        total, base = r["stages_ms"]["total"], baselines.get(preset)
+        lines.append(f"| {preset} | {strategy} | {ms(total)} | {1000 / total:.0f} | {ms(every['stages_ms']['total'])} | "
+                     f"{every['stages_ms']['total'] / total:.2f} | {ms(base)} | {total / base:.1f} | "
+                     f"{int(r['faces_secondary']):,} / {int(every['faces_secondary']):,} |")
+    lines += ["", "The same, every strategy, cutaway ms with visible faces (stage 1 in brackets):", "",
+              "| model | " + " | ".join(document["context"]["strategies"].split(",")) + " |",
+              "|---|" + "---:|" * len(document["context"]["strategies"].split(","))]
+    for preset in document["context"]["presets"].split(","):
+        cells = []
+        for strategy in document["context"]["strategies"].split(","):
+            r = keyed.get((preset, strategy, "visible"))
+            cells.append(f"{ms(r['stages_ms']['total'])} ({ms(r['stages_ms']['cut_surface'])})" if r else "-")
+        lines.append(f"| {preset} | " + " | ".join(cells) + " |")
+    return lines + [""]
+
+
+def cpu_path_section(document):
+    presets = document["context"]["presets"].split(",")
+    strategies = document["context"]["strategies"].split(",")
+    lines = ["## GPU jump flooding against the CPU path it replaced", "",
+             "`BM_cpu_path` (aperture 60 degrees, 2 poses x 3 frames, interleaved): seed pass alone, the GPU strategy "
+             "(seed pass, compute passes, resolve), and the CPU path (seed pass, 8.3 MB read-back, single-threaded CPU "
+             "transform, upload). Transform speedup = (CPU path - seeds) / (GPU - seeds).", "",
+             "| model | fraction | strategy | seeds ms | GPU ms | CPU path ms | transform speedup | stage speedup |",
+             "|---|---:|---|---:|---:|---:|---:|---:|"]
+    speedups = []
+    for b in document["benchmarks"]:
+        if not b["name"].startswith("BM_cpu_path/"):
+            continue
+        a = {k: int(v) for k, v in (p.split(":") for p in b["name"].split("/")[1:] if ":" in p)}
+        strategy = strategies[a["strategy"]]
+        if strategy == "jfa":
+            speedups.append(b["transform_speedup"])
+        lines.append(f"| {presets[a['preset']]} | {a['fraction_bp'] / 100:g}% | {strategy} | {ms(b['seeds_ms'])} | "
+                     f"{ms(b['gpu_ms'])} | {ms(b['cpu_path_ms'])} | {b['transform_speedup']:.0f}x | {b['stage_speedup']:.0f}x |")
+    if speedups:
+        lines += ["", f"GPU `jfa` transform against the CPU path: {min(speedups):.0f}-{max(speedups):.0f}x "
+                      f"(median {statistics.median(speedups):.0f}x) over {len(speedups)} configurations."]
+    return lines + [""]
+
+
+def cut_strategies_section(document):
+    runs = {(r["preset"], r["primary_fraction"], r["strategy"]): r for r in cx.cutaway_runs(document)}
+    readback = sorted({int(r.get("readback_bytes", 0)) for r in runs.values()})
+    lines = ["## Cut strategies: stage 1 per model and primary fraction", "",
+             "experiments/cut_strategies' timing sweep (aperture 60 degrees, mean filter and SSAO off, 2 poses x 5 "
+             "frames, median `cut_surface` ms: seed pass, transform or frustums, resolve). In brackets: frustum ms / "
+             f"strategy ms (> 1: cheaper than the paper's per-cell frustum union). Read-back per frame over every row: "
+             f"{', '.join(str(b) for b in readback)} bytes.", "",
+             "| model | fraction | primaries | " + " | ".join(CUT_COLUMNS) + " |", "|---|---:|---:|" + "---:|" * len(CUT_COLUMNS)]
+    keys = sorted({(p, f) for p, f, _ in runs}, key=lambda k: runs[(k[0], k[1], "frustum")]["primary_cells"])
+    for preset, fraction in keys:
+        frustum = runs[(preset, fraction, "frustum")]["stages_ms"]["cut_surface"]
+        cells = []
+        for strategy in CUT_COLUMNS:
+            t = runs[(preset, fraction, strategy)]["stages_ms"]["cut_surface"]
+            cells.append(ms(t) if strategy == "frustum" else f"{ms(t)} ({frustum / t:.1f})")
+        lines.append(f"| {preset} | {fraction * 100:g}% | {int(runs[(preset, fraction, 'frustum')]['primary_cells']):,} | "
+                     + " | ".join(cells) + " |")
+    return lines + [""]
+
+
+def scale_section(path):
+    with open(path) as f:
+        rows = [json.loads(line) for line in f if line.strip()]
+    lines = ["## One frame per model, 1M to 100M cells", "",
+             "`cutaway render preset:NAME` at 1920x1080 with the main job's settings, 1 warm-up and 3 timed frames "
+             "(stats: medians), as in experiments/scale. Wall: the whole command (model generated in memory on the "
+             "CPU, renderer set-up, 4 frames). Peak: the process's peak resident set per active cell.", "",
+             "| model | cut strategy | active cells | frame ms | cut surface ms | culling ms | stage 2 ms | stage 3 ms | "
+             "generate s | set-up s | wall s | GPU buffers MB | peak bytes / active cell |",
+             "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+    for s in rows:
+        st, m, cells = s["stages_ms"], s["memory_bytes"], s["active_cells"]
+        lines.append(f"| {s['model'].split()[0].removeprefix('preset:')} | {s['strategy']['name']} | {cells:,} | "
+                     f"{ms(st['total'])} | {ms(st['cut_surface'])} | {ms(st['culling'])} | {ms(st['secondary'])} | "
+                     f"{ms(st['primary'])} | {s['model_load_s']:.1f} | {s['renderer_setup_s']:.1f} | "
+                     f"{s['command_wall_s']:.1f} | {m['gpu_buffers'] / 2**20:,.0f} | {m['peak_resident'] / cells:.0f} |")
+    return lines + [""]
+
+
+def render_section(stats):
+    return ["## The main job's frame on this driver", "",
+            f"`render_sapphire.png` / `.json`: `cutaway render preset:sapphire --baseline`, metrics on: "
+            f"{stats['primary_cells']:,} primaries, primary exposure {stats['primary_exposure']:.4f}, secondary pixels in "
+            f"front of the cut {stats['secondary_pixels_in_front_of_cut']}, read-back {stats['readback_bytes']} bytes per frame; "
+            f"frame {ms(stats['stages_ms']['total'])} ms against the plain frame's {ms(stats['baseline_ms'])} ms "
+            f"(medians of {stats['repeat']}).", ""]
+
+
+def main():
+    if len(sys.argv) < 2:
+        raise SystemExit(__doc__)
+    files = gather(sys.argv[1:])
+    if "context.txt" not in files:
+        raise SystemExit("no context.txt in " + ", ".join(sys.argv[1:]) + ": not a device-benchmarks.sh output folder")
+    gpu = gpu_name(files)
+    out = os.path.join(cx.REPO, "results", "device-" + gpu.lower().replace(" ", "-"))
+    os.makedirs(out, exist_ok=True)
+    for name, path in files.items():
+        if name != "device.log":
+            shutil.copyfile(path, os.path.join(out, name))
+    with open(os.path.join(out, "device.log"), "w") as log:  # every call's log, in call order
+        for folder in sys.argv[1:]:
+            if os.path.exists(os.path.join(folder, "device.log")):
+                with open(os.path.join(folder, "device.log")) as f:
+                    log.write(f"### call {os.path.basename(os.path.normpath(folder))}\n" + f.read())
+    documents = {n: load_json(files[n]) for n in ("bench_main.json", "bench_cpu_path.json", "bench_cut_strategies.json")
+                 if n in files}
+    lines = [f"# cutaway on an {gpu} (generated by experiments/device/report.py; do not edit)", "",
+             "Measured with scripts/device-benchmarks.sh on a machine lent for one session (binaries built on Debian 12, "
+             "run there with their libraries carried). The NVIDIA driver served the EGL surfaceless platform. Times are "
+             "fenced wall-clock medians; GL timer queries are kept beside them in the JSON. Compare ratios within one "
+             "table (one process, same GPU); the llvmpipe results elsewhere in results/ come from another machine.", ""]
+    lines += context_section(files, documents)
+    if "render_sapphire.json" in files:
+        lines += render_section(load_json(files["render_sapphire.json"]))
+    if "bench_main.json" in documents:
+        lines += main_job_section(documents["bench_main.json"])
+    if "bench_cpu_path.json" in documents:
+        lines += cpu_path_section(documents["bench_cpu_path.json"])
+    if "bench_cut_strategies.json" in documents:
+        lines += cut_strategies_section(documents["bench_cut_strategies.json"])
+    if "scale.jsonl" in files:
+        lines += scale_section(files["scale.jsonl"])
+    with open(os.path.join(out, "README.md"), "w") as f:
+        f.write("\n".join(lines))
+    print("wrote", os.path.relpath(out, cx.REPO))
+
+
+if __name__ == "__main__":
+    main()
