@@ -12,8 +12,9 @@
 # `cutaway render` stats object per line, with its wall time). Parts run in that order; each is
 # skipped when too little of SECONDS is left, and one that fails does not stop the others.
 # PARTS="render_sapphire scale" (say) runs only the parts named (their first word). The EGL
-# platform is render's auto choice: NVIDIA's driver also offers EGL_MESA_platform_surfaceless,
-# and stats.json and the benchmark context record the platform and renderer used.
+# platform is render's auto choice (the device platform where a hardware EGL device is listed;
+# NVIDIA's client extensions name it EGL_EXT_device_base), recorded in stats.json and the
+# benchmark context with the renderer.
 # experiments/device/report.py turns the files into results/device-<gpu>/.
 set -u
 revision=${1:?usage: device-benchmarks.sh GIT_REVISION SECONDS}

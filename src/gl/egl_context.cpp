@@ -26,22 +26,6 @@ bool has_extension(const char* list, const char* name) {
     return false;
 }
 
-/// First EGL device that is real hardware (not Mesa's software device), or none.
-EGLDeviceEXT find_hardware_device() {
-    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!has_extension(client, "EGL_EXT_device_enumeration") || !has_extension(client, "EGL_EXT_platform_device"))
-        return EGL_NO_DEVICE_EXT;
-    EGLint count = 0;
-    if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0) return EGL_NO_DEVICE_EXT;
-    std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
-    if (!eglQueryDevicesEXT(count, devices.data(), &count)) return EGL_NO_DEVICE_EXT;
-    for (EGLint d = 0; d < count; ++d) {
-        const char* device_extensions = eglQueryDeviceStringEXT(devices[std::size_t(d)], EGL_EXTENSIONS);
-        if (!has_extension(device_extensions, "EGL_MESA_device_software")) return devices[std::size_t(d)];
-    }
-    return EGL_NO_DEVICE_EXT;
-}
-
 std::string egl_error_name(EGLint code) {
     switch (code) {
         case EGL_NOT_INITIALIZED: return "EGL_NOT_INITIALIZED";
@@ -57,6 +41,34 @@ std::string egl_error_name(EGLint code) {
     }
 }
 
+/// What the EGL device search found: the first device that is real hardware (not Mesa's
+/// software device), or none and why (for the error message of `--egl-platform device`).
+struct DeviceSearch {
+    EGLDeviceEXT device = EGL_NO_DEVICE_EXT;
+    std::string why_none;
+};
+
+DeviceSearch find_hardware_device() {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    // EGL_EXT_device_base is the older name of device_enumeration + device_query together.
+    const bool enumeration = has_extension(client, "EGL_EXT_device_enumeration") || has_extension(client, "EGL_EXT_device_base");
+    if (!enumeration || !has_extension(client, "EGL_EXT_platform_device"))
+        return {EGL_NO_DEVICE_EXT, std::string("the EGL client extensions lack ") +
+                                       (enumeration ? "EGL_EXT_platform_device" : "EGL_EXT_device_enumeration") +
+                                       " (client extensions: " + (client ? client : "none") + ")"};
+    EGLint count = 0;
+    if (!eglQueryDevicesEXT(0, nullptr, &count) || count <= 0)
+        return {EGL_NO_DEVICE_EXT, "eglQueryDevicesEXT lists no device (" + egl_error_name(eglGetError()) + ")"};
+    std::vector<EGLDeviceEXT> devices(static_cast<std::size_t>(count));
+    if (!eglQueryDevicesEXT(count, devices.data(), &count))
+        return {EGL_NO_DEVICE_EXT, "eglQueryDevicesEXT failed listing " + std::to_string(count) + " devices"};
+    for (EGLint d = 0; d < count; ++d) {
+        const char* device_extensions = eglQueryDeviceStringEXT(devices[std::size_t(d)], EGL_EXTENSIONS);
+        if (!has_extension(device_extensions, "EGL_MESA_device_software")) return {devices[std::size_t(d)], {}};
+    }
+    return {EGL_NO_DEVICE_EXT, std::to_string(count) + " EGL device(s), all Mesa software devices"};
+}
+
 class EglContext final : public GlContext {
 public:
     explicit EglContext(const ContextOptions& options) {
@@ -67,13 +79,12 @@ public:
         if (client == nullptr) throw GlError("no EGL client library (libEGL) could be loaded");
 
         if (wanted != "surfaceless") {
-            EGLDeviceEXT device = find_hardware_device();
-            if (device != EGL_NO_DEVICE_EXT) {
-                display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, device, nullptr);
+            const DeviceSearch search = find_hardware_device();
+            if (search.device != EGL_NO_DEVICE_EXT) {
+                display_ = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, search.device, nullptr);
                 platform_ = "egl/device";
             } else if (wanted == "device") {
-                throw GlError("EGL platform 'device': no hardware EGL device found (EGL_EXT_device_enumeration lists "
-                              "only software devices or none)");
+                throw GlError("EGL platform 'device': no hardware EGL device found: " + search.why_none);
             }
         }
         if (display_ == EGL_NO_DISPLAY) {
