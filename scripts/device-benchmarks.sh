@@ -6,6 +6,7 @@
 #   scripts/device-benchmarks.sh GIT_REVISION SECONDS
 # Writes into $OUT (at most 8 files come back): device.log, context.txt (GPU, driver, CPU),
 # render_sapphire.json + .png (the main job's frame, metrics on: the invariants on another driver),
+# bench_table1.json (experiments/table1's protocol: the paper's Table 1 on this GPU),
 # bench_cpu_path.json (GPU jump flooding against the CPU path it replaced), bench_main.json (the
 # main job on the four presets, visible faces against all faces, plain frame beside it),
 # bench_cut_strategies.json (experiments/cut_strategies' timing sweep), scale.jsonl (one
@@ -74,6 +75,9 @@ export bin scratch out
 
 part render_sapphire 20 "$bin/cutaway" render preset:sapphire --size 1920 1080 --warmup 2 \
     --repeat 9 --baseline --stats "$out/render_sapphire.json" --out "$out/render_sapphire.png"
+part table1 30 bench --presets=zaphirus,petra,opharine,sapphire --poses=8 --fractions=0.01 --mean_filters=9 \
+    --borders=raycast --strategies=frustum --draws=all-faces,visible --warmup=1 --repeat=5 \
+    --benchmark_filter=BM_cutaway --benchmark_out="$out/bench_table1.json"
 part cpu_path 30 bench --benchmark_filter=BM_cpu_path --presets=petra,sapphire --fractions=0.01,0.2 \
     --strategies=jfa,jfa2 --cpu_references=jfa,jfa2 --apertures=60 --poses=2 --warmup=1 --repeat=3 \
     --benchmark_out="$out/bench_cpu_path.json"
