@@ -4,7 +4,8 @@
 # scripts/device-prepare.sh): .device/bin (cutaway, bench_cutaway built here), .device/lib (their
 # shared libraries except glibc and libstdc++), .gl (the glvnd EGL loader packages).
 #   scripts/device-benchmarks.sh GIT_REVISION SECONDS
-# Writes into $OUT (at most 8 files come back): device.log, context.txt (GPU, driver, CPU),
+# Writes into $OUT (a call brings back 8 files at most: run the parts over two calls with PARTS):
+# device.log, context.txt (GPU, driver, CPU),
 # render_sapphire.json + .png (the main job's frame, metrics on: the invariants on another driver),
 # bench_table1.json (experiments/table1's protocol: the paper's Table 1 on this GPU),
 # bench_cpu_path.json (GPU jump flooding against the CPU path it replaced), bench_main.json (the
