@@ -5,9 +5,12 @@
 //   outside the frustum, or entirely in front of the cut (every fragment discarded): nothing;
 //   entirely behind the cut (every fragment kept): its exposed faces seen from outside;
 //   straddling the cut: every face the all-faces pass would draw for it.
-// Surviving face records are appended to visible_faces and counted in the indirect draw command
-// (6 vertices per face); the CPU reads nothing back to draw. The bricks' classes come from
-// visibility/classify_bricks.comp.
+// Each secondary cell's surviving sides go into its byte of cell_face_masks (by its slot in the
+// brick-ordered cell list) and are counted per brick and in all (the indirect draw's count);
+// visibility/write_visible_faces.comp then writes the records in brick and cell order, so that
+// the draw order, and with it which of two coincident faces wins the depth test, does not depend
+// on the order the GPU's invocations ran in. The CPU reads nothing back to draw. The bricks'
+// classes come from visibility/classify_bricks.comp.
 layout(local_size_x = 64) in;
 
 #include "common/grid.glsl"
@@ -28,19 +31,20 @@ layout(std430, binding = 11) buffer Culling {
     uint cells_straddling;
     uint faces_requested;  // faces selected, including any beyond the capacity
 };
-layout(std430, binding = 12) writeonly buffer VisibleFaces { uint visible_faces[]; };
+layout(std430, binding = 16) buffer CellFaceMasks { uint cell_face_masks[]; };  // 4 slots per uint, cleared per frame
+layout(std430, binding = 17) buffer BrickFaceCounts { uint brick_face_counts[]; };  // cleared per frame
 
 uniform uint brick_count;
 uniform uint bricks_per_group;  // consecutive bricks a workgroup takes in turn
-uniform uint face_capacity;     // records visible_faces holds
 
 uint texel(usamplerBuffer texels, uint index) { return texelFetch(texels, int(index)).r; }
 
 bool is_primary(uint cell) { return ((texel(primary_bit_texels, cell >> 5) >> (cell & 31u)) & 1u) != 0u; }
 
-// The faces one secondary cell of a brick of class `brick_class` gives, appended with one atomic.
-// The cell's 8 corners are rebuilt once, and only when a face or the cell's own test needs them.
-void select_cell(uint cell, int brick_class) {
+// The faces one secondary cell (at `slot` of `brick`, whose class is `brick_class`) gives, as a
+// mask of sides. The cell's 8 corners are rebuilt once, and only when a face or the cell's own
+// test needs them.
+void select_cell(uint cell, uint slot, uint brick, int brick_class) {
     if (is_primary(cell)) return;  // primaries are drawn by stage 3
     uint classes = texel(face_class_texels, cell);
     const uint all_interior = 0x555u;  // face_class_interior on all 6 sides
@@ -52,8 +56,7 @@ void select_cell(uint cell, int brick_class) {
     if (gives_nothing(cell_class)) return;
     if (cell_class == behind) atomicAdd(cells_behind, 1u);
     if (cell_class == straddling) atomicAdd(cells_straddling, 1u);
-    uint records[6];
-    uint count = 0u;
+    uint mask = 0u, count = 0u;
     for (uint side = 0u; side < 6u; ++side) {
         uint face_class = (classes >> (2u * side)) & 3u;
         bool exposed = face_class != face_class_interior;
@@ -66,12 +69,15 @@ void select_cell(uint cell, int brick_class) {
         bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing)
                                      : cell_class == in_front ? exposed && f.back_facing
                                                               : f.any_triangle_front_facing);
-        if (keep) records[count++] = pack_face_record(cell, side, face_class);
+        if (keep) {
+            mask |= 1u << side;
+            ++count;
+        }
     }
     if (count == 0u) return;
-    uint base = atomicAdd(faces_requested, count);
-    for (uint k = 0u; k < count; ++k)
-        if (base + k < face_capacity) visible_faces[base + k] = records[k];
+    atomicOr(cell_face_masks[slot >> 2], mask << (8u * (slot & 3u)));
+    atomicAdd(brick_face_counts[brick], count);
+    atomicAdd(faces_requested, count);
 }
 
 // No shared memory and no barrier(): llvmpipe runs barrier() by switching between the
@@ -87,6 +93,6 @@ void main() {
         int brick_class = int(texel(brick_class_texels, brick));
         if (gives_nothing(brick_class)) continue;
         uint slot = texel(brick_begin_texels, brick) + gl_LocalInvocationIndex;
-        if (slot < texel(brick_begin_texels, brick + 1u)) select_cell(texel(brick_cell_texels, slot), brick_class);
+        if (slot < texel(brick_begin_texels, brick + 1u)) select_cell(texel(brick_cell_texels, slot), slot, brick, brick_class);
     }
 }

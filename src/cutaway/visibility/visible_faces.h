@@ -45,7 +45,12 @@ public:
     const CutDepthPyramid& pyramid() const { return pyramid_; }
 
 private:
-    gl::Program classify_, cull_, finish_;
+    /// The selected faces' records in brick, cell and side order (visibility/scan_bricks.comp,
+    /// visibility/write_visible_faces.comp): the draw order no longer depends on the order the
+    /// culling's invocations ran in, so coincident faces tie the same way on any GPU.
+    void write_in_brick_order(const GridBuffers& grid);
+
+    gl::Program classify_, cull_, finish_, scan_bricks_, scan_blocks_, write_faces_;
     CutDepthPyramid pyramid_;
     gl::Buffer brick_cells_, brick_begin_, brick_boxes_;
     gl::Buffer brick_classes_;  ///< class of each brick this frame (classify_bricks.comp)
@@ -55,6 +60,10 @@ private:
     gl::Buffer counters_, faces_;
     std::size_t chunks_ = 0;  ///< draw commands: QuadDraw chunks of the face capacity
     gl::Buffer commands_;     ///< DrawElementsIndirectCommand per chunk (finish_culling.comp)
+    gl::Buffer cell_masks_;      ///< sides each cell gives this frame, a byte per brick_cells slot
+    gl::Buffer brick_counts_;    ///< faces each brick gives this frame
+    gl::Buffer brick_offsets_;   ///< each brick's first record within its scan block
+    gl::Buffer block_offsets_;   ///< each scan block's first record
 };
 
 }  // namespace cutaway::pipeline
