@@ -25,7 +25,7 @@ import table1_report  # noqa: E402
 from run import PAPER_MS  # noqa: E402  (experiments/table1/run.py: the paper's Table 1)
 
 RAW = ("context.txt", "device.log", "render_sapphire.json", "render_sapphire.png", "bench_table1.json", "bench_cpu_path.json",
-       "bench_main.json", "bench_cut_strategies.json", "scale.jsonl")
+       "bench_main.json", "bench_cut_strategies.json", "scale.jsonl", "gl_tests.log")
 CUT_COLUMNS = ("frustum", "frustum-clusters", "frustum-sweep", "chamfer-5x5", "jfa", "jfa2")
 
 
@@ -178,6 +178,18 @@ def scale_section(path):
     return lines + [""]
 
 
+def gl_tests_section(path):
+    """The GL test binaries run on this GPU (their gtest summary and failures, from the log)."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    keep = [line for line in lines if line.startswith(("[  PASSED", "[  FAILED", "[==========]")) or " exit " in line
+            or "Failure" in line or "Expected" in line or "identity:" in line]
+    return ["## The GL tests on this GPU", "",
+            "`gl_tests.log`: `cutaway_gl_tests` and `volume_tests` (the build's test binaries, the real data of "
+            "shared/data carried along) run on this GPU's driver. Their summary, failures and identity counts:", "",
+            "```", *keep, "```", ""]
+
+
 def render_section(stats):
     return ["## The main job's frame on this driver", "",
             f"`render_sapphire.png` / `.json`: `cutaway render preset:sapphire --baseline`, metrics on: "
@@ -226,6 +238,8 @@ def main():
         lines += cut_strategies_section(documents["bench_cut_strategies.json"])
     if "scale.jsonl" in files:
         lines += scale_section(files["scale.jsonl"])
+    if "gl_tests.log" in files:
+        lines += gl_tests_section(files["gl_tests.log"])
     with open(os.path.join(out, "README.md"), "w") as f:
         f.write("\n".join(lines))
     print("wrote", os.path.relpath(out, cx.REPO))
