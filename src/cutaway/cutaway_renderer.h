@@ -148,6 +148,8 @@ public:
     std::vector<std::uint32_t> read_eclipse_ids() const;
     /// Linear depth of the visible surface in the model camera (0 = background).
     FloatImage read_scene_depth() const;
+    /// The face records stage 2 drew in the last visible-path frame, in drawing order (tests).
+    std::vector<std::uint32_t> read_visible_faces() const { return visible_.read_faces(); }
     /// The depth buffer of the last frame or plain frame (window depth 0..1, 1 = background),
     /// rows bottom to top.
     std::vector<float> read_window_depth() const;

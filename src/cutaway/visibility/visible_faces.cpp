@@ -164,6 +164,12 @@ CullingCounts VisibleFaces::read_counts() const {
     return {std::min<std::uint64_t>(c[4], face_capacity_), c[4], brick_count_, c[0], c[1], c[2], c[3]};
 }
 
+std::vector<std::uint32_t> VisibleFaces::read_faces() const {
+    std::vector<std::uint32_t> records(read_counts().faces);
+    glGetNamedBufferSubData(faces_.id(), 0, GLsizeiptr(records.size() * sizeof(std::uint32_t)), records.data());
+    return records;
+}
+
 std::size_t VisibleFaces::memory_bytes() const {
     return brick_cells_.size_bytes() + brick_begin_.size_bytes() + brick_boxes_.size_bytes() + brick_classes_.size_bytes() + faces_.size_bytes() +
            counters_.size_bytes() + commands_.size_bytes() + cell_masks_.size_bytes() + brick_counts_.size_bytes() +

@@ -3,6 +3,7 @@
 // secondary faces that can reach a pixel, and the draw reads their count from an indirect
 // command. Built once per model: the cells grouped in IJK bricks with their boxes.
 #include <cstdint>
+#include <vector>
 
 #include "cutaway/camera.h"
 #include "cutaway/frame_targets.h"
@@ -41,6 +42,8 @@ public:
     void draw(const GridBuffers& grid) const;
     /// Reads the counters of the last selection back (a GPU->CPU sync: not in timed frames).
     CullingCounts read_counts() const;
+    /// Reads the last selection's face records back in drawing order (a GPU->CPU sync, for tests).
+    std::vector<std::uint32_t> read_faces() const;
     std::size_t memory_bytes() const;
     const CutDepthPyramid& pyramid() const { return pyramid_; }
 
