@@ -27,6 +27,7 @@ from run import PAPER_MS  # noqa: E402  (experiments/table1/run.py: the paper's 
 RAW = ("context.txt", "device.log", "render_sapphire.json", "render_sapphire.png", "bench_table1.json", "bench_cpu_path.json",
        "bench_main.json", "bench_cut_strategies.json", "scale.jsonl", "gl_tests.log")
 CUT_COLUMNS = ("frustum", "frustum-clusters", "frustum-sweep", "chamfer-5x5", "jfa", "jfa2")
+MARKERS = ("o", "s", "^", "D")  # one per model, in the benchmark's preset order
 
 
 def gather(run_dirs):
@@ -159,6 +160,28 @@ def cut_strategies_section(document):
     return lines + [""]
 
 
+def plot_cut_strategies(document, gpu, path):
+    """Stage 1 against primary cells: one colour per strategy, one marker per model; a line joins
+    one model's primary fractions, never two models."""
+    plt = cx.pyplot()
+    runs = cx.cutaway_runs(document)
+    presets = document["context"]["presets"].split(",")
+    fig, ax = plt.subplots(figsize=(8, 5))
+    for i, strategy in enumerate(CUT_COLUMNS):
+        for preset, marker in zip(presets, MARKERS):
+            points = sorted((r["primary_cells"], r["stages_ms"]["cut_surface"]) for r in runs
+                            if r["strategy"] == strategy and r["preset"] == preset)
+            ax.plot(*zip(*points), "-", marker=marker, color=f"C{i}", linewidth=1,
+                    label=strategy if preset == presets[0] else None)
+    for preset, marker in zip(presets, MARKERS):
+        ax.plot([], [], linestyle="none", marker=marker, color="black", label=preset)
+    ax.set(xscale="log", yscale="log", xlabel="primary cells (0.1%, 1%, 5%, 20% of each model; log scale)",
+           ylabel="stage 1 (cut_surface) ms, median, log scale",
+           title=f"Cut-surface strategies on an {gpu}, 1920x1080, aperture 60 deg")
+    ax.legend(fontsize="small", ncol=2)
+    cx.save_figure(fig, path)
+
+
 def scale_section(path):
     with open(path) as f:
         rows = [json.loads(line) for line in f if line.strip()]
@@ -236,6 +259,8 @@ def main():
         lines += cpu_path_section(documents["bench_cpu_path.json"])
     if "bench_cut_strategies.json" in documents:
         lines += cut_strategies_section(documents["bench_cut_strategies.json"])
+        plot_cut_strategies(documents["bench_cut_strategies.json"], gpu, os.path.join(out, "cut_strategies.png"))
+        lines += ["![stage 1 per strategy against primary cells](cut_strategies.png)", ""]
     if "scale.jsonl" in files:
         lines += scale_section(files["scale.jsonl"])
     if "gl_tests.log" in files:
