@@ -151,6 +151,9 @@ int run_render(const RenderOptions& options) {
     stats["gpu_memory_bytes"] = renderer.gpu_memory_bytes();
     memory["peak_resident"] = run_context::proc_status_bytes("VmHWM");
     memory["gpu_buffers"] = renderer.gpu_memory_bytes();
+    json by_part = json::object();
+    for (const auto& [part, bytes] : renderer.gpu_memory_by_part()) by_part[part] = bytes;
+    memory["gpu_buffers_by_part"] = by_part;
     memory["render_target_budget"] = options.render_target_bytes();
     stats["memory_bytes"] = memory;
     stats["model"] = model.description;

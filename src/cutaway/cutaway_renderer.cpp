@@ -349,8 +349,15 @@ FacesDrawn CutawayRenderer::faces_drawn() const {
     return drawn;
 }
 
+std::vector<std::pair<std::string, std::size_t>> CutawayRenderer::gpu_memory_by_part() const {
+    return {{"grid", buffers_.memory_bytes()}, {"culling", visible_.memory_bytes()}, {"selection", selection_.memory_bytes()},
+            {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0}};
+}
+
 std::size_t CutawayRenderer::gpu_memory_bytes() const {
-    return buffers_.memory_bytes() + visible_.memory_bytes() + selection_.memory_bytes() + (exposed_ ? exposed_->memory_bytes() : 0);
+    std::size_t bytes = 0;
+    for (const auto& [part, part_bytes] : gpu_memory_by_part()) bytes += part_bytes;
+    return bytes;
 }
 
 void CutawayRenderer::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {

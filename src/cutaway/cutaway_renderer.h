@@ -138,6 +138,9 @@ public:
     FacesDrawn faces_drawn() const;
     /// Bytes of GL buffers and textures the renderer holds (llvmpipe keeps them in host memory).
     std::size_t gpu_memory_bytes() const;
+    /// The same by part: the grid (geometry, values, face lists), the visible path's culling, the
+    /// primary selection, the plain frame's exposed surface (0 until a plain frame is drawn).
+    std::vector<std::pair<std::string, std::size_t>> gpu_memory_by_part() const;
 
     gl::RgbaImage read_image() const;
     /// Copies the last frame onto `framebuffer` (0: a window's) over the rectangle (x0, y0)-(x1, y1),
