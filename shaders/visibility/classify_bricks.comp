@@ -8,13 +8,7 @@ layout(local_size_x = 64) in;
 
 layout(std430, binding = 7) readonly buffer BrickBegin { uint brick_begin[]; };  // brick_count + 1
 layout(std430, binding = 8) readonly buffer BrickBoxes { vec4 brick_boxes[]; };  // min, max per brick
-layout(std430, binding = 11) buffer Culling {
-    uint bricks_culled;
-    uint cells_culled;
-    uint cells_behind;
-    uint cells_straddling;
-    uint faces_requested;
-};
+#include "visibility/culling_counters.glsl"
 layout(std430, binding = 15) writeonly buffer BrickClasses { uint brick_classes[]; };
 
 uniform uint brick_count;

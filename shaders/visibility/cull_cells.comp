@@ -6,7 +6,7 @@
 //   entirely behind the cut (every fragment kept): its exposed faces seen from outside;
 //   straddling the cut: every face the all-faces pass would draw for it.
 // Each secondary cell's surviving sides go into its byte of cell_face_masks (by its slot in the
-// brick-ordered cell list) and are counted per brick and in all (the indirect draw's count);
+// brick-ordered cell list) and are counted per brick (visibility/scan_bricks.comp sums them);
 // visibility/write_visible_faces.comp then writes the records in brick and cell order, so that
 // the draw order, and with it which of two coincident faces wins the depth test, does not depend
 // on the order the GPU's invocations ran in. The CPU reads nothing back to draw. The bricks'
@@ -24,13 +24,7 @@ layout(binding = 13) uniform usamplerBuffer primary_bit_texels;  // 1 bit per co
 layout(binding = 14) uniform usamplerBuffer brick_cell_texels;   // compact cells, brick by brick
 layout(binding = 15) uniform usamplerBuffer brick_begin_texels;  // first cell of each brick, brick_count + 1
 layout(binding = 16) uniform usamplerBuffer brick_class_texels;  // classify_bricks.comp
-layout(std430, binding = 11) buffer Culling {
-    uint bricks_culled;
-    uint cells_culled;
-    uint cells_behind;
-    uint cells_straddling;
-    uint faces_requested;  // faces selected, including any beyond the capacity
-};
+#include "visibility/culling_counters.glsl"
 layout(std430, binding = 16) buffer CellFaceMasks { uint cell_face_masks[]; };  // 4 slots per uint, cleared per frame
 layout(std430, binding = 17) buffer BrickFaceCounts { uint brick_face_counts[]; };  // cleared per frame
 
@@ -56,7 +50,7 @@ void select_cell(uint cell, uint slot, uint brick, int brick_class) {
     if (gives_nothing(cell_class)) return;
     if (cell_class == behind) atomicAdd(cells_behind, 1u);
     if (cell_class == straddling) atomicAdd(cells_straddling, 1u);
-    uint mask = 0u, count = 0u;
+    uint mask = 0u;
     for (uint side = 0u; side < 6u; ++side) {
         uint face_class = (classes >> (2u * side)) & 3u;
         bool exposed = face_class != face_class_interior;
@@ -69,15 +63,11 @@ void select_cell(uint cell, uint slot, uint brick, int brick_class) {
         bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing)
                                      : cell_class == in_front ? exposed && f.back_facing
                                                               : f.any_triangle_front_facing);
-        if (keep) {
-            mask |= 1u << side;
-            ++count;
-        }
+        if (keep) mask |= 1u << side;
     }
-    if (count == 0u) return;
+    if (mask == 0u) return;
     atomicOr(cell_face_masks[slot >> 2], mask << (8u * (slot & 3u)));
-    atomicAdd(brick_face_counts[brick], count);
-    atomicAdd(faces_requested, count);
+    atomicAdd(brick_face_counts[brick], uint(bitCount(mask)));
 }
 
 // No shared memory and no barrier(): llvmpipe runs barrier() by switching between the

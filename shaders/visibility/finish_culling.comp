@@ -4,13 +4,7 @@
 // (an overflow shows as faces_requested > capacity). Chunks past the last face draw nothing.
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 11) readonly buffer Culling {
-    uint bricks_culled;
-    uint cells_culled;
-    uint cells_behind;
-    uint cells_straddling;
-    uint faces_requested;
-};
+#include "visibility/culling_counters.glsl"
 
 struct DrawElementsIndirectCommand {
     uint count;

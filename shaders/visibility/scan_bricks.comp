@@ -2,8 +2,9 @@
 // Exclusive prefix sums of the faces each brick gives (visibility/cull_cells.comp's counts), in
 // two levels so that no invocation walks more than scan_block bricks: BLOCKS unset, one
 // invocation per block of scan_block bricks writes each brick's offset within its block and the
-// block's total; BLOCKS, a single invocation turns the block totals into the blocks' offsets.
-// visibility/write_visible_faces.comp adds the two.
+// block's total; BLOCKS, a single invocation turns the block totals into the blocks' offsets and
+// writes the sum of all into faces_requested (the indirect draw's count, finish_culling.comp).
+// visibility/write_visible_faces.comp adds the two offsets.
 layout(local_size_x = 64) in;
 
 layout(std430, binding = 18) buffer BrickOffsets { uint brick_offsets[]; };  // within the block
@@ -11,6 +12,7 @@ layout(std430, binding = 19) buffer BlockOffsets { uint block_offsets[]; };
 
 uniform uint scan_block;  // bricks per block
 #ifdef BLOCKS
+#include "visibility/culling_counters.glsl"
 uniform uint block_count;
 
 void main() {
@@ -21,6 +23,7 @@ void main() {
         block_offsets[b] = sum;
         sum += total;
     }
+    faces_requested = sum;
 }
 #else
 layout(std430, binding = 17) readonly buffer BrickFaceCounts { uint brick_face_counts[]; };

@@ -10,12 +10,13 @@
 
 #include <cmath>
 #include <iostream>
-#include <limits>
 #include <filesystem>
 #include <random>
 
 #include "cutaway/frame_metrics.h"
+#include "cutaway/grid_layout.h"
 #include "cutaway/visibility/cell_bricks.h"
+#include "grid/face_classification.h"
 #include "generators/generator.h"
 #include "generators/presets.h"
 #include "gl_test_support.h"
@@ -147,14 +148,14 @@ TEST(VisibleDrawOrder, RecordsFollowBrickCellAndSideOrder) {
     const std::vector<std::uint32_t> records = renderer->read_visible_faces();
     ASSERT_GT(records.size(), 5000u) << "too few faces to show an order";
 
-    std::vector<std::uint32_t> compact_of_cell(grid.cell_count(), std::numeric_limits<std::uint32_t>::max());
-    for (std::uint32_t cell = 0, compact = 0; cell < grid.cell_count(); ++cell)
-        if (grid.active(cell)) compact_of_cell[cell] = compact++;
-    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, compact_of_cell, renderer->frame());
+    const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
+    const pipeline::GridLayout layout = pipeline::build_grid_layout(grid, classes, renderer->frame());
+    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, layout.compact_of_cell, renderer->frame());
     std::vector<std::uint32_t> slot_of(bricks.cells.size());
     for (std::uint32_t slot = 0; slot < bricks.cells.size(); ++slot) slot_of[bricks.cells[slot]] = slot;
-    const auto key = [&](std::uint32_t record) {  // pipeline::pack_face: cell in bits 0-26, side in 27-29
-        return (std::uint64_t(slot_of[record & 0x7ffffffu]) << 3) | ((record >> 27) & 7u);
+    const auto key = [&](std::uint32_t record) {  // pipeline::pack_face's cell and side
+        const std::uint32_t cell = record & ((1u << pipeline::face_cell_bits) - 1u), side = (record >> pipeline::face_cell_bits) & 7u;
+        return (std::uint64_t(slot_of[cell]) << 3) | side;
     };
     std::size_t out_of_order = 0;
     for (std::size_t r = 1; r < records.size(); ++r) out_of_order += key(records[r]) <= key(records[r - 1]);

@@ -40,13 +40,12 @@ void set_classification_uniforms(const gl::Program& p, const Camera& camera, con
 /// summed by one invocation: 1,420 blocks for scale-100m's 1.45M bricks).
 constexpr unsigned scan_block = 1024;
 
-std::size_t groups_of_64(std::size_t invocations) { return (invocations + 63) / 64; }
-
-void dispatch_invocations(const gl::Program& p, std::size_t invocations) {
+/// Runs `p` (local size 64) over `invocations`, then waits for its writes as `barrier` says.
+void dispatch_invocations(const gl::Program& p, std::size_t invocations, GLbitfield barrier = GL_SHADER_STORAGE_BARRIER_BIT) {
     p.use();
-    const auto [x, y] = gl::dispatch_grid(groups_of_64(invocations));
+    const auto [x, y] = gl::dispatch_grid((invocations + 63) / 64);
     glDispatchCompute(x, y, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(barrier);
 }
 
 /// The counters of visibility/cull_cells.comp.
@@ -97,10 +96,7 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
     set_classification_uniforms(classify_, camera, cut, cut_camera, keep_rear_faces);
     gl::set_uniform(classify_, "brick_count", unsigned(brick_count_));
     pyramid_.bind_for(classify_);
-    classify_.use();
-    const auto [brick_groups_x, brick_groups_y] = gl::dispatch_grid((brick_count_ + 63) / 64);
-    glDispatchCompute(brick_groups_x, brick_groups_y, 1);
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    dispatch_invocations(classify_, brick_count_, GL_TEXTURE_FETCH_BARRIER_BIT);
 
     const gl::Program& p = cull_;
     set_classification_uniforms(p, camera, cut, cut_camera, keep_rear_faces);
