@@ -98,6 +98,28 @@ def benchmark_context(document):
     return {k: v for k, v in document["context"].items() if k in keep}
 
 
+CPU_PATH_COUNTERS = ("seeds_ms", "gpu_ms", "cpu_path_ms", "transform_speedup", "stage_speedup")
+
+
+def bench_args(name):
+    """The arguments of a benchmark name 'BM_x/key:value/...' as ints."""
+    return {k: int(v) for k, v in (part.split(":") for part in name.split("/")[1:] if ":" in part)}
+
+
+def cpu_path_runs(document):
+    """BM_cpu_path rows of a benchmark document (a GPU cone-field strategy against the CPU path it
+    replaced) as dicts: preset, primary fraction, strategy and CPU_PATH_COUNTERS."""
+    presets = document["context"]["presets"].split(",")
+    strategies = document["context"]["strategies"].split(",")
+    rows = []
+    for bench in document["benchmarks"]:
+        if bench["name"].startswith("BM_cpu_path/"):
+            a = bench_args(bench["name"])
+            rows.append({"preset": presets[a["preset"]], "primary_fraction": a["fraction_bp"] / 10000,
+                         "strategy": strategies[a["strategy"]], **{k: bench[k] for k in CPU_PATH_COUNTERS}})
+    return rows
+
+
 def cutaway_runs(document):
     """BM_cutaway rows of a benchmark document as dicts: preset, pose (-1 = path), strategy, primary
     fraction, aperture (degrees, -1 = the path's own), stage ms, counters."""
@@ -108,10 +130,10 @@ def cutaway_runs(document):
     for bench in document["benchmarks"]:
         if not bench["name"].startswith("BM_cutaway/") or bench.get("error_occurred"):
             continue
-        args = dict(part.split(":") for part in bench["name"].split("/")[1:] if ":" in part)
-        row = {"preset": presets[int(args["preset"])], "pose": int(args["pose"]), "label": bench.get("label"),
-               "draw": draws[int(args.get("draw", 0))], "strategy": strategies[int(args.get("strategy", 0))],
-               "primary_fraction": int(args.get("fraction_bp", 0)) / 10000, "aperture": int(args.get("aperture", -1)),
+        args = bench_args(bench["name"])
+        row = {"preset": presets[args["preset"]], "pose": args["pose"], "label": bench.get("label"),
+               "draw": draws[args.get("draw", 0)], "strategy": strategies[args.get("strategy", 0)],
+               "primary_fraction": args.get("fraction_bp", 0) / 10000, "aperture": args.get("aperture", -1),
                "stages_ms": {s: bench.get(s, 0.0) for s in STAGES + ("total",)}}
         for key in ("baseline", "total_over_baseline", "gl_query_valid", "primary_cells", "primary_pixels", "cells",
                     "aperture_deg", "faces_secondary", "faces_baseline", "readback_bytes"):

@@ -54,11 +54,6 @@ def configuration(quick):
             "quality_size": (640, 360)}
 
 
-def bench_args(name):
-    """The arguments of a benchmark name 'BM_x/key:value/...' as ints."""
-    return {k: int(v) for k, v in (part.split(":") for part in name.split("/")[1:] if ":" in part)}
-
-
 def time_sweep(exp, config):
     """The one bench_cutaway process: BM_cutaway rows keyed (preset, fraction, strategy), and the CPU
     reference ms keyed the same way; plus the document (context)."""
@@ -73,14 +68,9 @@ def time_sweep(exp, config):
     if failed:
         raise SystemExit("bench_cutaway reported errors:\n  " + "\n  ".join(failed))
     timed = {(r["preset"], r["primary_fraction"], r["strategy"]): r for r in cx.cutaway_runs(document)}
-    presets = document["context"]["presets"].split(",")
     strategies = document["context"]["strategies"].split(",")
-    cpu = {}
-    for bench in document["benchmarks"]:
-        if bench["name"].startswith("BM_cpu_path/"):
-            a = bench_args(bench["name"])
-            cpu[(presets[a["preset"]], a["fraction_bp"] / 10000, strategies[a["strategy"]])] = {
-                k: bench[k] for k in ("seeds_ms", "gpu_ms", "cpu_path_ms", "transform_speedup", "stage_speedup")}
+    cpu = {(r["preset"], r["primary_fraction"], r["strategy"]): {k: r[k] for k in cx.CPU_PATH_COUNTERS}
+           for r in cx.cpu_path_runs(document)}
     return document, timed, cpu, strategies
 
 

@@ -3,13 +3,14 @@
 
   experiments/device/report.py RUN_DIR [RUN_DIR ...]
 RUN_DIR: the files one device call brought back (a later folder's file replaces an earlier one of
-the same name; the calls' device.log files are joined). Copies the raw outputs (benchmark JSON, render stats, scale.jsonl, context.txt,
-device.log, the rendered frame) into results/device-<gpu>/ and writes its README.md: the paper's
-Table 1 on that GPU (experiments/table1's protocol), the main
-job's frame against the plain frame and against drawing every face (the paper's path), GPU jump
-flooding against the CPU path it replaced, stage 1 of every cut strategy per model and primary
-fraction, and one frame per model from 1M to 100M cells with wall time and memory. Every ratio is
-between two configurations of the same call on the same GPU. Measures nothing itself.
+the same name; the calls' device.log files are joined). Copies the raw outputs (benchmark JSON,
+render stats, scale.jsonl, context.txt, device.log, the GL test log, the rendered frame) into
+results/device-<gpu>/ and writes its README.md: the paper's Table 1 on that GPU (experiments/table1's
+protocol), the main job's frame against the plain frame and against drawing every face (the
+paper's path), GPU jump flooding against the CPU path it replaced, stage 1 of every cut strategy
+per model and primary fraction (with a plot), one frame per model from 1M to 100M cells with wall
+time and memory, and the GL tests' summary. Every ratio is between two configurations of the same
+call on the same GPU. Measures nothing itself.
 """
 import json
 import os
@@ -115,24 +116,17 @@ def table1_section(document):
 
 
 def cpu_path_section(document):
-    presets = document["context"]["presets"].split(",")
-    strategies = document["context"]["strategies"].split(",")
     lines = ["## GPU jump flooding against the CPU path it replaced", "",
              "`BM_cpu_path` (aperture 60 degrees, 2 poses x 3 frames, interleaved): seed pass alone, the GPU strategy "
              "(seed pass, compute passes, resolve), and the CPU path (seed pass, 8.3 MB read-back, single-threaded CPU "
              "transform, upload). Transform speedup = (CPU path - seeds) / (GPU - seeds).", "",
              "| model | fraction | strategy | seeds ms | GPU ms | CPU path ms | transform speedup | stage speedup |",
              "|---|---:|---|---:|---:|---:|---:|---:|"]
-    speedups = []
-    for b in document["benchmarks"]:
-        if not b["name"].startswith("BM_cpu_path/"):
-            continue
-        a = {k: int(v) for k, v in (p.split(":") for p in b["name"].split("/")[1:] if ":" in p)}
-        strategy = strategies[a["strategy"]]
-        if strategy == "jfa":
-            speedups.append(b["transform_speedup"])
-        lines.append(f"| {presets[a['preset']]} | {a['fraction_bp'] / 100:g}% | {strategy} | {ms(b['seeds_ms'])} | "
-                     f"{ms(b['gpu_ms'])} | {ms(b['cpu_path_ms'])} | {b['transform_speedup']:.0f}x | {b['stage_speedup']:.0f}x |")
+    rows = cx.cpu_path_runs(document)
+    speedups = [r["transform_speedup"] for r in rows if r["strategy"] == "jfa"]
+    for r in rows:
+        lines.append(f"| {r['preset']} | {r['primary_fraction'] * 100:g}% | {r['strategy']} | {ms(r['seeds_ms'])} | "
+                     f"{ms(r['gpu_ms'])} | {ms(r['cpu_path_ms'])} | {r['transform_speedup']:.0f}x | {r['stage_speedup']:.0f}x |")
     if speedups:
         lines += ["", f"GPU `jfa` transform against the CPU path: {min(speedups):.0f}-{max(speedups):.0f}x "
                       f"(median {statistics.median(speedups):.0f}x) over {len(speedups)} configurations."]
