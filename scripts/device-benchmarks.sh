@@ -2,12 +2,14 @@
 # cutaway's benchmarks on a lent NVIDIA machine (the workplace's `device` tool, EGL device platform).
 # Runs there, in the repository root, with these carried from the build machine (prepared by
 # scripts/device-prepare.sh): .device/bin (cutaway, bench_cutaway built here), .device/lib (their
-# shared libraries except glibc and libstdc++), .gl (the glvnd EGL loader packages).
+# shared libraries except glibc and libstdc++), .gl (the glvnd EGL loader packages), .shared-data
+# (the tests' real data; the GL tests part only).
 #   scripts/device-benchmarks.sh GIT_REVISION SECONDS
 # Writes into $OUT (a call brings back 8 files at most: run the parts over two calls with PARTS):
 # device.log, context.txt (GPU, driver, CPU),
 # render_sapphire.json + .png (the main job's frame, metrics on: the invariants on another driver),
 # bench_table1.json (experiments/table1's protocol: the paper's Table 1 on this GPU),
+# gl_tests.log (cutaway_gl_tests and volume_tests on this GPU's driver),
 # bench_cpu_path.json (GPU jump flooding against the CPU path it replaced), bench_main.json (the
 # main job on the four presets, visible faces against all faces, plain frame beside it),
 # bench_cut_strategies.json (experiments/cut_strategies' timing sweep), scale.jsonl (one
@@ -74,6 +76,19 @@ scale() {
 export -f bench scale
 export bin scratch out
 
+# The GL tests read ../shared/data beside the repository (their compiled-in path).
+gl_tests() {
+    local data
+    data="$(dirname "$PWD")/shared/data"
+    [ -e "$data" ] || { mkdir -p "$(dirname "$data")" && ln -s "$PWD/.shared-data" "$data"; }
+    for tests in cutaway_gl_tests volume_tests; do
+        "$bin/$tests" --gtest_brief=1 >>"$out/gl_tests.log" 2>&1
+        echo "$tests exit $?" >>"$out/gl_tests.log"
+    done
+}
+export -f gl_tests
+
+part gl_tests 30 gl_tests
 part render_sapphire 20 "$bin/cutaway" render preset:sapphire --size 1920 1080 --warmup 2 \
     --repeat 9 --baseline --stats "$out/render_sapphire.json" --out "$out/render_sapphire.png"
 part table1 30 bench --presets=zaphirus,petra,opharine,sapphire --poses=8 --fractions=0.01 --mean_filters=9 \
