@@ -4,6 +4,12 @@
 uniform mat4 inverse_view_projection;  // model camera
 uniform vec2 viewport_size;
 uniform float border_width;            // w, pixels
+// Variant CUT_CAMERA_IS_VIEW (the view is not frozen, so the cut was made from the model camera
+// itself): the ray through a neighbour meets the cut image at that neighbour's own pixel, and the
+// plane's depth along the ray is all the test needs (no projection into another camera). A
+// compile-time variant, not a uniform branch: llvmpipe runs both sides of a branch.
+uniform mat4 inverse_view;              // model camera
+uniform vec2 projection_scale;          // model camera P[0][0], P[1][1]
 
 // Point where the model camera's ray through window position `window` meets the plane.
 vec3 ray_plane_hit(vec2 window, vec3 plane_point, vec3 plane_normal, out bool hit) {
@@ -18,15 +24,35 @@ vec3 ray_plane_hit(vec2 window, vec3 plane_point, vec3 plane_normal, out bool hi
     return origin + t * direction;
 }
 
+// The same test when the cut camera is the model camera: the ray through window position
+// `neighbour` (a unit step along the view axis is one unit of depth) meets the plane at depth
+// dot(plane_point - eye, n) / dot(ray, n), compared with the cut at the neighbour's pixel.
+bool clipped_at_neighbour_of_view(vec2 neighbour, vec3 plane_point, vec3 plane_normal) {
+    vec2 ndc = neighbour / viewport_size * 2.0 - 1.0;
+    vec3 ray = mat3(inverse_view) * vec3(ndc / projection_scale, -1.0);
+    float denominator = dot(ray, plane_normal);
+    if (abs(denominator) <= 1e-12) return false;
+    CutSample there;
+    there.texel = ivec2(floor(neighbour));
+    there.fragment_depth = dot(plane_point - inverse_view[3].xyz, plane_normal) / denominator;
+    bool inside = all(greaterThanEqual(there.texel, ivec2(0))) && all(lessThan(there.texel, ivec2(cut_size)));
+    there.cut_depth = inside ? texelFetch(cut_surface, there.texel, 0).a : 0.0;
+    return there.fragment_depth < there.cut_depth && !cut_is_rear_shell(there.texel);
+}
+
 bool raycast_border(vec2 window, vec3 plane_point, vec3 plane_normal) {
     const vec2 offsets[4] = vec2[](vec2(1.0, 0.0), vec2(-1.0, 0.0), vec2(0.0, 1.0), vec2(0.0, -1.0));
     for (int n = 0; n < 4; ++n) {
-        bool hit;
         vec2 neighbour = window + border_width * offsets[n];
+#ifdef CUT_CAMERA_IS_VIEW
+        if (clipped_at_neighbour_of_view(neighbour, plane_point, plane_normal)) return true;
+#else
+        bool hit;
         vec3 point = ray_plane_hit(neighbour, plane_point, plane_normal, hit);
         if (!hit) continue;
         CutSample there = cut_at(point);
         if (clipped(there, point, ivec2(floor(neighbour))) && !cut_is_rear_shell(there.texel)) return true;
+#endif
     }
     return false;
 }

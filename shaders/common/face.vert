@@ -23,6 +23,10 @@ uniform vec2 viewport_size; // pixels
 uniform mat4 cut_view;             // the cut camera (stage 2 clips against its image)
 uniform mat4 cut_view_projection;
 
+// The same face rasterises to the same depths in every program that draws it: stage 2's shaded
+// pass tests GL_EQUAL against the depths secondary/nearest_face.frag left.
+invariant gl_Position;
+
 out FaceVaryings {
 #include "common/face_varyings.glsl"
 } v_out;
@@ -73,6 +77,7 @@ void main() {
 #ifndef PLAIN_FRAME
         v_out.cut_clip = vec4(0.0, 0.0, 0.0, 1.0);
         v_out.cut_eye_depth = 0.0;
+        v_out.face_index = 0u;
 #endif
         return;
     }
@@ -98,5 +103,6 @@ void main() {
 #ifndef PLAIN_FRAME
     v_out.cut_clip = cut_view_projection * vec4(q[me], 1.0);
     v_out.cut_eye_depth = -(cut_view * vec4(q[me], 1.0)).z;
+    v_out.face_index = uint(gl_VertexID) / 4u + 1u;
 #endif
 }

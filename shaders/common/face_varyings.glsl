@@ -7,4 +7,5 @@ noperspective vec4 edge_distance;  // window pixels to the quad's 4 edges
 #ifndef PLAIN_FRAME  // the plain frame reads no cut: fewer varyings to set up per triangle
 vec4 cut_clip;                     // clip position in the cut camera (affine in world: exact)
 float cut_eye_depth;               // depth along the cut camera's view axis
+flat uint face_index;              // 1 + the face's index in the drawn face buffer (secondary/nearest_face.frag)
 #endif

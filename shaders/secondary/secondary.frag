@@ -2,8 +2,9 @@
 // Stage 2: secondary cells clipped by the cut surface. Kept fragments seen from inside their
 // cell (the cell's inside exposed by the cut) take the cut surface's normal so cells look solid.
 // Variants: BORDER_RAYCAST (the paper's border test, run per visible pixel by
-// secondary/raycast_borders.frag from the face plane written here) or BORDER_THRESHOLD (naive,
-// here), HIDE_INTERNAL_LINES.
+// secondary/raycast_borders.comp from the face plane written here) or BORDER_THRESHOLD (naive,
+// here), HIDE_INTERNAL_LINES, NEAREST_FACE_TESTED (second of two passes: only the face that
+// secondary/nearest_face.frag left at the pixel is shaded; the depth test, GL_EQUAL, runs first).
 #include "common/grid.glsl"
 #include "common/shading.glsl"
 #include "common/cut_lookup.glsl"
@@ -18,9 +19,20 @@ uniform vec3 shell_cut_colour;
 uniform float focal_px;         // model camera focal length, pixels
 uniform float border_width;     // w, pixels
 
+#ifdef NEAREST_FACE_TESTED
+layout(early_fragment_tests) in;
+layout(binding = 7) uniform usampler2D nearest_face;  // 1 + face index, 0 = none
+#endif
+
 void main() {
+#ifdef NEAREST_FACE_TESTED
+    // The nearest face passed the cut test in the first pass; a tied face drawn later did not win.
+    if (texelFetch(nearest_face, ivec2(gl_FragCoord.xy), 0).r != v_in.face_index) discard;
+    CutSample here = cut_from_clip(v_in.cut_clip, v_in.cut_eye_depth);
+#else
     CutSample here = cut_from_clip(v_in.cut_clip, v_in.cut_eye_depth);
     if (clipped(here, v_in.world_position, ivec2(gl_FragCoord.xy))) discard;
+#endif
     // Frozen view: no border lines on the model camera's rear shell (as on the cut's own clamp),
     // which the frozen cut may touch where the cut camera saw a primary in front of it.
     bool on_view_rear = at_view_rear_shell(v_in.world_position, ivec2(gl_FragCoord.xy));
@@ -51,7 +63,7 @@ void main() {
 #endif
     write_frame(colour, normal, v_in.world_position, v_in.compact_cell, flags);
 #ifdef BORDER_RAYCAST
-    // The ray-cast test runs once per visible pixel afterwards (secondary/raycast_borders.frag).
+    // The ray-cast test runs once per visible pixel afterwards (secondary/raycast_borders.comp).
     out_face_plane = vec4(v_in.face_normal, 1.0 + float(face_class));  // w: 1 + face class
 #endif
 }

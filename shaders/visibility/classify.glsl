@@ -27,7 +27,7 @@ const int culled = 0, in_front = 1, behind = 2, straddling = 3;
 vec2 cut_range(ivec2 lo, ivec2 hi) {
     int extent = max(hi.x - lo.x, hi.y - lo.y) + 1;
     int level = 0;
-    while ((1 << level) < extent) ++level;  // the rectangle spans at most 2x2 texels there
+    while ((4 << level) < extent) ++level;  // the rectangle spans at most 5x5 texels there
     level = min(level, pyramid_levels);
     vec2 range = vec2(3.0e38, -3.0e38);
     if (level == 0) {
@@ -51,12 +51,12 @@ vec2 cut_range(ivec2 lo, ivec2 hi) {
 
 // Where a convex hull of 8 points (a cell, or a brick's box) lies. Slack of 1e-5 relative keeps
 // float rounding between this pass and the draw on the conservative side.
-int classify(vec3 p[8]) {
+int classify_first(vec3 p[8], int n) {
     uint outside_all = 63u;
     float near_depth = 3.0e38, far_depth = -3.0e38;
     vec2 lo = vec2(3.0e38), hi = vec2(-3.0e38);
     bool behind_cut_eye = false;
-    for (int k = 0; k < 8; ++k) {
+    for (int k = 0; k < n; ++k) {
         vec4 c = view_projection * vec4(p[k], 1.0);
         float s = 1e-5 * (abs(c.x) + abs(c.y) + abs(c.z) + abs(c.w));
         uint outside = (c.x < -c.w - s ? 1u : 0u) | (c.x > c.w + s ? 2u : 0u) | (c.y < -c.w - s ? 4u : 0u) |
@@ -90,6 +90,8 @@ int classify(vec3 p[8]) {
     if (near_depth - eps >= cut.y) return behind;   // fragment depth >= cut everywhere: all kept
     return straddling;
 }
+
+int classify(vec3 p[8]) { return classify_first(p, 8); }
 
 int classify_box(vec3 lo, vec3 hi) {
     vec3 p[8];

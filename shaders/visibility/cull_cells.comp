@@ -4,7 +4,10 @@
 // against the model camera's frustum and the min/max pyramid of the cut depth:
 //   outside the frustum, or entirely in front of the cut (every fragment discarded): nothing;
 //   entirely behind the cut (every fragment kept): its exposed faces seen from outside;
-//   straddling the cut: every face the all-faces pass would draw for it.
+//   straddling the cut: every face the all-faces pass would draw for it, less each face that is
+//   itself outside the frustum or entirely in front of the cut (its own 4 corners tested: at
+//   petra's default camera this left 12M of the 21M fragments stage 2 rasterised, 81% of which
+//   the cut discarded).
 // Each secondary cell's surviving sides go into its byte of cell_face_masks (by its slot in the
 // brick-ordered cell list) and are counted per brick (visibility/scan_bricks.comp sums them);
 // visibility/write_visible_faces.comp then writes the records in brick and cell order, so that
@@ -63,6 +66,11 @@ void select_cell(uint cell, uint slot, uint brick, int brick_class) {
         bool keep = !f.collapsed && (cell_class == straddling ? (exposed || f.back_facing)
                                      : cell_class == in_front ? exposed && f.back_facing
                                                               : f.any_triangle_front_facing);
+        if (keep && cell_class == straddling) {  // the face's own test; in front, as for a cell
+            vec3 q[8] = vec3[8](f.q[0], f.q[1], f.q[2], f.q[3], f.q[0], f.q[0], f.q[0], f.q[0]);
+            int face_where = classify_first(q, 4);
+            keep = face_where == culled ? false : face_where == in_front ? exposed && f.back_facing && keep_rear_faces : true;
+        }
         if (keep) mask |= 1u << side;
     }
     if (mask == 0u) return;

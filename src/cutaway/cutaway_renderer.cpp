@@ -263,7 +263,7 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(s.depth_ties_to_last ? GL_LEQUAL : GL_LESS);
         if (!cut_needed) return;
-        secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, clip);
+        secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, clip, scene_, s.draw);
         if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, clip);
     });
     gl::timed_stage(timer_, "primary", [&] {

@@ -33,6 +33,7 @@ SceneTargets::SceneTargets(int width, int height)
       id(GL_TEXTURE_2D, GL_RG32UI, width, height),
       face_plane(GL_TEXTURE_2D, GL_RGBA32F, width, height),
       depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height),
+      nearest_face(GL_TEXTURE_2D, GL_R32UI, width, height),
       shell_depth(GL_TEXTURE_2D, GL_R32F, width, height),
       shell_depth_buffer(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
     framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
@@ -43,6 +44,10 @@ SceneTargets::SceneTargets(int width, int height)
     const std::array<GLenum, 4> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
                                         GL_COLOR_ATTACHMENT3};
     framebuffer.finish(buffers, "scene");
+    nearest_face_framebuffer.attach(GL_COLOR_ATTACHMENT0, nearest_face);
+    nearest_face_framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+    const std::array<GLenum, 1> nearest_buffers{GL_COLOR_ATTACHMENT0};
+    nearest_face_framebuffer.finish(nearest_buffers, "nearest face");
     plain_framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
     plain_framebuffer.attach(GL_COLOR_ATTACHMENT2, id);
     plain_framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
@@ -60,6 +65,7 @@ void SceneTargets::clear() const {
     glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 2, zero_id);
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 3, zero);
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
+    glClearNamedFramebufferuiv(nearest_face_framebuffer.id(), GL_COLOR, 0, zero_id);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_DEPTH, 0, &far_depth);
 }

@@ -25,6 +25,10 @@ struct SceneTargets {
     gl::Texture face_plane;    ///< RGBA32F: world normal of the visible secondary face, w = 1 (0 elsewhere)
     gl::Texture depth;         ///< DEPTH32F
     gl::Framebuffer framebuffer;
+    /// Stage 2's first pass on the visible path (secondary/nearest_face.frag): 1 + the nearest
+    /// kept face's index per pixel, with `depth`.
+    gl::Texture nearest_face;  ///< R32UI
+    gl::Framebuffer nearest_face_framebuffer;
     /// The plain frame's (`--baseline`): colour, id and depth only (secondary/plain.frag), so a
     /// frame without a cut writes 12 bytes per pixel instead of the G-buffer's 48.
     gl::Framebuffer plain_framebuffer;

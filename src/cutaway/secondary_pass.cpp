@@ -1,15 +1,14 @@
 #include "cutaway/secondary_pass.h"
 
-#include "cutaway/post/fullscreen_pass.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 
 SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/secondary.frag"}}),
+      nearest_face_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/nearest_face.frag"}}),
       plain_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/plain.frag"}}),
-      borders_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"},
-                              {GL_FRAGMENT_SHADER, "secondary/raycast_borders.frag"}})) {}
+      borders_(shaders, {{GL_COMPUTE_SHADER, "secondary/raycast_borders.comp"}}) {}
 
 namespace {
 /// The uniforms of shaders/common/cut_lookup.glsl; `camera`: the model camera.
@@ -37,11 +36,15 @@ const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
 
 void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
                                           const CutClip& clip) {
-    const gl::Program& p = borders_;
+    const Camera& cut_camera = clip.cut_camera;
+    const bool cut_camera_is_view = cut_camera.view == camera.view && cut_camera.projection == camera.projection &&
+                                    cut_camera.width == camera.width && cut_camera.height == camera.height;
+    const gl::Program& p = borders_.get(cut_camera_is_view ? gl::ShaderDefines{{"CUT_CAMERA_IS_VIEW", ""}} : gl::ShaderDefines{});
     set_cut_lookup(p, clip, camera);
     gl::set_uniform(p, "inverse_view_projection", glm::inverse(camera.view_projection()));
     gl::set_uniform(p, "inverse_view", glm::inverse(camera.view));
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
+
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
@@ -54,17 +57,32 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     gl::set_uniform(p, "scene_id", 1);
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
-    glNamedFramebufferParameteri(no_attachments_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, camera.width);
-    glNamedFramebufferParameteri(no_attachments_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, camera.height);
-    draw_fullscreen(p, no_attachments_, camera.width, camera.height);
+    p.use();
+    constexpr int group_x = 64, group_y = 4;  // raycast_borders.comp's local size
+    glDispatchCompute(GLuint((camera.width + group_x - 1) / group_x), GLuint((camera.height + group_y - 1) / group_y), 1);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 
 void SecondaryPass::draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
-                         const CutClip& clip) {
+                         const CutClip& clip, const SceneTargets& scene, DrawMode draw) {
     gl::ShaderDefines defines{{"CULL_FRONT_INTERIOR", ""},
                               {settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", ""}};
     if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
+    const bool two_passes = draw == DrawMode::visible;
+    GLint depth_function = GL_LESS;
+    if (two_passes) {
+        const gl::Program& nearest = nearest_face_.get({{"CULL_FRONT_INTERIOR", ""}});
+        prepare_face_program(nearest, context);
+        set_cut_lookup(nearest, clip, context.camera);
+        scene.nearest_face_framebuffer.bind();
+        submit();
+        glGetIntegerv(GL_DEPTH_FUNC, &depth_function);
+        glDepthFunc(GL_EQUAL);
+        glDepthMask(GL_FALSE);
+        defines.emplace_back("NEAREST_FACE_TESTED", "");
+        scene.nearest_face.bind(7);
+    }
+    scene.framebuffer.bind();
     const gl::Program& p = programs_.get(defines);
     prepare_face_program(p, context);
     set_cut_lookup(p, clip, context.camera);
@@ -73,6 +91,9 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
     submit();
+    if (!two_passes) return;
+    glDepthMask(GL_TRUE);
+    glDepthFunc(GLenum(depth_function));
 }
 
 void SecondaryPass::draw_plain(const FaceDrawContext& context, const std::function<void()>& submit,

@@ -23,9 +23,12 @@ class SecondaryPass {
 public:
     explicit SecondaryPass(const gl::ShaderLibrary& shaders);
     /// Sets up the secondary program, then `submit` issues the face draw (a face list or the
-    /// culling pass's indirect draw) into the bound scene framebuffer, clipped by `clip`.
+    /// culling pass's indirect draw) into `scene`'s framebuffer, clipped by `clip`, under the
+    /// depth function the caller set. `draw` visible: two passes, the cut test and depth first
+    /// (SceneTargets::nearest_face), then shading once per pixel (GL_EQUAL, the first pass's face
+    /// only); all_faces: one pass, every fragment shaded, as the paper drew it.
     void draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
-              const CutClip& clip);
+              const CutClip& clip, const SceneTargets& scene, DrawMode draw);
     /// The plain frame (no cut): `submit`'s faces shaded with their edges into the bound plain
     /// scene framebuffer (SceneTargets::plain_framebuffer), with early depth testing. `draw`:
     /// visible = ExposedSurface's faces with stored corners, all_faces = every face's records.
@@ -37,9 +40,9 @@ public:
 
 private:
     gl::ProgramCache programs_;
+    gl::ProgramCache nearest_face_;
     gl::ProgramCache plain_;
-    gl::Program borders_;
-    gl::Framebuffer no_attachments_;  ///< sized by default width/height for the image-store pass
+    gl::ProgramCache borders_;
 };
 
 }  // namespace cutaway::pipeline
