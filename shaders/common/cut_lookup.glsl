@@ -43,7 +43,9 @@ bool cut_is_rear_shell(ivec2 texel) {
 // texels where the rear shell is seen at a slant). The model camera's own rear shell
 // (src/cutaway/rear_shell_depth.h, drawn from the model camera each frame) is kept instead: a
 // point at most rear_margin in front of it is never clipped, so the rear shows as cut fill.
-uniform bool keep_view_rear_shell;  // false unless frozen (the cut's own clamp does it then)
+// Variant VIEW_REAR_SHELL (set only while the view is frozen; a compile-time variant because
+// llvmpipe would run the test's texture fetch for every fragment behind a false uniform).
+#ifdef VIEW_REAR_SHELL
 uniform sampler2D view_rear_shell;  // DEPTH32F, model camera: (s - near) / (far - near), 0 = none
 uniform mat4 view_rear_view;        // model camera view matrix
 uniform vec2 view_rear_range;       // model camera near, far planes
@@ -51,12 +53,15 @@ uniform float view_rear_margin;     // render units
 
 // Whether `world`, seen at model-camera pixel `pixel`, lies on the model camera's rear shell.
 bool at_view_rear_shell(vec3 world, ivec2 pixel) {
-    if (!keep_view_rear_shell || any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, textureSize(view_rear_shell, 0))))
+    if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, textureSize(view_rear_shell, 0))))
         return false;
     float stored = texelFetch(view_rear_shell, pixel, 0).r;
     float rear = view_rear_range.x + stored * (view_rear_range.y - view_rear_range.x);
     return stored > 0.0 && -(view_rear_view * vec4(world, 1.0)).z >= rear - view_rear_margin;
 }
+#else
+bool at_view_rear_shell(vec3 world, ivec2 pixel) { return false; }
+#endif
 
 // Whether stage 2 discards the point `world` seen at model-camera pixel `pixel` (its sample `s`).
 bool clipped(CutSample s, vec3 world, ivec2 pixel) {

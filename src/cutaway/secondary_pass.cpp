@@ -22,16 +22,18 @@ void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& cam
     gl::set_uniform(p, "cut_projection", cut_camera.projection);
     gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
     gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
-    // Its own unit even when unused: two sampler types may not share one (the colour map's is 0).
+    if (!clip.view_rear_shell) return;  // the programs are built without VIEW_REAR_SHELL then
     gl::set_uniform(p, "view_rear_shell", 6);
-    gl::set_uniform(p, "keep_view_rear_shell", clip.view_rear_shell != nullptr);
-    if (!clip.view_rear_shell) return;
     clip.view_rear_shell->bind(6);
     gl::set_uniform(p, "view_rear_view", camera.view);
     gl::set_uniform(p, "view_rear_range", glm::vec2(camera.near_plane, camera.far_plane));
     gl::set_uniform(p, "view_rear_margin", clip.rear_margin);
 }
 const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
+/// VIEW_REAR_SHELL (common/cut_lookup.glsl) while the view is frozen, nothing otherwise.
+gl::ShaderDefines view_rear_shell_define(const CutClip& clip) {
+    return clip.view_rear_shell ? gl::ShaderDefines{{"VIEW_REAR_SHELL", ""}} : gl::ShaderDefines{};
+}
 }  // namespace
 
 void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
@@ -39,7 +41,9 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     const Camera& cut_camera = clip.cut_camera;
     const bool cut_camera_is_view = cut_camera.view == camera.view && cut_camera.projection == camera.projection &&
                                     cut_camera.width == camera.width && cut_camera.height == camera.height;
-    const gl::Program& p = borders_.get(cut_camera_is_view ? gl::ShaderDefines{{"CUT_CAMERA_IS_VIEW", ""}} : gl::ShaderDefines{});
+    gl::ShaderDefines defines = view_rear_shell_define(clip);
+    if (cut_camera_is_view) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    const gl::Program& p = borders_.get(defines);
     set_cut_lookup(p, clip, camera);
     gl::set_uniform(p, "inverse_view_projection", glm::inverse(camera.view_projection()));
     gl::set_uniform(p, "inverse_view", glm::inverse(camera.view));
@@ -65,13 +69,15 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
 
 void SecondaryPass::draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
                          const CutClip& clip, const SceneTargets& scene, DrawMode draw) {
-    gl::ShaderDefines defines{{"CULL_FRONT_INTERIOR", ""},
-                              {settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", ""}};
+    gl::ShaderDefines defines = view_rear_shell_define(clip);
+    defines.emplace_back("CULL_FRONT_INTERIOR", "");
+    const gl::ShaderDefines nearest_defines = defines;
+    defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
     if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
     const bool two_passes = draw == DrawMode::visible;
     GLint depth_function = GL_LESS;
     if (two_passes) {
-        const gl::Program& nearest = nearest_face_.get({{"CULL_FRONT_INTERIOR", ""}});
+        const gl::Program& nearest = nearest_face_.get(nearest_defines);
         prepare_face_program(nearest, context);
         set_cut_lookup(nearest, clip, context.camera);
         scene.nearest_face_framebuffer.bind();
