@@ -64,6 +64,8 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
     s.only = parse_choice<OnlyLayer>("--only", only, {{"both", OnlyLayer::both}, {"primaries", OnlyLayer::primaries},
                                                       {"secondaries", OnlyLayer::secondaries}});
     s.draw = parse_choice<DrawMode>("--draw", draw, {{"visible", DrawMode::visible}, {"all-faces", DrawMode::all_faces}});
+    s.stage2_passes = parse_choice<Stage2Passes>("--stage2-passes", stage2_passes,
+                                                 {{"auto", Stage2Passes::automatic}, {"1", Stage2Passes::one}, {"2", Stage2Passes::two}});
     s.seeds = parse_choice<SeedSource>("--seeds", seeds, {{"boxes", SeedSource::boxes}, {"geometry", SeedSource::geometry}});
     for (float a : aperture)
         if (!(a >= 0 && a <= 180))
@@ -82,7 +84,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
     return {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
-            {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"seeds", pipeline::to_string(s.seeds)},
+            {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"stage2_passes", pipeline::to_string(s.stage2_passes)}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
@@ -110,6 +112,8 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--strategy", o.settings.strategy, "cut-surface strategy (default frustum-clusters: one frustum per IJK box of adjacent primaries; frustum: one per primary, the paper's)")->capture_default_str();
     c.add_option("--draw", o.draw,
                  "stage 2 faces: visible (GPU culling against the frustum and the cut) | all-faces (the paper's path)");
+    c.add_option("--stage2-passes", o.stage2_passes,
+                 "visible path: auto (2 from 1.5M pixels) | 1 (every fragment shaded) | 2 (cut test and depth first, then shading once per pixel)");
     c.add_option("--seeds", o.seeds, "seeds of the distance-transform strategies: boxes|geometry");
     c.add_option("--border", o.border, "border lines: raycast|threshold");
     c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels")

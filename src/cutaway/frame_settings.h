@@ -14,6 +14,10 @@ enum class SeedSource { boxes, geometry };
 /// Stage 2's faces: `visible` (a GPU culling pass picks the faces that can reach a pixel, SPEC.md
 /// section 6) or `all_faces` (every face of every secondary cell, the paper's path).
 enum class DrawMode { visible, all_faces };
+/// Stage 2's passes on the visible path: `two` = the cut test and depth first, then shading once
+/// per pixel (secondary/nearest_face.frag); `one` = every fragment shaded, as all-faces draws;
+/// `automatic` = two from 1.5M pixels (secondary_pass.cpp says what was measured).
+enum class Stage2Passes { automatic, one, two };
 
 struct FrameSettings {
     /// Cut-surface strategy (cut_surface_registry.h). The default draws one frustum per IJK box of
@@ -21,6 +25,7 @@ struct FrameSettings {
     /// cost); `frustum` is the paper's one frustum per primary cell (Table 1 uses it).
     std::string strategy = "frustum-clusters";
     DrawMode draw = DrawMode::visible;
+    Stage2Passes stage2_passes = Stage2Passes::automatic;
     SeedSource seeds = SeedSource::boxes;  ///< seeds of the distance-transform strategies
     /// Full opening angles (the paper's aperture), degrees 0..180: each wall leans out by half of
     /// it from the view ray (shaders/cut_surface/frustum.geom); 180: flat walls.
@@ -64,5 +69,6 @@ const char* to_string(MeanFilterKernel kernel);
 const char* to_string(OnlyLayer only);
 const char* to_string(SeedSource seeds);
 const char* to_string(DrawMode draw);
+const char* to_string(Stage2Passes passes);
 
 }  // namespace cutaway::pipeline

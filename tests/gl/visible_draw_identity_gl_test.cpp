@@ -5,7 +5,8 @@
 // the depth test differs (drawing order decides ties; the visible path draws in brick, cell and
 // side order, VisibleDrawOrder checks it).
 // Also on every such frame: every primary pixel visible and no secondary pixel in front of the
-// cut (the SPEC.md section 2 invariants hold for the new path too).
+// cut (the SPEC.md section 2 invariants hold for the new path too). Odd trials draw stage 2's
+// visible path in two passes (nearest face first), even ones in one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -93,7 +94,10 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
         pipeline::FrameSettings last_wins = settings;
         last_wins.depth_ties_to_last = true;
         const Frame all_last = render(*renderer, last_wins, DrawMode::all_faces, camera);
-        const Frame visible = render(*renderer, settings, DrawMode::visible, camera);
+        // Stage 2's two passes on odd trials (at this size `automatic` would draw one).
+        pipeline::FrameSettings visible_settings = settings;
+        visible_settings.stage2_passes = trial % 2 ? pipeline::Stage2Passes::two : pipeline::Stage2Passes::one;
+        const Frame visible = render(*renderer, visible_settings, DrawMode::visible, camera);
         EXPECT_EQ(pipeline::secondary_pixels_in_front_of_cut(*renderer, 1e-5), 0u);
         for (std::size_t p = 0; p < all.cells.size(); ++p) {
             ++pixels;
