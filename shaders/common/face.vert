@@ -8,8 +8,7 @@
 // CULL_FRONT (the rear shell: only faces seen from inside their cell); PLAIN_FRAME (no cut read);
 // STORED_CORNERS (the face's corners read from src/cutaway/exposed_surface.h's buffer, 4 per
 // face in drawing order) with CULL_HIDDEN_BACK (a face both of whose triangles face away, which
-// its own cell hides, is dropped: what visibility/cull_cells.comp keeps behind the cut);
-// NEAREST_FACE_ONLY, CUT_CAMERA_IS_VIEW (fewer outputs: common/face_varyings.glsl).
+// its own cell hides, is dropped: what visibility/cull_cells.comp keeps behind the cut).
 #include "common/grid.glsl"
 #include "common/face_frame.glsl"
 
@@ -70,20 +69,14 @@ void main() {
 #endif
     if (culled) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // all 4 vertices outside the clip volume
-#if !defined(NEAREST_FACE_ONLY) || defined(VIEW_REAR_SHELL)
         v_out.world_position = vec3(0.0);
-#endif
-#ifndef NEAREST_FACE_ONLY
         v_out.face_normal = vec3(0.0, 0.0, 1.0);
         v_out.compact_cell = 0u;
         v_out.face_info = 0u;
         v_out.edge_distance = vec4(1e6);
-#endif
 #ifndef PLAIN_FRAME
-#ifndef CUT_CAMERA_IS_VIEW
         v_out.cut_clip = vec4(0.0, 0.0, 0.0, 1.0);
         v_out.cut_eye_depth = 0.0;
-#endif
         v_out.face_index = 0u;
 #endif
         return;
@@ -95,27 +88,21 @@ void main() {
         in_front = in_front && clip[k].w > 0.0;
     }
     uint me = uint(gl_VertexID) % 4u;
-    gl_Position = clip[me];
-#if !defined(NEAREST_FACE_ONLY) || defined(VIEW_REAR_SHELL)
-    v_out.world_position = q[me];
-#endif
-#ifndef NEAREST_FACE_ONLY
     vec4 distances = vec4(1e6);
     if (in_front) {
         vec2 w[4];
         for (uint k = 0u; k < 4u; ++k) w[k] = to_window(clip[k]);
         for (uint e = 0u; e < 4u; ++e) distances[e] = distance_to_line(w[me], w[e], w[(e + 1u) % 4u]);
     }
+    gl_Position = clip[me];
+    v_out.world_position = q[me];
     v_out.face_normal = normalize(normal);
     v_out.compact_cell = cell;
     v_out.face_info = face_class | (back_facing ? 4u : 0u);
     v_out.edge_distance = distances;
-#endif
 #ifndef PLAIN_FRAME
-#ifndef CUT_CAMERA_IS_VIEW
     v_out.cut_clip = cut_view_projection * vec4(q[me], 1.0);
     v_out.cut_eye_depth = -(cut_view * vec4(q[me], 1.0)).z;
-#endif
     v_out.face_index = uint(gl_VertexID) / 4u + 1u;
 #endif
 }

@@ -10,16 +10,10 @@ in FaceVaryings {
 #include "common/face_varyings.glsl"
 } v_in;
 
-#include "common/cut_of_fragment.glsl"
-
 layout(location = 0) out uint out_face;
 
 void main() {
-#ifdef VIEW_REAR_SHELL
-    vec3 world = v_in.world_position;
-#else
-    vec3 world = vec3(0.0);  // not read: at_view_rear_shell is false without VIEW_REAR_SHELL
-#endif
-    if (clipped(cut_of_fragment(), world, ivec2(gl_FragCoord.xy))) discard;
+    CutSample here = cut_from_clip(v_in.cut_clip, v_in.cut_eye_depth);
+    if (clipped(here, v_in.world_position, ivec2(gl_FragCoord.xy))) discard;
     out_face = v_in.face_index;
 }

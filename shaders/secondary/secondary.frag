@@ -19,8 +19,6 @@ uniform vec3 shell_cut_colour;
 uniform float focal_px;         // model camera focal length, pixels
 uniform float border_width;     // w, pixels
 
-#include "common/cut_of_fragment.glsl"
-
 #ifdef NEAREST_FACE_TESTED
 layout(early_fragment_tests) in;
 layout(binding = 7) uniform usampler2D nearest_face;  // 1 + face index, 0 = none
@@ -30,9 +28,9 @@ void main() {
 #ifdef NEAREST_FACE_TESTED
     // The nearest face passed the cut test in the first pass; a tied face drawn later did not win.
     if (texelFetch(nearest_face, ivec2(gl_FragCoord.xy), 0).r != v_in.face_index) discard;
-    CutSample here = cut_of_fragment();
+    CutSample here = cut_from_clip(v_in.cut_clip, v_in.cut_eye_depth);
 #else
-    CutSample here = cut_of_fragment();
+    CutSample here = cut_from_clip(v_in.cut_clip, v_in.cut_eye_depth);
     if (clipped(here, v_in.world_position, ivec2(gl_FragCoord.xy))) discard;
 #endif
     // Frozen view: no border lines on the model camera's rear shell (as on the cut's own clamp),

@@ -36,23 +36,20 @@ const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
 /// llvmpipe (petra, default camera, medians of 5 frames, interleaved): 1920x1080 two passes 140
 /// ms against one 165 ms; 1280x720 124-129 against 100-116; 640x360 57-63 against 46-53.
 bool two_passes_pay(const Camera& camera) { return double(camera.width) * camera.height >= 1.5e6; }
-/// The stage 2 shaders' cut variants: VIEW_REAR_SHELL (common/cut_lookup.glsl) while the view is
-/// frozen; CUT_CAMERA_IS_VIEW (common/cut_of_fragment.glsl, common/border_test.glsl) when the cut
-/// was made from the model camera itself.
-gl::ShaderDefines cut_defines(const CutClip& clip, const Camera& camera) {
-    gl::ShaderDefines defines;
-    if (clip.view_rear_shell) defines.emplace_back("VIEW_REAR_SHELL", "");
-    const Camera& cut = clip.cut_camera;
-    if (cut.view == camera.view && cut.projection == camera.projection && cut.width == camera.width &&
-        cut.height == camera.height)
-        defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
-    return defines;
+/// VIEW_REAR_SHELL (common/cut_lookup.glsl) while the view is frozen, nothing otherwise.
+gl::ShaderDefines view_rear_shell_define(const CutClip& clip) {
+    return clip.view_rear_shell ? gl::ShaderDefines{{"VIEW_REAR_SHELL", ""}} : gl::ShaderDefines{};
 }
 }  // namespace
 
 void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
                                           const CutClip& clip) {
-    const gl::Program& p = borders_.get(cut_defines(clip, camera));
+    const Camera& cut_camera = clip.cut_camera;
+    const bool cut_camera_is_view = cut_camera.view == camera.view && cut_camera.projection == camera.projection &&
+                                    cut_camera.width == camera.width && cut_camera.height == camera.height;
+    gl::ShaderDefines defines = view_rear_shell_define(clip);
+    if (cut_camera_is_view) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    const gl::Program& p = borders_.get(defines);
     set_cut_lookup(p, clip, camera);
     gl::set_uniform(p, "inverse_view_projection", glm::inverse(camera.view_projection()));
     gl::set_uniform(p, "inverse_view", glm::inverse(camera.view));
@@ -78,10 +75,9 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
 
 void SecondaryPass::draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
                          const CutClip& clip, const SceneTargets& scene, DrawMode draw) {
-    gl::ShaderDefines defines = cut_defines(clip, context.camera);
+    gl::ShaderDefines defines = view_rear_shell_define(clip);
     defines.emplace_back("CULL_FRONT_INTERIOR", "");
-    gl::ShaderDefines nearest_defines = defines;
-    nearest_defines.emplace_back("NEAREST_FACE_ONLY", "");
+    const gl::ShaderDefines nearest_defines = defines;
     defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
     if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
     const bool two_passes = draw == DrawMode::visible &&
