@@ -38,7 +38,7 @@ struct RenderOptions {
     std::string only = "both";
     std::string seeds = "boxes";
     std::string draw = "visible";
-    std::string stage2_passes = "auto";
+    std::string stage2_passes = "1";
     std::vector<float> aperture{60, 60};  ///< full opening angles, degrees
     bool aperture_180 = false;
     std::vector<float> camera{35, 30, 0};

@@ -14,10 +14,11 @@ enum class SeedSource { boxes, geometry };
 /// Stage 2's faces: `visible` (a GPU culling pass picks the faces that can reach a pixel, SPEC.md
 /// section 6) or `all_faces` (every face of every secondary cell, the paper's path).
 enum class DrawMode { visible, all_faces };
-/// Stage 2's passes on the visible path: `two` = the cut test and depth first, then shading once
-/// per pixel (secondary/nearest_face.frag); `one` = every fragment shaded, as all-faces draws;
-/// `automatic` = two from 1.5M pixels (secondary_pass.cpp says what was measured).
-enum class Stage2Passes { automatic, one, two };
+/// Stage 2's passes on the visible path: `one` = every fragment shaded, as all-faces draws; `two`
+/// = the cut test and depth first, then shading once per pixel (secondary/nearest_face.frag).
+/// One is the default: on llvmpipe, once the culling drops the faces entirely in front of the cut,
+/// the second pass's triangle set-up costs about what it saves (README, issue 14).
+enum class Stage2Passes { one, two };
 
 struct FrameSettings {
     /// Cut-surface strategy (cut_surface_registry.h). The default draws one frustum per IJK box of
@@ -25,7 +26,7 @@ struct FrameSettings {
     /// cost); `frustum` is the paper's one frustum per primary cell (Table 1 uses it).
     std::string strategy = "frustum-clusters";
     DrawMode draw = DrawMode::visible;
-    Stage2Passes stage2_passes = Stage2Passes::automatic;
+    Stage2Passes stage2_passes = Stage2Passes::one;
     SeedSource seeds = SeedSource::boxes;  ///< seeds of the distance-transform strategies
     /// Full opening angles (the paper's aperture), degrees 0..180: each wall leans out by half of
     /// it from the view ray (shaders/cut_surface/frustum.geom); 180: flat walls.

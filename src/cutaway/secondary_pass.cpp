@@ -30,12 +30,6 @@ void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& cam
     gl::set_uniform(p, "view_rear_margin", clip.rear_margin);
 }
 const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
-/// Whether stage 2's visible path runs its two passes (nearest face, then shading once per pixel)
-/// rather than one: the second pass costs a second run of the vertex shader, which rebuilds each
-/// face's corners from the pillars, and pays only when fragments per face are many. Measured on
-/// llvmpipe (petra, default camera, medians of 5 frames, interleaved): 1920x1080 two passes 140
-/// ms against one 165 ms; 1280x720 124-129 against 100-116; 640x360 57-63 against 46-53.
-bool two_passes_pay(const Camera& camera) { return double(camera.width) * camera.height >= 1.5e6; }
 /// VIEW_REAR_SHELL (common/cut_lookup.glsl) while the view is frozen, nothing otherwise.
 gl::ShaderDefines view_rear_shell_define(const CutClip& clip) {
     return clip.view_rear_shell ? gl::ShaderDefines{{"VIEW_REAR_SHELL", ""}} : gl::ShaderDefines{};
@@ -80,9 +74,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     const gl::ShaderDefines nearest_defines = defines;
     defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
     if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
-    const bool two_passes = draw == DrawMode::visible &&
-                            (settings.stage2_passes == Stage2Passes::automatic ? two_passes_pay(context.camera)
-                                                                               : settings.stage2_passes == Stage2Passes::two);
+    const bool two_passes = draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::two;
     GLint depth_function = GL_LESS;
     if (two_passes) {
         const gl::Program& nearest = nearest_face_.get(nearest_defines);

@@ -24,8 +24,8 @@ public:
     explicit SecondaryPass(const gl::ShaderLibrary& shaders);
     /// Sets up the secondary program, then `submit` issues the face draw (a face list or the
     /// culling pass's indirect draw) into `scene`'s framebuffer, clipped by `clip`, under the
-    /// depth function the caller set. `draw` visible with settings.stage2_passes two (automatic:
-    /// from 1.5M pixels): the cut test and depth first (SceneTargets::nearest_face), then shading
+    /// depth function the caller set. `draw` visible with settings.stage2_passes two: the cut test
+    /// and depth first (SceneTargets::nearest_face), then shading
     /// once per pixel (GL_EQUAL, the first pass's face only); otherwise, and always for
     /// all_faces, one pass with every fragment shaded, as the paper drew it.
     void draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,

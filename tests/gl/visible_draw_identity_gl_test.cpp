@@ -94,7 +94,7 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
         pipeline::FrameSettings last_wins = settings;
         last_wins.depth_ties_to_last = true;
         const Frame all_last = render(*renderer, last_wins, DrawMode::all_faces, camera);
-        // Stage 2's two passes on odd trials (at this size `automatic` would draw one).
+        // Stage 2's two passes on odd trials.
         pipeline::FrameSettings visible_settings = settings;
         visible_settings.stage2_passes = trial % 2 ? pipeline::Stage2Passes::two : pipeline::Stage2Passes::one;
         const Frame visible = render(*renderer, visible_settings, DrawMode::visible, camera);
