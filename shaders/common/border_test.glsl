@@ -29,15 +29,14 @@ vec3 ray_plane_hit(vec2 window, vec3 plane_point, vec3 plane_normal, out bool hi
 // dot(plane_point - eye, n) / dot(ray, n), compared with the cut at the neighbour's pixel.
 bool clipped_at_neighbour_of_view(vec2 neighbour, vec3 plane_point, vec3 plane_normal) {
     vec2 ndc = neighbour / viewport_size * 2.0 - 1.0;
+    vec3 eye = inverse_view[3].xyz;
     vec3 ray = mat3(inverse_view) * vec3(ndc / projection_scale, -1.0);
     float denominator = dot(ray, plane_normal);
     if (abs(denominator) <= 1e-12) return false;
-    CutSample there;
-    there.texel = ivec2(floor(neighbour));
-    there.fragment_depth = dot(plane_point - inverse_view[3].xyz, plane_normal) / denominator;
-    bool inside = all(greaterThanEqual(there.texel, ivec2(0))) && all(lessThan(there.texel, ivec2(cut_size)));
-    there.cut_depth = inside ? texelFetch(cut_surface, there.texel, 0).a : 0.0;
-    return there.fragment_depth < there.cut_depth && !cut_is_rear_shell(there.texel);
+    float depth = dot(plane_point - eye, plane_normal) / denominator;
+    ivec2 texel = ivec2(floor(neighbour));
+    CutSample there = cut_at_texel(texel, depth, true);  // behind the eye, depth < 0 is clipped as by cut_at
+    return clipped(there, eye + depth * ray, texel) && !cut_is_rear_shell(texel);
 }
 
 bool raycast_border(vec2 window, vec3 plane_point, vec3 plane_normal) {

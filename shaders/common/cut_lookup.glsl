@@ -12,14 +12,20 @@ struct CutSample {
     float cut_depth;        // the cut surface's depth at that pixel (0: no cut)
 };
 
-// From the point's clip position and depth in the cut camera (interpolated per fragment).
-CutSample cut_from_clip(vec4 clip, float eye_depth) {
+// A point at depth `eye_depth` along the cut camera's axis seen at cut pixel `texel`; `in_front`:
+// the point is in front of the cut camera (a point behind it meets no cut).
+CutSample cut_at_texel(ivec2 texel, float eye_depth, bool in_front) {
     CutSample s;
     s.fragment_depth = eye_depth;
-    s.texel = ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * cut_size));
-    bool inside = clip.w > 0.0 && all(greaterThanEqual(s.texel, ivec2(0))) && all(lessThan(s.texel, ivec2(cut_size)));
-    s.cut_depth = inside ? texelFetch(cut_surface, s.texel, 0).a : 0.0;
+    s.texel = texel;
+    bool inside = in_front && all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, ivec2(cut_size)));
+    s.cut_depth = inside ? texelFetch(cut_surface, texel, 0).a : 0.0;
     return s;
+}
+
+// From the point's clip position and depth in the cut camera (interpolated per fragment).
+CutSample cut_from_clip(vec4 clip, float eye_depth) {
+    return cut_at_texel(ivec2(floor((clip.xy / clip.w * 0.5 + 0.5) * cut_size)), eye_depth, clip.w > 0.0);
 }
 
 CutSample cut_at(vec3 world) {

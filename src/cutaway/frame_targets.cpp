@@ -65,9 +65,12 @@ void SceneTargets::clear() const {
     glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 2, zero_id);
     glClearNamedFramebufferfv(framebuffer.id(), GL_COLOR, 3, zero);
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);
-    glClearNamedFramebufferuiv(nearest_face_framebuffer.id(), GL_COLOR, 0, zero_id);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_COLOR, 0, zero);
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_DEPTH, 0, &far_depth);
+}
+
+void SceneTargets::clear_nearest_face() const {
+    glClearNamedFramebufferuiv(nearest_face_framebuffer.id(), GL_COLOR, 0, zero_id);
 }
 
 void SceneTargets::clear_plain() const {

@@ -36,6 +36,8 @@ struct SceneTargets {
     gl::Texture shell_depth_buffer;
     gl::Framebuffer shell_framebuffer;
     void clear() const;
+    /// Only the two-pass stage 2 reads nearest_face: cleared there, not with the rest.
+    void clear_nearest_face() const;
     void clear_plain() const;
 };
 

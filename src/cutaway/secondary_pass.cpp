@@ -48,7 +48,6 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     gl::set_uniform(p, "inverse_view_projection", glm::inverse(camera.view_projection()));
     gl::set_uniform(p, "inverse_view", glm::inverse(camera.view));
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
-
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
@@ -80,6 +79,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
         const gl::Program& nearest = nearest_face_.get(nearest_defines);
         prepare_face_program(nearest, context);
         set_cut_lookup(nearest, clip, context.camera);
+        scene.clear_nearest_face();
         scene.nearest_face_framebuffer.bind();
         submit();
         glGetIntegerv(GL_DEPTH_FUNC, &depth_function);
