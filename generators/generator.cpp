@@ -65,26 +65,32 @@ std::vector<std::uint8_t> make_actnum(const GeneratorParameters& p, const ModelF
     const LayeredField cluster(d.nx, d.ny, d.nz, frame.dx, frame.dy, p.poro_correlation_length, 0.8, random);
     const float threshold = p.inactive_fraction > 0 ? quantile(cluster, p.inactive_fraction) : -std::numeric_limits<float>::infinity();
     std::vector<std::uint8_t> actnum(b.cell_count(), 1);
-    std::size_t cell = 0;
+    std::size_t pinched = 0, inverted = 0, degenerate = 0, clustered = 0;
+    // Rows of cells split over the threads (CGAL's filtered predicates are thread-safe).
+#pragma omp parallel for collapse(2) schedule(static) reduction(+ : pinched, inverted, degenerate, clustered)
     for (int k = box.k0; k <= box.k1; ++k)
         for (int j = box.j0; j <= box.j1; ++j)
-            for (int i = box.i0; i <= box.i1; ++i, ++cell) {
+            for (int i = box.i0; i <= box.i1; ++i) {
                 grid::CellCorners corners;
                 for (int c = 0; c < 8; ++c) {
                     const grid::Pillar pillar = pillar_from_coord(coord, b.pillar_index(i - box.i0 + (c & 1), j - box.j0 + (c >> 1 & 1)));
                     corners[std::size_t(c)] = grid::point_on_pillar(pillar, depths.depth(i, j, c & 3, k + (c >> 2)));
                 }
                 switch (check_cell(corners)) {
-                    case CellValidity::pinched: ++report.pinched_cells; break;
-                    case CellValidity::inverted: ++report.inverted_cells; break;
-                    case CellValidity::degenerate: ++report.degenerate_cells; break;
+                    case CellValidity::pinched: ++pinched; break;
+                    case CellValidity::inverted: ++inverted; break;
+                    case CellValidity::degenerate: ++degenerate; break;
                     case CellValidity::valid:
                         if (!(cluster.at(i, j, k) < threshold)) continue;
-                        ++report.clustered_inactive;
+                        ++clustered;
                         break;
                 }
-                actnum[cell] = 0;
+                actnum[b.cell_index(i - box.i0, j - box.j0, k - box.k0)] = 0;
             }
+    report.pinched_cells += pinched;
+    report.inverted_cells += inverted;
+    report.degenerate_cells += degenerate;
+    report.clustered_inactive += clustered;
     return actnum;
 }
 

@@ -36,21 +36,25 @@ RockProperties make_rock_properties(const GeneratorParameters& p, const ModelFra
     const double lateral = std::sqrt(1 - kLayerShiftShare * kLayerShiftShare);
     const double upper = std::max(0.45, p.poro_mean + 3 * p.poro_std);
     RockProperties rock;
-    const std::size_t cells = box.dims().cell_count();
-    rock.poro.reserve(cells);
-    rock.permx.reserve(cells);
-    rock.ntg.reserve(cells);
-    rock.facies.reserve(cells);
+    const grid::GridDims b = box.dims();
+    const std::size_t cells = b.cell_count();
+    rock.poro.resize(cells);
+    rock.permx.resize(cells);
+    rock.ntg.resize(cells);
+    rock.facies.resize(cells);
+    // Rows of cells split over the threads; every random number was drawn above.
+#pragma omp parallel for collapse(2) schedule(static)
     for (int k = box.k0; k <= box.k1; ++k)
         for (int j = box.j0; j <= box.j1; ++j)
             for (int i = box.i0; i <= box.i1; ++i) {
                 const double poro = std::clamp(p.poro_mean + p.poro_std * (lateral * field.at(i, j, k) + shifts[std::size_t(k)]),
                                                0.01, upper);
                 const Facies facies = facies_of(poro, p.poro_mean, p.poro_std);
-                rock.poro.push_back(float(poro));
-                rock.facies.push_back(facies);
-                rock.permx.push_back(float(permeability_md(poro, facies)));
-                rock.ntg.push_back(float(std::clamp((poro - 0.02) / (p.poro_mean + p.poro_std - 0.02), 0.05, 1.0)));
+                const std::size_t cell = b.cell_index(i - box.i0, j - box.j0, k - box.k0);
+                rock.poro[cell] = float(poro);
+                rock.facies[cell] = facies;
+                rock.permx[cell] = float(permeability_md(poro, facies));
+                rock.ntg[cell] = float(std::clamp((poro - 0.02) / (p.poro_mean + p.poro_std - 0.02), 0.05, 1.0));
             }
     return rock;
 }

@@ -11,6 +11,7 @@
 #include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "gl/gl_error.h"
+#include "grid/cell_geometry.h"
 #include "grid/face_classification.h"
 
 namespace cutaway::pipeline {
@@ -61,8 +62,12 @@ int max_image_side() {
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale,
                                  int width, int height)
-    : CutawayRenderer(shaders, grid, make_model_frame(grid, z_scale),
-                      grid::FaceClassification(grid, grid::default_face_tolerance(grid)), width, height) {}
+    : CutawayRenderer(shaders, grid, grid::grid_bounds(grid), z_scale, width, height) {}
+
+CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const grid::Box3& bounds,
+                                 double z_scale, int width, int height)
+    : CutawayRenderer(shaders, grid, make_model_frame(grid, bounds, z_scale),
+                      grid::FaceClassification(grid, grid::face_tolerance_for(bounds)), width, height) {}
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
                                  const grid::FaceClassification& classes, int width, int height)

@@ -171,6 +171,11 @@ public:
     CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
 
 private:
+    /// The first constructor's work once the active cells' bounds are known (computed once: the
+    /// frame and the face tolerance both need them).
+    CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const grid::Box3& bounds,
+                    double z_scale, int width, int height);
+
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut() const;

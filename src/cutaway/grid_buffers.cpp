@@ -17,8 +17,11 @@ namespace {
 /// 2 bits per side (FaceClass), sides in FaceSide order, one word per active cell.
 std::vector<std::uint32_t> packed_face_classes(const GridLayout& layout) {
     std::vector<std::uint32_t> packed(layout.cells.size(), 0);
-    for (std::size_t c = 0; c < packed.size(); ++c)
-        for (std::size_t s = 0; s < 6; ++s) packed[c] |= std::uint32_t(layout.face_classes[6 * c + s]) << (2 * s);
+    const std::ptrdiff_t count = std::ptrdiff_t(packed.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t c = 0; c < count; ++c)
+        for (std::size_t s = 0; s < 6; ++s)
+            packed[std::size_t(c)] |= std::uint32_t(layout.face_classes[6 * std::size_t(c) + s]) << (2 * s);
     return packed;
 }
 /// Depth plane slots of the corner-plane texels: the store's own (ZcornStore), NZ+1 when compact
@@ -36,7 +39,10 @@ std::vector<std::uint32_t> gpu_cell_records(const GridLayout& layout, const grid
     const std::size_t nx = std::size_t(dims.nx), ny = std::size_t(dims.ny);
     const std::size_t slots_per_layer = zcorn.is_compact() ? 1 : 2;
     std::vector<std::uint32_t> records(2 * layout.cells.size());
-    for (std::size_t c = 0; c < layout.cells.size(); ++c) {
+    const std::ptrdiff_t count = std::ptrdiff_t(layout.cells.size());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t index = 0; index < count; ++index) {
+        const std::size_t c = std::size_t(index);
         const std::size_t eclipse = layout.cells[c] & 0x7fffffffu;
         const std::size_t i = eclipse % nx, j = eclipse / nx % ny, k = eclipse / (nx * ny);
         records[2 * c] = std::uint32_t(j * (nx + 1) + i) | (layout.cells[c] & 0x80000000u);
@@ -69,6 +75,7 @@ gl::Buffer upload_corner_planes(const grid::ZcornStore& zcorn, double centre_z) 
         const bool compact = zcorn.is_compact();
         const int k = compact ? int(std::min<std::size_t>(s, std::size_t(dims.nz - 1))) : int(s / 2);
         const int bottom = (compact ? s == std::size_t(dims.nz) : s % 2 == 1) ? 4 : 0;
+#pragma omp parallel for schedule(static)
         for (int j = 0; j < dims.ny; ++j)
             for (int i = 0; i < dims.nx; ++i)
                 for (int c = 0; c < 4; ++c)

@@ -49,16 +49,23 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
     // model (x, y, z) space; render space flips z when up_sign < 0 (determinant sign up_sign).
     const bool render_flips = frame.up_sign < 0;
     layout.compact_of_cell.assign(grid.cell_count(), no_cell);
-    layout.cells.reserve(grid.active_count());
-    layout.face_classes.reserve(6 * grid.active_count());
-    for (std::size_t cell = 0; cell < grid.cell_count(); ++cell) {
-        if (!grid.active(cell)) continue;
+    std::uint32_t active = 0;
+    for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
+        if (grid.active(cell)) layout.compact_of_cell[cell] = active++;
+    layout.cells.resize(active);
+    layout.face_classes.resize(6 * std::size_t(active));
+    // Each active cell's records at its compact index (Eclipse order), the cells split over the threads.
+    const std::ptrdiff_t cell_count = std::ptrdiff_t(grid.cell_count());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t index = 0; index < cell_count; ++index) {
+        const std::size_t cell = std::size_t(index);
+        const std::uint32_t compact = layout.compact_of_cell[cell];
+        if (compact == no_cell) continue;
         const grid::CellIjk c = grid::cell_ijk(dims, cell);
-        const grid::CellCorners corners = grid::cell_corners(grid, c.i, c.j, c.k);
-        const bool negative = grid::signed_volume(corners) < 0;
-        layout.compact_of_cell[cell] = std::uint32_t(layout.cells.size());
-        layout.cells.push_back(std::uint32_t(cell) | ((negative != render_flips) ? 0x80000000u : 0u));
-        for (int side = 0; side < 6; ++side) layout.face_classes.push_back(classes.at(cell, grid::FaceSide(side)));
+        const bool negative = grid::signed_volume(grid::cell_corners(grid, c.i, c.j, c.k)) < 0;
+        layout.cells[compact] = std::uint32_t(cell) | ((negative != render_flips) ? 0x80000000u : 0u);
+        for (int side = 0; side < 6; ++side)
+            layout.face_classes[6 * std::size_t(compact) + std::size_t(side)] = classes.at(cell, grid::FaceSide(side));
     }
     return layout;
 }

@@ -118,7 +118,11 @@ ModelFrame frame_from_bounds(const grid::Box3& bounds, int depth_direction, doub
 }
 
 ModelFrame make_model_frame(const grid::CornerPointGrid& grid, double z_scale) {
-    ModelFrame frame = frame_from_bounds(grid::grid_bounds(grid), grid.depth_direction(), z_scale);
+    return make_model_frame(grid, grid::grid_bounds(grid), z_scale);
+}
+
+ModelFrame make_model_frame(const grid::CornerPointGrid& grid, const grid::Box3& bounds, double z_scale) {
+    ModelFrame frame = frame_from_bounds(bounds, grid.depth_direction(), z_scale);
     std::vector<int> top, bottom;
     active_layer_span(grid, top, bottom);
     OutlineSearch search(frame);

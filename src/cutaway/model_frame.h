@@ -33,6 +33,9 @@ struct ModelFrame {
 /// thickness at least 1/5 of its larger horizontal extent (reservoirs are often 100x wider than
 /// thick). Throws std::invalid_argument when the grid has no active cell.
 ModelFrame make_model_frame(const grid::CornerPointGrid& grid, double z_scale);
+/// The same for a grid whose active cells span `bounds` (grid::grid_bounds, computed once by a
+/// caller that needs it for more than the frame).
+ModelFrame make_model_frame(const grid::CornerPointGrid& grid, const grid::Box3& bounds, double z_scale);
 
 /// make_model_frame without the outline, for a model whose active cells span `bounds` and whose
 /// depths grow with k (`depth_direction` +1) or shrink (-1).

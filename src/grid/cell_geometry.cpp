@@ -93,10 +93,18 @@ bool overlaps_layer_above(const CornerPointGrid& grid, int i, int j, int k, doub
 Box3 grid_bounds(const CornerPointGrid& grid, bool all_cells) {
     Box3 box;
     const GridDims& d = grid.dims();
-    for (int k = 0; k < d.nz; ++k)
-        for (int j = 0; j < d.ny; ++j)
-            for (int i = 0; i < d.nx; ++i)
-                if (all_cells || grid.active(d.cell_index(i, j, k))) box.extend(cell_bounds(cell_corners(grid, i, j, k)));
+    // Rows of cells split over the threads; a min/max does not depend on the order it is taken in.
+#pragma omp parallel
+    {
+        Box3 rows_box;
+#pragma omp for collapse(2) schedule(static) nowait
+        for (int k = 0; k < d.nz; ++k)
+            for (int j = 0; j < d.ny; ++j)
+                for (int i = 0; i < d.nx; ++i)
+                    if (all_cells || grid.active(d.cell_index(i, j, k))) rows_box.extend(cell_bounds(cell_corners(grid, i, j, k)));
+#pragma omp critical
+        box.extend(rows_box);
+    }
     return box;
 }
 

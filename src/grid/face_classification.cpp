@@ -11,6 +11,9 @@ FaceClassification::FaceClassification(const CornerPointGrid& grid, double toler
     : classes_(6 * grid.cell_count(), FaceClass::none), tolerance_(tolerance) {
     const GridDims& d = grid.dims();
     const ZcornStore& z = grid.zcorn();
+    std::size_t shell = 0, fault = 0, interior = 0;
+    // Rows of cells split over the threads: each writes only its own cells' faces.
+#pragma omp parallel for collapse(2) schedule(static) reduction(+ : shell, fault, interior)
     for (int k = 0; k < d.nz; ++k)
         for (int j = 0; j < d.ny; ++j)
             for (int i = 0; i < d.nx; ++i) {
@@ -36,11 +39,14 @@ FaceClassification::FaceClassification(const CornerPointGrid& grid, double toler
                     }
                     classes_[6 * cell + std::size_t(side)] = face;
                     if (face == FaceClass::shell)
-                        ++counts_.shell;
+                        ++shell;
                     else if (plus)
-                        ++(face == FaceClass::fault ? counts_.fault : counts_.interior);
+                        ++(face == FaceClass::fault ? fault : interior);
                 }
             }
+    counts_.shell = shell;
+    counts_.fault = fault;
+    counts_.interior = interior;
 }
 
 FaceClassification::FaceClassification(std::vector<FaceClass> classes, double tolerance)

@@ -1,6 +1,7 @@
 // CPU parts of the output-sensitive renderer: the IJK bricks the culling pass walks, and the
 // --cell-ids encoding.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <limits>
@@ -16,6 +17,45 @@ namespace {
 
 grid::CornerPointGrid reek_grid() {
     return grid::load_grdecl({std::string(CUTAWAY_SHARED_DATA) + "/grdecl/reek/reek_sim_grid.grdecl"});
+}
+
+// Everything the renderer's set-up computes per cell on the CPU (the bounds, the face classes,
+// the per-cell records, the bricks) runs on every core (OpenMP); one thread and four (more than
+// this machine's cores, so the work is split whatever the machine) must give the same values.
+TEST(SetUpThreads, OneThreadAndFourBuildTheSameRecords) {
+    const grid::CornerPointGrid grid = reek_grid();
+    struct Built {
+        grid::Box3 bounds;
+        std::vector<grid::FaceClass> faces;
+        pipeline::GridLayout layout;
+        pipeline::CellBricks bricks;
+    };
+    const auto build = [&](int threads) {
+        const int before = omp_get_max_threads();
+        omp_set_num_threads(threads);
+        Built b{grid::grid_bounds(grid), {}, {}, {}};
+        const pipeline::ModelFrame frame = pipeline::make_model_frame(grid, b.bounds, 0.0);
+        const grid::FaceClassification classes(grid, grid::face_tolerance_for(b.bounds));
+        for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
+            for (int side = 0; side < 6; ++side) b.faces.push_back(classes.at(cell, grid::FaceSide(side)));
+        b.layout = pipeline::build_grid_layout(grid, classes, frame);
+        b.bricks = pipeline::build_cell_bricks(grid, b.layout.compact_of_cell, frame);
+        omp_set_num_threads(before);
+        return b;
+    };
+    const Built one = build(1), four = build(4);
+    for (const auto& [a, b] : {std::pair(one.bounds.min, four.bounds.min), std::pair(one.bounds.max, four.bounds.max)}) {
+        EXPECT_EQ(a.x, b.x);
+        EXPECT_EQ(a.y, b.y);
+        EXPECT_EQ(a.z, b.z);
+    }
+    EXPECT_EQ(one.faces, four.faces);
+    EXPECT_EQ(one.layout.cells, four.layout.cells);
+    EXPECT_EQ(one.layout.compact_of_cell, four.layout.compact_of_cell);
+    EXPECT_EQ(one.layout.face_classes, four.layout.face_classes);
+    EXPECT_EQ(one.bricks.cells, four.bricks.cells);
+    EXPECT_EQ(one.bricks.begin, four.bricks.begin);
+    EXPECT_EQ(one.bricks.boxes, four.bricks.boxes);
 }
 
 TEST(CellBricks, EveryActiveCellInExactlyOneBrickWhoseBoxHoldsItsCorners) {

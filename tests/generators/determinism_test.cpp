@@ -1,5 +1,6 @@
 // Same parameters and seed give a byte-identical file; another seed gives another model.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include "generator_test_support.h"
 #include "generators/deterministic_random.h"
@@ -13,6 +14,21 @@ TEST(GeneratorDeterminism, SameSeedSameBytes) {
     const std::string second = testing::grdecl_text(p);
     ASSERT_GT(first.size(), 10000u);
     EXPECT_TRUE(first == second) << "two runs with seed " << p.seed << " differ";
+}
+
+// The pillar columns, cell checks and rock properties run on every core (OpenMP): one thread and
+// four (more than this machine's cores, so the work is split whatever the machine) give the
+// same bytes, including the report's counts in the header.
+TEST(GeneratorDeterminism, OneThreadAndFourGiveTheSameBytes) {
+    const GeneratorParameters p = testing::small_parameters();
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const std::string one = testing::grdecl_text(p);
+    omp_set_num_threads(4);
+    const std::string four = testing::grdecl_text(p);
+    omp_set_num_threads(threads);
+    ASSERT_GT(one.size(), 10000u);
+    EXPECT_TRUE(one == four) << "1 and 4 threads differ for seed " << p.seed;
 }
 
 TEST(GeneratorDeterminism, OtherSeedOtherModel) {

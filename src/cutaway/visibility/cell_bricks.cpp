@@ -13,31 +13,47 @@ CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const std::vecto
     const int bx = (dims.nx + brick_side - 1) / brick_side, by = (dims.ny + brick_side - 1) / brick_side,
               bz = (dims.nz + brick_side - 1) / brick_side;
     const float pad = 1e-5f * std::max(1.0f, 2.0f * frame.radius());
+    const std::ptrdiff_t brick_count = std::ptrdiff_t(bx) * by * bz;
+    // Calls visit(compact) for each active cell of brick `b` (x fastest), in the order the list keeps.
+    const auto for_each_active_cell = [&](std::ptrdiff_t b, auto&& visit) {
+        const int xi = int(b % bx), yj = int(b / bx % by), zk = int(b / (std::ptrdiff_t(bx) * by));
+        for (int k = zk * brick_side; k < std::min(dims.nz, (zk + 1) * brick_side); ++k)
+            for (int j = yj * brick_side; j < std::min(dims.ny, (yj + 1) * brick_side); ++j)
+                for (int i = xi * brick_side; i < std::min(dims.nx, (xi + 1) * brick_side); ++i) {
+                    const std::uint32_t compact = compact_of_cell[dims.cell_index(i, j, k)];
+                    if (compact != std::numeric_limits<std::uint32_t>::max()) visit(compact, i, j, k);
+                }
+    };
+    // Two passes over the bricks, split over the threads: the active cells per brick, then (from
+    // their running sum) each brick's cells and box; bricks without an active cell are dropped.
+    std::vector<std::uint32_t> first(std::size_t(brick_count) + 1, 0);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t b = 0; b < brick_count; ++b)
+        for_each_active_cell(b, [&](std::uint32_t, int, int, int) { ++first[std::size_t(b) + 1]; });
+    for (std::size_t b = 0; b < std::size_t(brick_count); ++b) first[b + 1] += first[b];
     CellBricks bricks;
-    bricks.cells.reserve(grid.active_count());
-    bricks.begin.push_back(0);
-    for (int zk = 0; zk < bz; ++zk)
-        for (int yj = 0; yj < by; ++yj)
-            for (int xi = 0; xi < bx; ++xi) {
-                glm::vec3 lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
-                const std::size_t first = bricks.cells.size();
-                for (int k = zk * brick_side; k < std::min(dims.nz, (zk + 1) * brick_side); ++k)
-                    for (int j = yj * brick_side; j < std::min(dims.ny, (yj + 1) * brick_side); ++j)
-                        for (int i = xi * brick_side; i < std::min(dims.nx, (xi + 1) * brick_side); ++i) {
-                            const std::uint32_t compact = compact_of_cell[dims.cell_index(i, j, k)];
-                            if (compact == std::numeric_limits<std::uint32_t>::max()) continue;
-                            bricks.cells.push_back(compact);
-                            for (const grid::Point3& p : grid::cell_corners(grid, i, j, k)) {
-                                const glm::vec3 r = frame.to_render(p);
-                                lo = glm::min(lo, r);
-                                hi = glm::max(hi, r);
-                            }
-                        }
-                if (bricks.cells.size() == first) continue;  // no active cell: no brick
-                bricks.begin.push_back(std::uint32_t(bricks.cells.size()));
-                for (const glm::vec3& corner : {lo - pad, hi + pad})
-                    bricks.boxes.insert(bricks.boxes.end(), {corner.x, corner.y, corner.z, 0.0f});
+    bricks.cells.resize(first.back());
+    std::vector<glm::vec3> lo(std::size_t(brick_count), glm::vec3(std::numeric_limits<float>::max())),
+        hi(std::size_t(brick_count), glm::vec3(-std::numeric_limits<float>::max()));
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t b = 0; b < brick_count; ++b) {
+        std::uint32_t slot = first[std::size_t(b)];
+        for_each_active_cell(b, [&](std::uint32_t compact, int i, int j, int k) {
+            bricks.cells[slot++] = compact;
+            for (const grid::Point3& p : grid::cell_corners(grid, i, j, k)) {
+                const glm::vec3 r = frame.to_render(p);
+                lo[std::size_t(b)] = glm::min(lo[std::size_t(b)], r);
+                hi[std::size_t(b)] = glm::max(hi[std::size_t(b)], r);
             }
+        });
+    }
+    bricks.begin.push_back(0);
+    for (std::size_t b = 0; b < std::size_t(brick_count); ++b) {
+        if (first[b + 1] == first[b]) continue;  // no active cell: no brick
+        bricks.begin.push_back(first[b + 1]);
+        for (const glm::vec3& corner : {lo[b] - pad, hi[b] + pad})
+            bricks.boxes.insert(bricks.boxes.end(), {corner.x, corner.y, corner.z, 0.0f});
+    }
     return bricks;
 }
 
