@@ -70,15 +70,17 @@ int run_render(const RenderOptions& options) {
     std::unique_ptr<gl::GlContext> context = gl::create_context(options.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     const auto setup_started = std::chrono::steady_clock::now();
-    pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height);
+    // The corner depths live on the GPU once the geometry is built and nothing reads them on the
+    // CPU again: released there, before the selection, the render targets and the colouring are
+    // allocated, so the set-up's peak does not hold both.
+    pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height,
+                                       [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
     renderer.set_colouring(property.values(), property.colour_bar_label());
     if (selected_by)
         renderer.set_primaries(selected_by->flags);
     else
         renderer.select_range(property.primary_range, box);
-    // The corner depths live on the GPU now and nothing reads them on the CPU again.
-    model.grid.release_corner_depths();
     glFinish();
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
     memory["resident_after_setup"] = run_context::proc_status_bytes("VmRSS");

@@ -61,16 +61,17 @@ int max_image_side() {
 }
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale,
-                                 int width, int height)
-    : CutawayRenderer(shaders, grid, grid::grid_bounds(grid), z_scale, width, height) {}
+                                 int width, int height, const CornerDepthsRead& corner_depths_read)
+    : CutawayRenderer(shaders, grid, grid::grid_bounds(grid), z_scale, width, height, corner_depths_read) {}
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const grid::Box3& bounds,
-                                 double z_scale, int width, int height)
+                                 double z_scale, int width, int height, const CornerDepthsRead& corner_depths_read)
     : CutawayRenderer(shaders, grid, make_model_frame(grid, bounds, z_scale),
-                      grid::FaceClassification(grid, grid::face_tolerance_for(bounds)), width, height) {}
+                      grid::FaceClassification(grid, grid::face_tolerance_for(bounds)), width, height, corner_depths_read) {}
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
-                                 const grid::FaceClassification& classes, int width, int height)
+                                 const grid::FaceClassification& classes, int width, int height,
+                                 const CornerDepthsRead& corner_depths_read)
     : shaders_(shaders),
       width_(checked_side(width, "width")),
       height_(checked_side(height, "height")),
@@ -79,6 +80,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       grid_(grid),
       buffers_(layout_, grid.zcorn(), frame_),
       visible_(make_visible_faces(shaders, grid, layout_, frame_)),
+      corner_depths_read_((corner_depths_read ? corner_depths_read() : void(), true)),
       selection_(shaders, layout_, grid.dims()),
       centroid_(shaders),
       colour_map_(make_colour_map_texture()),

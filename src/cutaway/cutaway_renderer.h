@@ -90,16 +90,24 @@ inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border 
 
 class CutawayRenderer {
 public:
+    /// Called by the constructor once it has read the grid's corner depths for the last time (the
+    /// geometry and culling buffers are built; the selection buffers, the render targets and the
+    /// first colouring are not yet allocated), e.g. to release them: then they never share memory
+    /// with what the rest of the set-up allocates.
+    using CornerDepthsRead = std::function<void()>;
+
     /// Uploads the grid. Throws std::invalid_argument for an empty model or a size above the GL
     /// limit, gl::GlError for GL failures. After construction only the grid's dimensions and
-    /// ACTNUM are read again: its corner depths may be released (CornerPointGrid::release_corner_depths).
+    /// ACTNUM are read again: its corner depths may be released (CornerPointGrid::release_corner_depths),
+    /// at the earliest from `corner_depths_read`.
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, double z_scale, int width,
-                    int height);
+                    int height, const CornerDepthsRead& corner_depths_read = {});
     /// One block of a larger model (src/distributed/): `frame` is the whole model's (every block
     /// draws in the same render space and camera), `classes` the block's faces classified with the
     /// cells around the block, so its cut boundary is not drawn as shell.
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
-                    const grid::FaceClassification& classes, int width, int height);
+                    const grid::FaceClassification& classes, int width, int height,
+                    const CornerDepthsRead& corner_depths_read = {});
 
     void set_hooks(FrameHooks hooks) { hooks_ = std::move(hooks); }
 
@@ -174,7 +182,7 @@ private:
     /// The first constructor's work once the active cells' bounds are known (computed once: the
     /// frame and the face tolerance both need them).
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const grid::Box3& bounds,
-                    double z_scale, int width, int height);
+                    double z_scale, int width, int height, const CornerDepthsRead& corner_depths_read);
 
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
@@ -202,6 +210,8 @@ private:
     const grid::CornerPointGrid& grid_;
     GridBuffers buffers_;
     VisibleFaces visible_;
+    /// Nothing below reads the grid's corner depths: corner_depths_read was called here.
+    [[maybe_unused]] bool corner_depths_read_;
     std::optional<ExposedSurface> exposed_;  ///< the plain frame's faces, built on its first use
     GpuPrimarySelection selection_;
     PrimaryCentroid centroid_;
