@@ -17,9 +17,14 @@
 namespace cutaway::pipeline {
 namespace {
 
+/// The culling pass's buffers. Its bricks' boxes are the set-up's last read of the grid's corner
+/// depths: `corner_depths_read` is called once they are built, before the buffers are allocated.
 VisibleFaces make_visible_faces(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid,
-                                const GridLayout& layout, const ModelFrame& frame) {
-    return VisibleFaces(shaders, build_cell_bricks(grid, layout.compact_of_cell, frame), selectable_face_capacity(layout));
+                                const GridLayout& layout, const ModelFrame& frame,
+                                const CutawayRenderer::CornerDepthsRead& corner_depths_read) {
+    const CellBricks bricks = build_cell_bricks(grid, layout.compact_of_cell, frame);
+    if (corner_depths_read) corner_depths_read();
+    return VisibleFaces(shaders, bricks, selectable_face_capacity(layout));
 }
 
 int checked_side(int side, const char* name) {
@@ -79,8 +84,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       layout_(build_grid_layout(grid, classes, frame_)),
       grid_(grid),
       buffers_(layout_, grid.zcorn(), frame_),
-      visible_(make_visible_faces(shaders, grid, layout_, frame_)),
-      corner_depths_read_((corner_depths_read ? corner_depths_read() : void(), true)),
+      visible_(make_visible_faces(shaders, grid, layout_, frame_, corner_depths_read)),
       selection_(shaders, layout_, grid.dims()),
       centroid_(shaders),
       colour_map_(make_colour_map_texture()),

@@ -91,9 +91,9 @@ inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border 
 class CutawayRenderer {
 public:
     /// Called by the constructor once it has read the grid's corner depths for the last time (the
-    /// geometry and culling buffers are built; the selection buffers, the render targets and the
-    /// first colouring are not yet allocated), e.g. to release them: then they never share memory
-    /// with what the rest of the set-up allocates.
+    /// geometry buffers and the culling's bricks are built; the culling and selection buffers, the
+    /// render targets and the first colouring are not yet allocated), e.g. to release them: then
+    /// they never share memory with what the rest of the set-up allocates.
     using CornerDepthsRead = std::function<void()>;
 
     /// Uploads the grid. Throws std::invalid_argument for an empty model or a size above the GL
@@ -210,8 +210,6 @@ private:
     const grid::CornerPointGrid& grid_;
     GridBuffers buffers_;
     VisibleFaces visible_;
-    /// Nothing below reads the grid's corner depths: corner_depths_read was called here.
-    [[maybe_unused]] bool corner_depths_read_;
     std::optional<ExposedSurface> exposed_;  ///< the plain frame's faces, built on its first use
     GpuPrimarySelection selection_;
     PrimaryCentroid centroid_;
