@@ -33,8 +33,8 @@ CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const std::vecto
     for (std::size_t b = 0; b < std::size_t(brick_count); ++b) first[b + 1] += first[b];
     CellBricks bricks;
     bricks.cells.resize(first.back());
-    std::vector<glm::vec3> lo(std::size_t(brick_count), glm::vec3(std::numeric_limits<float>::max())),
-        hi(std::size_t(brick_count), glm::vec3(-std::numeric_limits<float>::max()));
+    const float far = std::numeric_limits<float>::max();
+    std::vector<glm::vec3> lo(first.size() - 1, glm::vec3(far)), hi(first.size() - 1, glm::vec3(-far));
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t b = 0; b < brick_count; ++b) {
         std::uint32_t slot = first[std::size_t(b)];
