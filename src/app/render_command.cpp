@@ -107,6 +107,8 @@ int run_render(const RenderOptions& options) {
 
     json stats = stage_statistics(runs);
     stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
+    // Frames drawn twice because the culling's face buffer grew (cutaway_renderer.h render).
+    stats["frames_redrawn"] = renderer.frames_redrawn();
     // Per frame (every timed frame reads back the same amount): 0 for the strategies on the GPU.
     stats["readback_bytes"] = renderer.cut_readback_bytes();
     stats["cut_device"] = pipeline::find_cut_surface(settings.strategy).device;

@@ -24,7 +24,10 @@ VisibleFaces make_visible_faces(const gl::ShaderLibrary& shaders, const grid::Co
                                 const CutawayRenderer::CornerDepthsRead& corner_depths_read) {
     const CellBricks bricks = build_cell_bricks(grid, layout.compact_of_cell, frame);
     if (corner_depths_read) corner_depths_read();
-    return VisibleFaces(shaders, bricks, selectable_face_capacity(layout));
+    // A frame selects a fraction of the faces (scale-10m: 1.1M of 33M): the buffer starts at an
+    // eighth of them (all of them up to 2M faces) and grows when a frame needs more.
+    const std::size_t limit = selectable_face_capacity(layout);
+    return VisibleFaces(shaders, bricks, limit, std::max<std::size_t>(limit / 8, std::size_t(1) << 21));
 }
 
 int checked_side(int side, const char* name) {
@@ -212,6 +215,17 @@ const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera)
 const CutTargets& CutawayRenderer::active_cut() const { return last_filtered_ ? filtered_cut_ : cut_; }
 
 FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
+    FrameTimes times = render_once(s, camera);
+    // After the frame's fence: the culling's 4-byte face count says whether its buffer was too
+    // small (faces were dropped). The grown buffer fits this frame's selection, so once is enough.
+    if (visible_used_ && visible_.grow_to_fit()) {
+        ++frames_redrawn_;
+        times = render_once(s, camera);
+    }
+    return times;
+}
+
+FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& camera) {
     if (camera.width != width_ || camera.height != height_)
         throw std::invalid_argument("camera image size differs from the renderer's");
     sync_selection_to_cpu();  // untimed: only after a new GPU selection

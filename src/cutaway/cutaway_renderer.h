@@ -109,7 +109,12 @@ public:
                     const grid::FaceClassification& classes, int width, int height,
                     const CornerDepthsRead& corner_depths_read = {});
 
-    void set_hooks(FrameHooks hooks) { hooks_ = std::move(hooks); }
+    /// Hooks combine every rank's frame, so no rank may draw a frame again alone: the culling's
+    /// face buffer is sized for every face at once (see render).
+    void set_hooks(FrameHooks hooks) {
+        hooks_ = std::move(hooks);
+        visible_.reserve_limit();
+    }
 
     const ModelFrame& frame() const { return frame_; }
     int width() const { return width_; }
@@ -134,8 +139,16 @@ public:
     void unfreeze() { frozen_camera_.reset(); }
     bool frozen() const { return frozen_camera_.has_value(); }
 
-    /// Renders one frame with the strategy named in settings.
+    /// Renders one frame with the strategy named in settings. The culling's face buffer holds
+    /// what frames have needed so far: a frame that selected more faces than it holds grows it
+    /// and is drawn again (counted by frames_redrawn; the times are the second drawing's).
     FrameTimes render(const FrameSettings& settings, const Camera& camera);
+    /// Frames drawn twice because the culling's face buffer grew (see render).
+    std::size_t frames_redrawn() const { return frames_redrawn_; }
+    /// Records the culling's face buffer holds now, and a new size for it (it grows from there
+    /// as frames need; for tests and memory studies).
+    std::size_t face_buffer_capacity() const { return visible_.face_capacity(); }
+    void set_face_buffer_capacity(std::size_t faces) { visible_.set_capacity(faces); }
     /// The same frame without per-stage fences (only `total` is timed: one glFinish at its end),
     /// as a user's frame runs with its stages overlapping.
     double render_unfenced_ms(const FrameSettings& settings, const Camera& camera);
@@ -184,6 +197,7 @@ private:
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const grid::Box3& bounds,
                     double z_scale, int width, int height, const CornerDepthsRead& corner_depths_read);
 
+    FrameTimes render_once(const FrameSettings& settings, const Camera& camera);
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     const CutTargets& active_cut() const;
@@ -216,6 +230,7 @@ private:
     bool secondary_list_built_ = false;
     FacesDrawn last_drawn_;
     bool visible_used_ = false;  ///< the last frame's stage 2 used the culling pass
+    std::size_t frames_redrawn_ = 0;
     gl::Texture colour_map_;
     ColourBarLabel label_;
     /// The selection on the CPU (frustum-clusters groups the flags; the walls' angle is exact at

@@ -140,21 +140,34 @@ grid::CornerPointGrid generated(const char* preset) {
 // order (visibility/write_visible_faces.comp): the order no longer depends on how the GPU ran the
 // culling's invocations, which on a parallel GPU had made 0.02-0.18% of pixels tie differently.
 // Appending with an atomic per cell, as before, interleaves the workgroups of llvmpipe's threads.
+/// One frame of the visible path: random primaries (from `seed`), the camera at `pose`, and the
+/// face records its culling selected.
+struct VisibleFrame {
+    std::unique_ptr<pipeline::CutawayRenderer> renderer;
+    pipeline::FrameSettings settings;
+    pipeline::Camera camera;
+    std::vector<std::uint32_t> records;
+};
+VisibleFrame draw_visible(const grid::CornerPointGrid& grid, unsigned seed, const pipeline::OrbitPose& pose) {
+    VisibleFrame frame{renderer_for(grid), {}, {}, {}};
+    std::mt19937 random(seed);
+    frame.renderer->set_primaries(random_cells(grid, random));
+    frame.settings.draw = DrawMode::visible;
+    frame.camera = pipeline::make_orbit_camera(frame.renderer->frame(), pose, width, height);
+    frame.renderer->render(frame.settings, frame.camera);
+    frame.records = frame.renderer->read_visible_faces();
+    return frame;
+}
+
 TEST(VisibleDrawOrder, RecordsFollowBrickCellAndSideOrder) {
     const grid::CornerPointGrid grid = petra();
-    auto renderer = renderer_for(grid);
-    std::mt19937 random(4);
-    renderer->set_primaries(random_cells(grid, random));
-    pipeline::FrameSettings settings;
-    settings.draw = DrawMode::visible;
-    const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0}, width, height);
-    renderer->render(settings, camera);
-    const std::vector<std::uint32_t> records = renderer->read_visible_faces();
+    const VisibleFrame frame = draw_visible(grid, 4, {35, 30, 0});
+    const std::vector<std::uint32_t>& records = frame.records;
     ASSERT_GT(records.size(), 5000u) << "too few faces to show an order";
 
     const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
-    const pipeline::GridLayout layout = pipeline::build_grid_layout(grid, classes, renderer->frame());
-    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, layout.compact_of_cell, renderer->frame());
+    const pipeline::GridLayout layout = pipeline::build_grid_layout(grid, classes, frame.renderer->frame());
+    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, layout.compact_of_cell, frame.renderer->frame());
     std::vector<std::uint32_t> slot_of(bricks.cells.size());
     for (std::uint32_t slot = 0; slot < bricks.cells.size(); ++slot) slot_of[bricks.cells[slot]] = slot;
     const auto key = [&](std::uint32_t record) {  // pipeline::pack_face's cell and side
@@ -164,6 +177,29 @@ TEST(VisibleDrawOrder, RecordsFollowBrickCellAndSideOrder) {
     std::size_t out_of_order = 0;
     for (std::size_t r = 1; r < records.size(); ++r) out_of_order += key(records[r]) <= key(records[r - 1]);
     EXPECT_EQ(out_of_order, 0u) << out_of_order << " of " << records.size() << " records out of brick, cell and side order";
+}
+
+// The culling's face buffer holds what frames have needed so far (a tenth of a large model's
+// faces). A frame that selects more than it holds drops faces, so it must grow the buffer and be
+// drawn again: the same records, the same pixels as with the buffer sized for it from the start.
+TEST(VisibleFaceBuffer, AFrameThatOverflowsGrowsTheBufferAndIsDrawnAgainUnchanged) {
+    const grid::CornerPointGrid grid = petra();
+    const VisibleFrame frame = draw_visible(grid, 5, {120, 40, 0});
+    pipeline::CutawayRenderer* renderer = frame.renderer.get();
+    const auto& [settings, camera, records] = std::tie(frame.settings, frame.camera, frame.records);
+    ASSERT_EQ(renderer->frames_redrawn(), 0u) << "petra's faces all fit the initial buffer (2M faces)";
+    const std::vector<std::uint32_t> cells = renderer->read_eclipse_ids();
+    ASSERT_GT(records.size(), 1000u);
+
+    renderer->set_face_buffer_capacity(100);
+    renderer->render(settings, camera);
+    EXPECT_EQ(renderer->frames_redrawn(), 1u) << "100 records cannot hold the frame: it is drawn again once";
+    EXPECT_GE(renderer->face_buffer_capacity(), records.size());
+    EXPECT_EQ(renderer->faces_drawn().culling->faces_requested, records.size());
+    EXPECT_EQ(renderer->read_visible_faces(), records);
+    EXPECT_EQ(renderer->read_eclipse_ids(), cells);
+    renderer->render(settings, camera);
+    EXPECT_EQ(renderer->frames_redrawn(), 1u) << "the grown buffer holds the same frame";
 }
 
 TEST(VisibleDrawIdentity, Zaphirus) { check_identity(generated("zaphirus"), 1); }

@@ -50,12 +50,15 @@ void dispatch_invocations(const gl::Program& p, std::size_t invocations, GLbitfi
 
 /// The counters of visibility/cull_cells.comp.
 constexpr std::array<std::uint32_t, 5> cleared_counters{0, 0, 0, 0, 0};
+/// Byte offset of faces_requested in visibility/culling_counters.glsl.
+constexpr GLintptr faces_requested_offset = 4 * sizeof(std::uint32_t);
 /// DrawElementsIndirectCommand: count, instance count, first index, base vertex, base instance.
 constexpr std::size_t draw_command_bytes = 5 * sizeof(std::uint32_t);
 
 }  // namespace
 
-VisibleFaces::VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_capacity)
+VisibleFaces::VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_limit,
+                           std::size_t initial_capacity)
     : classify_(shaders.build({{GL_COMPUTE_SHADER, "visibility/classify_bricks.comp"}})),
       cull_(shaders.build({{GL_COMPUTE_SHADER, "visibility/cull_cells.comp"}})),
       finish_(shaders.build({{GL_COMPUTE_SHADER, "visibility/finish_culling.comp"}})),
@@ -71,15 +74,31 @@ VisibleFaces::VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& b
       brick_begin_texels_(brick_begin_, GL_R32UI),
       brick_class_texels_(brick_classes_, GL_R32UI),
       brick_count_(bricks.brick_count()),
-      face_capacity_(std::max<std::size_t>(face_capacity, 1)),
+      face_limit_(std::max<std::size_t>(face_limit, 1)),
       counters_(sizeof(cleared_counters), cleared_counters.data(), GL_DYNAMIC_STORAGE_BIT),
-      faces_(face_capacity_ * sizeof(std::uint32_t), nullptr),
-      chunks_(QuadDraw::chunks_for(face_capacity_)),
-      commands_(chunks_ * draw_command_bytes, nullptr),
       cell_masks_(std::max<std::size_t>((bricks.cells.size() + 3) / 4, 1) * sizeof(std::uint32_t), nullptr),
       brick_counts_(std::max<std::size_t>(brick_count_, 1) * sizeof(std::uint32_t), nullptr),
       brick_offsets_(std::max<std::size_t>(brick_count_, 1) * sizeof(std::uint32_t), nullptr),
-      block_offsets_(std::max<std::size_t>((brick_count_ + scan_block - 1) / scan_block, 1) * sizeof(std::uint32_t), nullptr) {}
+      block_offsets_(std::max<std::size_t>((brick_count_ + scan_block - 1) / scan_block, 1) * sizeof(std::uint32_t), nullptr) {
+    set_capacity(initial_capacity);
+}
+
+void VisibleFaces::set_capacity(std::size_t faces) {
+    face_capacity_ = std::clamp<std::size_t>(faces, 1, face_limit_);
+    faces_ = {};  // the old buffer goes before the new one is allocated
+    faces_ = gl::Buffer(face_capacity_ * sizeof(std::uint32_t), nullptr);
+    chunks_ = QuadDraw::chunks_for(face_capacity_);
+    commands_ = gl::Buffer(chunks_ * draw_command_bytes, nullptr);
+}
+
+bool VisibleFaces::grow_to_fit() {
+    std::uint32_t requested = 0;
+    glGetNamedBufferSubData(counters_.id(), faces_requested_offset, sizeof(requested), &requested);
+    if (requested <= face_capacity_ || face_capacity_ == face_limit_) return false;
+    // A margin of an eighth, so that a camera moving on does not grow the buffer every frame.
+    set_capacity(std::size_t(requested) + std::size_t(requested) / 8);
+    return true;
+}
 
 void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera,
                           bool keep_rear_faces) {

@@ -28,9 +28,13 @@ struct CullingCounts {
 
 class VisibleFaces {
 public:
-    /// `face_capacity`: records the face buffer holds (every face the selection can pick: the
-    /// exposed faces plus one side of each interior face, see GridLayout::unique_face_count).
-    VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_capacity);
+    /// `face_limit`: every face the selection can pick (the exposed faces plus one side of each
+    /// interior face, selectable_face_capacity). The face buffer starts at `initial_capacity`
+    /// records (at most `face_limit`) and grows, up to `face_limit`, when a frame selects more
+    /// (grow_to_fit): a frame draws about a tenth of the faces a model has, and on llvmpipe every
+    /// buffer byte is resident memory.
+    VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_limit,
+                 std::size_t initial_capacity);
 
     /// Builds the cut's min/max pyramid (from `cut`, the texture stage 2 reads; null: no cut) and
     /// selects the faces of secondary cells for the model `camera`. `keep_rear_faces` (freeze
@@ -42,6 +46,15 @@ public:
     void draw(const GridBuffers& grid) const;
     /// Reads the counters of the last selection back (a GPU->CPU sync: not in timed frames).
     CullingCounts read_counts() const;
+    /// After a finished frame: reads the last selection's face count (4 bytes) and, if the face
+    /// buffer was too small for it, grows the buffer to fit it with a margin. True when it grew:
+    /// that frame dropped faces and must be drawn again.
+    bool grow_to_fit();
+    /// Sizes the face buffer to `faces` records (clamped to 1..face_limit); it grows from there.
+    void set_capacity(std::size_t faces);
+    /// Grows the face buffer to `face_limit` (no selection can overflow it then).
+    void reserve_limit() { set_capacity(face_limit_); }
+    std::size_t face_capacity() const { return face_capacity_; }
     /// Reads the last selection's face records back in drawing order (a GPU->CPU sync, for tests).
     std::vector<std::uint32_t> read_faces() const;
     std::size_t memory_bytes() const;
@@ -59,6 +72,7 @@ private:
     gl::Buffer brick_classes_;  ///< class of each brick this frame (classify_bricks.comp)
     gl::BufferTexture brick_cell_texels_, brick_begin_texels_, brick_class_texels_;  ///< cull_cells.comp's reads
     std::size_t brick_count_ = 0;
+    std::size_t face_limit_ = 0;
     std::size_t face_capacity_ = 0;
     gl::Buffer counters_, faces_;
     std::size_t chunks_ = 0;  ///< draw commands: QuadDraw chunks of the face capacity
