@@ -38,10 +38,10 @@ vec3 cut_normal_at(ivec2 texel) { return texelFetch(cut_surface, texel, 0).rgb; 
 // Whether the cut at `texel` is the clamp just in front of the rear shell (the strategy's cut
 // went past the model there, cut_surface/resolve.frag): the shell behind it shows as cut fill,
 // and no border line is drawn against it.
-uniform sampler2D cut_position;  // RGBA32F: world position, w = 1 cut, 2 clamped at the rear shell
+uniform sampler2D cut_rear_clamp;  // R8: 1 where the cut is clamped at the rear shell, else 0
 bool cut_is_rear_shell(ivec2 texel) {
     return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, ivec2(cut_size))) &&
-           texelFetch(cut_position, texel, 0).w > 1.5;
+           texelFetch(cut_rear_clamp, texel, 0).r > 0.5;
 }
 
 // Freeze view: the cut is another camera's, so its rear-shell clamp follows that camera's rays and

@@ -1,6 +1,7 @@
 // The cut surface from its depth image (every strategy writes depth (s - near) / (far - near)
-// along the cut camera's axis, 0 = nothing cut): world position per pixel, and the normal from
-// the neighbours on the smoother side of each axis (so a wall's edge does not bend it).
+// along the cut camera's axis, 0 = nothing cut): the normal from the neighbours' world positions
+// on the smoother side of each axis (so a wall's edge does not bend it), and whether the cut is
+// clamped at the rear shell (0 here; cut_surface/resolve.frag sets it).
 uniform mat4 inverse_cut_view;
 uniform vec2 projection_scale;   // P[0][0], P[1][1] of the cut camera
 uniform vec2 cut_size;           // pixels
@@ -8,7 +9,7 @@ uniform float cut_near;          // cut camera near plane
 uniform float cut_far;           // cut camera far plane
 
 layout(location = 0) out vec4 out_cut;       // world normal (facing the camera), depth s (0: no cut)
-layout(location = 1) out vec4 out_position;  // world position, 1 (0 where nothing is cut)
+layout(location = 1) out float out_rear_clamp;  // 1: clamped at the rear shell
 
 vec3 cut_world_position(vec2 window, float s) {
     vec2 ndc = window / cut_size * 2.0 - 1.0;
@@ -23,7 +24,7 @@ float stored_to_depth(float stored) { return stored > 0.0 ? cut_near + stored * 
 void write_cut(ivec2 texel, float s) {
     if (s <= 0.0) {
         out_cut = vec4(0.0);
-        out_position = vec4(0.0);
+        out_rear_clamp = 0.0;
         return;
     }
     vec3 world = cut_world_position(vec2(texel) + 0.5, s);
@@ -42,5 +43,5 @@ void write_cut(ivec2 texel, float s) {
     normal = dot(normal, normal) > 0.0 ? normalize(normal) : normalize(camera - world);
     if (dot(normal, camera - world) < 0.0) normal = -normal;
     out_cut = vec4(normal, s);
-    out_position = vec4(world, 1.0);
+    out_rear_clamp = 0.0;
 }

@@ -1,5 +1,5 @@
 #version 450 core
-// Cut surface targets (normal + depth, position) from a strategy's depth image, kept in front of
+// Cut surface targets (normal + depth, rear-shell clamp) from a strategy's depth image, kept in front of
 // the rear shell unless the frame is see-through (src/cutaway/rear_shell_depth.h).
 uniform sampler2D cut_depth;  // DEPTH32F: (s - near) / (far - near), 0 = nothing cut
 uniform sampler2D rear_shell_depth;  // the same encoding: the farthest shell face, 0 = none
@@ -23,7 +23,7 @@ void main() {
     ivec2 texel = ivec2(gl_FragCoord.xy);
     float s = depth_of(texel);
     write_cut(texel, s);
-    // position.w = 2: the cut here is the clamp at the rear shell, not the strategy's surface
-    // (stage 2 draws no border lines against it: common/cut_lookup.glsl).
-    if (s > 0.0 && s < stored_to_depth(texelFetch(cut_depth, texel, 0).r)) out_position.w = 2.0;
+    // The cut here is the clamp at the rear shell, not the strategy's surface (stage 2 draws no
+    // border lines against it: common/cut_lookup.glsl).
+    if (s > 0.0 && s < stored_to_depth(texelFetch(cut_depth, texel, 0).r)) out_rear_clamp = 1.0;
 }

@@ -5,7 +5,7 @@
 // full window). DISTANCE_SCALED shrinks the radius with the pixel's distance to the cut camera
 // (src/cutaway/post/mean_filter.h): r = clamp(round(R * reference_depth / s), 1, R), s the
 // unfiltered cut's depth at the pixel (R where nothing is cut). The second pass writes the
-// filtered depth (same encoding); normals and positions are then rebuilt from it
+// filtered depth (same encoding); normals (and the rear-shell clamp) are then rebuilt from it
 // (cut_surface/resolve.frag).
 uniform sampler2D cut_depth;  // pass 0: the cut's depth; pass 1: the first pass's output
 uniform vec2 cut_size;

@@ -203,7 +203,7 @@ private:
     const CutTargets& active_cut() const;
     /// Render units the rear-shell clamp keeps in front of the rear shell seen from `camera`.
     float rear_margin(const Camera& camera) const;
-    /// Normals and positions of `targets`' cut, clamped in front of the rear shell (unless see_through).
+    /// Normals and rear-shell clamp of `targets`' cut, clamped in front of the rear shell (unless see_through).
     void resolve_cut(const CutTargets& targets, const FrameSettings& settings, const Camera& cut_camera);
     /// Freeze view: the rear shell seen from the model `camera`, which stage 2 keeps (CutClip).
     /// Reuses rear_shell_ (only needed while the cut is made).

@@ -12,10 +12,10 @@ const float far_depth = 1.0f;
 
 CutTargets::CutTargets(int width, int height)
     : surface(GL_TEXTURE_2D, GL_RGBA32F, width, height),
-      position(GL_TEXTURE_2D, GL_RGBA32F, width, height),
+      rear_clamp(GL_TEXTURE_2D, GL_R8, width, height),
       depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
     framebuffer.attach(GL_COLOR_ATTACHMENT0, surface);
-    framebuffer.attach(GL_COLOR_ATTACHMENT1, position);
+    framebuffer.attach(GL_COLOR_ATTACHMENT1, rear_clamp);
     framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
     const std::array<GLenum, 2> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     framebuffer.finish(buffers, "cut surface");

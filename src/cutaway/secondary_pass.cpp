@@ -16,8 +16,8 @@ void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& cam
     const Camera& cut_camera = clip.cut_camera;
     gl::set_uniform(p, "cut_surface", 1);
     clip.cut.surface.bind(1);
-    gl::set_uniform(p, "cut_position", 5);
-    clip.cut.position.bind(5);
+    gl::set_uniform(p, "cut_rear_clamp", 5);
+    clip.cut.rear_clamp.bind(5);
     gl::set_uniform(p, "cut_view", cut_camera.view);
     gl::set_uniform(p, "cut_projection", cut_camera.projection);
     gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());

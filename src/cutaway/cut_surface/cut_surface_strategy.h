@@ -54,7 +54,7 @@ public:
     virtual ~CutSurfaceStrategy() = default;
     /// Writes the cut's depth image into targets.depth, which the caller cleared to 0 ("nothing
     /// cut"): (s - near) / (far - near) of the cut camera, s the depth along its view axis.
-    /// The pipeline then rebuilds normals and positions (cut_resolve.h).
+    /// The pipeline then rebuilds normals and the rear-shell clamp (cut_resolve.h).
     virtual void render(const CutSurfaceInputs& inputs, const CutTargets& targets) = 0;
     /// Bytes the last render() read back from the GPU (0 for a strategy that runs on the GPU).
     virtual std::size_t readback_bytes() const { return 0; }
