@@ -19,7 +19,7 @@ void main() {
         float value = texelFetch(cell_value_texels, int(compact)).r;
         bool primary = value >= value_range.x && value <= value_range.y;
         if (primary && use_box) {
-            ivec3 c = ivec3(cell_ijk(eclipse_of_compact[compact]));
+            ivec3 c = ivec3(compact_cell_ijk(compact));
             primary = all(greaterThanEqual(c, box_min)) && all(lessThanEqual(c, box_max));
         }
         if (primary) bits |= 1u << b;

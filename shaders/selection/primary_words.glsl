@@ -5,13 +5,13 @@
 
 layout(std430, binding = 9) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 2 bits per side
 layout(std430, binding = 10) buffer PrimaryBits { uint primary_bits[]; };  // 1 bit per compact cell
-layout(std430, binding = 14) readonly buffer EclipseOfCompact { uint eclipse_of_compact[]; };
 layout(std430, binding = 15) readonly buffer CompactOfEclipse { uint compact_of_eclipse[]; };  // ~0u: inactive
 // Per word: primary cells and primary faces it holds; after the scan, the first index of each.
 layout(std430, binding = 16) buffer WordCounts { uvec2 word_counts[]; };
 
 uniform uint active_cells;
 uniform uvec3 grid_dims;  // NX, NY, NZ
+uniform uint plane_slots_per_layer;  // corner-plane slots per layer: 1 compact ZCORN, 2 full
 
 const uint no_cell = 0xffffffffu;
 
@@ -20,8 +20,12 @@ uint word_count() { return (active_cells + 31u) / 32u; }
 // This invocation's word (dispatches spread over Y beyond 65535 workgroups along X).
 uint word_index() { return gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * gl_WorkGroupSize.x; }
 
-uvec3 cell_ijk(uint eclipse) {
-    return uvec3(eclipse % grid_dims.x, (eclipse / grid_dims.x) % grid_dims.y, eclipse / (grid_dims.x * grid_dims.y));
+// IJK of an active cell from its top-face texel in the grid's cell records (common/grid.glsl:
+// ((slots k NY + j) NX + i), src/cutaway/grid_buffers.cpp), so no Eclipse index per cell is kept.
+uvec3 compact_cell_ijk(uint compact) {
+    uint texel = texelFetch(cell_texels, int(compact)).g;
+    uint row = texel / grid_dims.x;
+    return uvec3(texel % grid_dims.x, row % grid_dims.y, row / (plane_slots_per_layer * grid_dims.y));
 }
 
 bool is_primary(uint compact) { return compact != no_cell && ((primary_bits[compact >> 5] >> (compact & 31u)) & 1u) != 0u; }
@@ -30,8 +34,7 @@ uint face_class(uint compact, uint side) { return (cell_face_classes[compact] >>
 
 // Compact index of the active neighbour across `side` (I-, I+, J-, J+, K-, K+), or no_cell.
 uint neighbour(uint compact, uint side) {
-    uint eclipse = eclipse_of_compact[compact];
-    ivec3 c = ivec3(cell_ijk(eclipse));
+    ivec3 c = ivec3(compact_cell_ijk(compact));
     c[side >> 1] += (side & 1u) == 0u ? -1 : 1;
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(grid_dims)))) return no_cell;
     return compact_of_eclipse[uint(c.x) + grid_dims.x * (uint(c.y) + grid_dims.y * uint(c.z))];

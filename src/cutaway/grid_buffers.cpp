@@ -14,15 +14,9 @@ FaceBuffer FaceBuffer::from(const std::vector<std::uint32_t>& records) {
 }
 
 namespace {
-/// 2 bits per side (FaceClass), sides in FaceSide order, one word per active cell.
+/// The layout's packed classes (2 bits per side), one word per active cell as the shaders read them.
 std::vector<std::uint32_t> packed_face_classes(const GridLayout& layout) {
-    std::vector<std::uint32_t> packed(layout.cells.size(), 0);
-    const std::ptrdiff_t count = std::ptrdiff_t(packed.size());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t c = 0; c < count; ++c)
-        for (std::size_t s = 0; s < 6; ++s)
-            packed[std::size_t(c)] |= std::uint32_t(layout.face_classes[6 * std::size_t(c) + s]) << (2 * s);
-    return packed;
+    return {layout.face_classes.begin(), layout.face_classes.end()};
 }
 /// Depth plane slots of the corner-plane texels: the store's own (ZcornStore), NZ+1 when compact
 /// (a layer's bottom is the next layer's top), 2NZ otherwise.
@@ -90,6 +84,7 @@ gl::Buffer upload_corner_planes(const grid::ZcornStore& zcorn, double centre_z) 
 GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn, const ModelFrame& frame)
     : layout_(layout),
       grid_size_(unsigned(zcorn.dims().nx), unsigned(zcorn.dims().ny)),
+      plane_slots_per_layer_(zcorn.is_compact() ? 1u : 2u),
       frame_(frame),
       pillars_(gl::Buffer::from(std::span<const float>(layout.pillars))),
       corner_planes_(upload_corner_planes(zcorn, frame.centre.z)),

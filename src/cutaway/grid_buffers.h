@@ -51,6 +51,9 @@ public:
     const QuadDraw& quads() const { return quads_; }
 
     glm::uvec2 grid_size() const { return grid_size_; }
+    /// Corner-plane slots per layer: 1 for a compact ZCORN (shared layer interfaces), 2 for a full
+    /// one. A cell record's top-face texel is ((slots k NY + j) NX + i).
+    unsigned plane_slots_per_layer() const { return plane_slots_per_layer_; }
     const ModelFrame& frame() const { return frame_; }
     const FaceBuffer& secondary_faces() const { return secondary_; }
     const FaceBuffer& primary_faces() const { return primary_; }
@@ -66,6 +69,7 @@ public:
 private:
     const GridLayout& layout_;
     glm::uvec2 grid_size_;
+    unsigned plane_slots_per_layer_;
     ModelFrame frame_;
     gl::Buffer pillars_, corner_planes_, cells_, values_, cell_face_classes_, primary_bits_;
     FaceBuffer secondary_, primary_, primary_cells_, shell_, outer_;

@@ -53,7 +53,7 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
     for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
         if (grid.active(cell)) layout.compact_of_cell[cell] = active++;
     layout.cells.resize(active);
-    layout.face_classes.resize(6 * std::size_t(active));
+    layout.face_classes.resize(active);
     // Each active cell's records at its compact index (Eclipse order), the cells split over the threads.
     const std::ptrdiff_t cell_count = std::ptrdiff_t(grid.cell_count());
 #pragma omp parallel for schedule(static)
@@ -64,8 +64,10 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
         const grid::CellIjk c = grid::cell_ijk(dims, cell);
         const bool negative = grid::signed_volume(grid::cell_corners(grid, c.i, c.j, c.k)) < 0;
         layout.cells[compact] = std::uint32_t(cell) | ((negative != render_flips) ? 0x80000000u : 0u);
+        std::uint16_t packed = 0;
         for (int side = 0; side < 6; ++side)
-            layout.face_classes[6 * std::size_t(compact) + std::size_t(side)] = classes.at(cell, grid::FaceSide(side));
+            packed |= std::uint16_t(unsigned(classes.at(cell, grid::FaceSide(side))) << (2 * side));
+        layout.face_classes[compact] = packed;
     }
     return layout;
 }
@@ -82,7 +84,7 @@ FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& 
         if (primary) lists.primary_cells.push_back(compact);
         for (int s = 0; s < 6; ++s) {
             const auto side = grid::FaceSide(s);
-            const grid::FaceClass face_class = layout.face_classes[6 * compact + std::size_t(s)];
+            const grid::FaceClass face_class = layout.face_class(compact, side);
             const std::uint32_t record = pack_face(compact, side, face_class);
             if (!primary) {
                 if (with_secondary) lists.secondary.push_back(record);
@@ -99,10 +101,12 @@ FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& 
 
 std::size_t selectable_face_capacity(const GridLayout& layout) {
     std::size_t exposed = 0, interior = 0;
-    for (grid::FaceClass c : layout.face_classes) {
-        if (c == grid::FaceClass::interior) ++interior;
-        else if (c != grid::FaceClass::none) ++exposed;
-    }
+    for (std::size_t compact = 0; compact < layout.face_classes.size(); ++compact)
+        for (int s = 0; s < 6; ++s) {
+            const grid::FaceClass c = layout.face_class(compact, grid::FaceSide(s));
+            if (c == grid::FaceClass::interior) ++interior;
+            else if (c != grid::FaceClass::none) ++exposed;
+        }
     const std::size_t faces = exposed + (interior + 1) / 2;
     return faces + faces / 64 + 1024;
 }
@@ -113,7 +117,7 @@ std::vector<std::uint32_t> faces_where(const GridLayout& layout, Keep keep) {
     std::vector<std::uint32_t> faces;
     for (std::uint32_t compact = 0; compact < layout.cells.size(); ++compact)
         for (int s = 0; s < 6; ++s) {
-            const grid::FaceClass face_class = layout.face_classes[6 * compact + std::size_t(s)];
+            const grid::FaceClass face_class = layout.face_class(compact, grid::FaceSide(s));
             if (keep(face_class)) faces.push_back(pack_face(compact, grid::FaceSide(s), face_class));
         }
     return faces;

@@ -29,8 +29,13 @@ struct GridLayout {
     std::vector<std::uint32_t> cells;
     /// Active cell index -> compact index (or UINT32_MAX for inactive cells).
     std::vector<std::uint32_t> compact_of_cell;
-    /// Classification of the six faces of every active cell, cell-major by compact index.
-    std::vector<grid::FaceClass> face_classes;
+    /// Classification of the six faces of every active cell by compact index, 2 bits per side
+    /// (FaceClass at bits 2 s, sides in FaceSide order), as the GPU reads them.
+    std::vector<std::uint16_t> face_classes;
+
+    grid::FaceClass face_class(std::size_t compact, grid::FaceSide side) const {
+        return grid::FaceClass((face_classes[compact] >> (2 * unsigned(side))) & 3u);
+    }
 };
 
 /// Throws std::invalid_argument if the model has more than max_render_cells active cells.

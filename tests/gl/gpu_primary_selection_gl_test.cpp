@@ -98,6 +98,21 @@ TEST(GpuPrimarySelection, FaultedModelWithInactiveCellsEqualsTheCpuLists) {
     check_model(grid, 2);
 }
 
+TEST(GpuPrimarySelection, ZcornWithGapsBetweenLayersEqualsTheCpuLists) {
+    // The shaders take a cell's IJK from its top-face texel, whose layer stride is two plane slots
+    // when the layers do not share their interfaces (ZCORN's full layout): the same model with
+    // every bottom plane lowered a little.
+    const grid::CornerPointGrid compact = faulted_model_with_inactive_cells({23, 19, 7}, 0.3, 12);
+    std::vector<double> depths(compact.dims().zcorn_value_count());
+    const std::size_t plane = 4 * std::size_t(compact.dims().nx) * std::size_t(compact.dims().ny);
+    for (std::size_t n = 0; n < depths.size(); ++n) depths[n] = compact.zcorn().value(n) + double(n / plane % 2) * 0.25;
+    grid::CornerPointGrid gapped(compact.dims(), std::vector<double>(compact.coord()),
+                                 grid::ZcornStore::from_values(compact.dims(), depths), std::vector<std::uint8_t>(compact.actnum()));
+    gapped.set_property("PORO", std::vector<float>(*compact.property("PORO")));
+    ASSERT_FALSE(gapped.zcorn().is_compact());
+    check_model(gapped, 3);
+}
+
 TEST(GpuPrimarySelection, NanValuesAreNeverPrimaryAndEmptySelectionsHaveEmptyLists) {
     const grid::CornerPointGrid& grid = petra();
     std::vector<float> values = tied_values(grid.cell_count());

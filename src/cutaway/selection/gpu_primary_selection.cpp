@@ -10,15 +10,9 @@
 namespace cutaway::pipeline {
 namespace {
 
-enum SelectionBinding : unsigned { eclipse_of_compact_binding = 14, compact_of_eclipse_binding = 15,
+enum SelectionBinding : unsigned { compact_of_eclipse_binding = 15,
                                    word_counts_binding = 16, totals_binding = 17, primary_cells_out_binding = 18,
                                    primary_faces_out_binding = 19 };
-
-std::vector<std::uint32_t> eclipse_indices(const GridLayout& layout) {
-    std::vector<std::uint32_t> eclipse(layout.cells.size());
-    for (std::size_t c = 0; c < eclipse.size(); ++c) eclipse[c] = layout.cells[c] & 0x7fffffffu;
-    return eclipse;
-}
 
 std::size_t word_count(std::size_t cells) { return (cells + 31) / 32; }
 
@@ -32,7 +26,6 @@ GpuPrimarySelection::GpuPrimarySelection(const gl::ShaderLibrary& shaders, const
       write_(shaders.build({{GL_COMPUTE_SHADER, "selection/write_primary_lists.comp"}})),
       active_cells_(layout.cells.size()),
       dims_(unsigned(dims.nx), unsigned(dims.ny), unsigned(dims.nz)),
-      eclipse_of_compact_(gl::Buffer::from(std::span<const std::uint32_t>(eclipse_indices(layout)))),
       compact_of_eclipse_(gl::Buffer::from(std::span<const std::uint32_t>(layout.compact_of_cell))),
       word_counts_(std::max<std::size_t>(word_count(active_cells_), 1) * 2 * sizeof(std::uint32_t), nullptr),
       totals_(2 * sizeof(std::uint32_t), nullptr) {
@@ -46,7 +39,9 @@ GpuPrimarySelection::GpuPrimarySelection(const gl::ShaderLibrary& shaders, const
 void GpuPrimarySelection::bind_inputs(const GridBuffers& grid) const {
     grid.bind_geometry();
     grid.bind_culling_inputs();
-    eclipse_of_compact_.bind_base(GL_SHADER_STORAGE_BUFFER, eclipse_of_compact_binding);
+    // A cell's IJK comes from its top-face texel in the grid's cell records (primary_words.glsl).
+    for (const gl::Program* p : {&mark_, &count_, &write_})
+        gl::set_uniform(*p, "plane_slots_per_layer", grid.plane_slots_per_layer());
     compact_of_eclipse_.bind_base(GL_SHADER_STORAGE_BUFFER, compact_of_eclipse_binding);
     word_counts_.bind_base(GL_SHADER_STORAGE_BUFFER, word_counts_binding);
 }
@@ -98,7 +93,7 @@ void GpuPrimarySelection::build_lists(GridBuffers& grid) {
 }
 
 std::size_t GpuPrimarySelection::memory_bytes() const {
-    return eclipse_of_compact_.size_bytes() + compact_of_eclipse_.size_bytes() + word_counts_.size_bytes() +
+    return compact_of_eclipse_.size_bytes() + word_counts_.size_bytes() +
            totals_.size_bytes();
 }
 
