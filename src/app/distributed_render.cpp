@@ -189,7 +189,7 @@ struct RankScene {
         rank->select_range(property.primary_range, ijk_box);
         glFinish();
         setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
-        property.owned = {};
+        property.owned = std::vector<float>();  // (= {} would keep the capacity)
         property.external = nullptr;
         model.grid = {};  // the loaded block and its halo go; the renderer's block stays
         // Framed as the single-process frame is: beside the colour bar rank 0 draws.

@@ -86,6 +86,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       frame_(frame),
       layout_(build_grid_layout(grid, classes, frame_)),
       grid_(grid),
+      compact_of_cell_(grid.actnum()),
       buffers_(layout_, grid.zcorn(), frame_),
       visible_(make_visible_faces(shaders, grid, layout_, frame_, corner_depths_read)),
       selection_(shaders, layout_, grid.dims()),
@@ -103,8 +104,11 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       ssao_(shaders),
       composite_(shaders),
       colour_bar_(shaders) {
-    // The GPU holds the pillars now; the CPU copy is not read again.
-    layout_.pillars = {};
+    // The GPU holds the pillars and the Eclipse -> compact table now (the bricks and the selection
+    // buffers are built): the CPU copies are not read again (4 bytes per cell for the table;
+    // compact_of_cell_ answers the few lookups a selection change needs).
+    layout_.pillars = std::vector<float>();  // (= {} would keep the capacity)
+    layout_.compact_of_cell = std::vector<std::uint32_t>();
     set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));
     set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1, ""});
 }
@@ -189,7 +193,7 @@ CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camer
             glm::radians(0.5f * std::clamp(s.aperture_v_deg, 0.0f, 180.0f)), s.back_margin * frame_.radius(),
             nearest_model_depth(frame_, cut_camera),
             std::max(-(cut_camera.view * glm::vec4(primary_centroid_, 1.0f)).z, cut_camera.near_plane), s.seeds,
-            {&primary_flags_, &layout_.compact_of_cell, grid_.dims(), selection_generation_}};
+            {&primary_flags_, &compact_of_cell_, grid_.dims(), selection_generation_}};
 }
 
 float CutawayRenderer::rear_margin(const Camera& camera) const {

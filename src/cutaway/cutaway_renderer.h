@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "cutaway/active_cell_rank.h"
 #include "cutaway/camera.h"
 #include "cutaway/colour_bar.h"
 #include "cutaway/cone_field/cone_image.h"
@@ -222,6 +223,7 @@ private:
     ModelFrame frame_;
     GridLayout layout_;
     const grid::CornerPointGrid& grid_;
+    ActiveCellRank compact_of_cell_;  ///< Eclipse -> compact, once the layout's table is released
     GridBuffers buffers_;
     VisibleFaces visible_;
     std::optional<ExposedSurface> exposed_;  ///< the plain frame's faces, built on its first use

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "cutaway/active_cell_rank.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/grid_layout.h"
 #include "cutaway/visibility/cell_bricks.h"
@@ -56,6 +57,22 @@ TEST(SetUpThreads, OneThreadAndFourBuildTheSameRecords) {
     EXPECT_EQ(one.bricks.cells, four.bricks.cells);
     EXPECT_EQ(one.bricks.begin, four.bricks.begin);
     EXPECT_EQ(one.bricks.boxes, four.bricks.boxes);
+}
+
+// After its set-up the renderer answers Eclipse -> compact lookups (frustum-clusters' boxes) from
+// ACTNUM with a count per block of 64 cells instead of the layout's table: reek has inactive
+// cells, so the counts within a block matter.
+TEST(ActiveCellRank, EqualsTheLayoutsCompactIndexOfEveryActiveCell) {
+    const grid::CornerPointGrid grid = reek_grid();
+    ASSERT_LT(grid.active_count(), grid.cell_count());
+    const pipeline::GridLayout layout =
+        pipeline::build_grid_layout(grid, grid::FaceClassification(grid, grid::default_face_tolerance(grid)),
+                                    pipeline::make_model_frame(grid, 0.0));
+    const pipeline::ActiveCellRank rank(grid.actnum());
+    std::size_t wrong = 0;
+    for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
+        if (grid.active(cell)) wrong += rank(cell) != layout.compact_of_cell[cell];
+    EXPECT_EQ(wrong, 0u);
 }
 
 TEST(CellBricks, EveryActiveCellInExactlyOneBrickWhoseBoxHoldsItsCorners) {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cutaway/active_cell_rank.h"
 #include "cutaway/camera.h"
 #include "cutaway/cone_field/cone_image.h"
 #include "cutaway/frame_settings.h"
@@ -22,7 +23,7 @@ namespace cutaway::pipeline {
 /// The primary selection as the CPU holds it, for strategies that precompute per selection.
 struct PrimarySelection {
     const std::vector<std::uint8_t>* flags = nullptr;              ///< one per Eclipse cell
-    const std::vector<std::uint32_t>* compact_of_cell = nullptr;  ///< Eclipse -> compact (UINT32_MAX: inactive)
+    const ActiveCellRank* compact_of_cell = nullptr;  ///< Eclipse -> compact index of an active cell
     grid::GridDims dims;
     std::uint64_t generation = 0;  ///< changes whenever the selection does
 };

@@ -32,7 +32,7 @@ ClusterBuffers upload_clusters(const PrimarySelection& selection) {
         for (int k = b.k0; k <= b.k1; ++k)
             for (int j = b.j0; j <= b.j1; ++j)
                 for (int i = b.i0; i <= b.i1; ++i)
-                    cells.push_back((*selection.compact_of_cell)[std::size_t(i) + std::size_t(d.nx) * (std::size_t(j) + std::size_t(d.ny) * std::size_t(k))]);
+                    cells.push_back((*selection.compact_of_cell)(d.cell_index(i, j, k)));
         ranges.push_back(std::uint32_t(first));
         ranges.push_back(std::uint32_t(cells.size() - first));
     }
