@@ -58,7 +58,8 @@ def row_for(preset, stats, wall, peak):
             "faces_drawn": stats.get("faces_drawn"), "model_load_s": stats.get("model_load_s"),
             "renderer_setup_s": stats.get("renderer_setup_s"), "strategy": (stats.get("strategy") or {}).get("name"),
             "command_wall_s": wall, "peak_resident_bytes": peak, "peak_bytes_per_active_cell": peak / cells,
-            "gpu_memory_bytes": stats.get("gpu_memory_bytes"), "memory_bytes": stats.get("memory_bytes")}
+            "gpu_memory_bytes": stats.get("gpu_memory_bytes"), "memory_bytes": stats.get("memory_bytes"),
+            "frames_redrawn": stats.get("frames_redrawn")}
 
 
 def markdown(rows, context, size):
@@ -78,6 +79,10 @@ def markdown(rows, context, size):
                      f"{s['secondary']:.0f} | {r['faces_drawn']['secondary']:,} | {r['model_load_s']:.1f} | "
                      f"{r['renderer_setup_s']:.1f} | {r['command_wall_s']:.1f} | "
                      f"{r['peak_resident_bytes'] / 2**20:.0f} | {r['peak_bytes_per_active_cell']:.0f} |")
+    redrawn = [r for r in rows if r.get("frames_redrawn")]
+    lines += ["", "Frames drawn twice because the culling's face buffer (sized to what frames select, grown when one "
+              "selects more) had to grow: " + (", ".join(f"{r['preset']} {r['strategy']} {r['frames_redrawn']}" for r in redrawn)
+                                               if redrawn else "none") + " (stats.json `frames_redrawn`)."]
     lines += ["", "Where the memory goes (render's stats.json `memory_bytes`, bytes per active cell; on llvmpipe GPU "
               "memory is host memory): resident after the model is loaded or generated, what the renderer's set-up "
               "added (its GPU buffers, listed apart, and the 1080p render targets, about "
