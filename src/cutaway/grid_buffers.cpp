@@ -18,6 +18,9 @@ namespace {
 std::vector<std::uint32_t> packed_face_classes(const GridLayout& layout) {
     return {layout.face_classes.begin(), layout.face_classes.end()};
 }
+/// Corner-plane slots per layer: 1 when compact (shared layer interfaces), 2 otherwise.
+unsigned slots_per_layer(const grid::ZcornStore& zcorn) { return zcorn.is_compact() ? 1u : 2u; }
+
 /// Depth plane slots of the corner-plane texels: the store's own (ZcornStore), NZ+1 when compact
 /// (a layer's bottom is the next layer's top), 2NZ otherwise.
 std::size_t corner_plane_slots(const grid::ZcornStore& zcorn) {
@@ -31,7 +34,7 @@ std::size_t corner_plane_slots(const grid::ZcornStore& zcorn) {
 std::vector<std::uint32_t> gpu_cell_records(const GridLayout& layout, const grid::ZcornStore& zcorn) {
     const grid::GridDims& dims = zcorn.dims();
     const std::size_t nx = std::size_t(dims.nx), ny = std::size_t(dims.ny);
-    const std::size_t slots_per_layer = zcorn.is_compact() ? 1 : 2;
+    const std::size_t layer_slots = slots_per_layer(zcorn);
     std::vector<std::uint32_t> records(2 * layout.cells.size());
     const std::ptrdiff_t count = std::ptrdiff_t(layout.cells.size());
 #pragma omp parallel for schedule(static)
@@ -40,7 +43,7 @@ std::vector<std::uint32_t> gpu_cell_records(const GridLayout& layout, const grid
         const std::size_t eclipse = layout.cells[c] & 0x7fffffffu;
         const std::size_t i = eclipse % nx, j = eclipse / nx % ny, k = eclipse / (nx * ny);
         records[2 * c] = std::uint32_t(j * (nx + 1) + i) | (layout.cells[c] & 0x80000000u);
-        records[2 * c + 1] = std::uint32_t((slots_per_layer * k * ny + j) * nx + i);
+        records[2 * c + 1] = std::uint32_t((layer_slots * k * ny + j) * nx + i);
     }
     return records;
 }
@@ -84,7 +87,7 @@ gl::Buffer upload_corner_planes(const grid::ZcornStore& zcorn, double centre_z) 
 GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn, const ModelFrame& frame)
     : layout_(layout),
       grid_size_(unsigned(zcorn.dims().nx), unsigned(zcorn.dims().ny)),
-      plane_slots_per_layer_(zcorn.is_compact() ? 1u : 2u),
+      plane_slots_per_layer_(slots_per_layer(zcorn)),
       frame_(frame),
       pillars_(gl::Buffer::from(std::span<const float>(layout.pillars))),
       corner_planes_(upload_corner_planes(zcorn, frame.centre.z)),
