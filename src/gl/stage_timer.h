@@ -16,7 +16,8 @@ struct StageTime {
     double wall_ms = 0;      ///< fenced wall-clock time, milliseconds
     double gl_query_ms = 0;  ///< GL_TIME_ELAPSED of the same commands, milliseconds
     /// Whether the query agrees with the wall clock: query >= 50% of wall time, or within 0.5 ms of
-    /// it (the wall clock also counts driver submission, so a real GPU reads somewhat lower).
+    /// it (the wall clock also counts driver submission, so a real GPU reads somewhat lower), and
+    /// not longer than the wall time (at most 10% + 0.5 ms more: the two clocks' granularity).
     bool gl_query_valid = false;
 };
 
