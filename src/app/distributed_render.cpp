@@ -348,7 +348,8 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
                   << property.primary_range.min << ", " << property.primary_range.max << "]; rendering the context only\n";
     stats["faces_drawn"] = {{"secondary", faces_secondary}, {"primary", faces_primary}, {"summed_over_ranks", true}};
-    stats["cut_device"] = pipeline::find_cut_surface(settings.strategy).device;
+    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(rank.renderer().cut_strategy(settings));
+    stats["cut_device"] = strategy.device;
     stats["readback_bytes"] = 0;  // the strategy's own; the exchange's read-backs are in "distributed"
     stats["frame_ms_unfenced"] = nullptr;
     stats["frame_ms_unfenced_absent"] = "not measured under mpirun";
@@ -359,8 +360,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
                 "not computed under mpirun (the metrics' extra frames are single-process; compare --cell-ids with a "
                 "single-process run instead)";
         }
-    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(settings.strategy);
-    stats["strategy"] = {{"name", strategy.name}, {"device", strategy.device}, {"why", strategy.why}};
+    stats["strategy"] = strategy_json(strategy, settings.strategy);
     stats["gl_renderer"] = gl::gl_renderer();
     stats["gl_version"] = gl::gl_version();
     stats["gl_platform"] = scene.context->platform();

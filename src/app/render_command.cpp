@@ -111,7 +111,8 @@ int run_render(const RenderOptions& options) {
     stats["frames_redrawn"] = renderer.frames_redrawn();
     // Per frame (every timed frame reads back the same amount): 0 for the strategies on the GPU.
     stats["readback_bytes"] = renderer.cut_readback_bytes();
-    stats["cut_device"] = pipeline::find_cut_surface(settings.strategy).device;
+    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(renderer.cut_strategy(settings));
+    stats["cut_device"] = strategy.device;
     if (stats["faces_drawn"].contains("culling")) {
         stats["bricks_culled"] = stats["faces_drawn"]["culling"]["bricks_culled"];
         stats["cells_culled"] = stats["faces_drawn"]["culling"]["cells_culled"];
@@ -141,8 +142,7 @@ int run_render(const RenderOptions& options) {
                                       {"pixels", m.border_width.pixels}};
         stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
     }
-    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(settings.strategy);
-    stats["strategy"] = {{"name", strategy.name}, {"device", strategy.device}, {"why", strategy.why}};
+    stats["strategy"] = strategy_json(strategy, settings.strategy);
     stats["gl_renderer"] = gl::gl_renderer();
     stats["gl_version"] = gl::gl_version();
     stats["gl_platform"] = context->platform();

@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "app/option_checks.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 
 namespace cutaway::app {
 
@@ -44,6 +45,14 @@ json stage_statistics(const std::vector<pipeline::FrameTimes>& runs, const std::
     return {{"stages_ms", wall}, {"gl_query_ms", query}, {"gl_query_valid_by_stage", valid},
             {"gl_query_valid", std::all_of(valid.begin(), valid.end(), [](const json& v) { return v.get<bool>(); })},
             {"total_ms_per_run", all_runs}};
+}
+
+json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::string& requested) {
+    json out = {{"name", drawn.name}, {"device", drawn.device}, {"why", drawn.why}, {"requested", requested}};
+    if (requested == pipeline::auto_cut_strategy)
+        out["chosen_by"] = "auto: frustum-clusters below " + std::to_string(pipeline::auto_sweep_from_primaries) +
+                           " primary cells, frustum-sweep from there (cut_strategy_choice.h)";
+    return out;
 }
 
 json faces_drawn_json(const pipeline::FacesDrawn& drawn) {

@@ -9,6 +9,7 @@
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/cut_surface/cut_seeds.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "gl/gl_error.h"
 #include "grid/cell_geometry.h"
@@ -152,6 +153,11 @@ void CutawayRenderer::set_primary_centroid() {
     CentreSum centres = centroid_.centre_sum(buffers_);
     if (hooks_.sum_centres) centres = hooks_.sum_centres(centres);
     primary_centroid_ = centres.count ? glm::vec3(centres.sum / double(centres.count)) : glm::vec3(0);
+    primaries_of_all_renderers_ = centres.count;
+}
+
+std::string CutawayRenderer::cut_strategy(const FrameSettings& settings) const {
+    return resolve_cut_strategy(settings.strategy, primaries_of_all_renderers_);
 }
 
 void CutawayRenderer::selection_changed() {
@@ -248,11 +254,12 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
         last_filtered_ = cut_drawn && s.mean_filter >= 3;
         const bool combined = cut_drawn && hooks_.combine_max;
         // Cone-field strategies combine their seeds; the others their cut (a max either way).
-        const bool seeds_combined = combined && bool(find_cut_surface(s.strategy).cpu_reference);
+        const std::string cut_name = cut_strategy(s);
+        const bool seeds_combined = combined && bool(find_cut_surface(cut_name).cpu_reference);
         gl::timed_stage(timer_, "cut_surface", [&] {
             cut_.clear();
             if (!cut_drawn) return;
-            CutSurfaceStrategy& cut_strategy = strategy(s.strategy);
+            CutSurfaceStrategy& cut_strategy = strategy(cut_name);
             CutSurfaceInputs inputs = cut_inputs(s, cut_camera);
             if (seeds_combined) inputs.combine_seeds = [&](const gl::Texture& seeds) { hooks_.combine_max({&seeds}); };
             cut_strategy.render(inputs, cut_);

@@ -134,6 +134,10 @@ public:
     std::size_t primary_cell_count() const;
     /// Bytes the last frame's cut-surface strategy read back from the GPU (stats.json readback_bytes).
     std::size_t cut_readback_bytes() const { return cut_readback_bytes_; }
+    /// The registry strategy a frame with `settings` draws its cut with: settings.strategy, or for
+    /// "auto" the one it picks for the primaries of every renderer (cut_strategy_choice.h), as
+    /// of the last frame drawn.
+    std::string cut_strategy(const FrameSettings& settings) const;
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until unfreeze().
     void freeze(const Camera& camera) { frozen_camera_ = camera; frozen_valid_ = false; }
@@ -238,7 +242,8 @@ private:
     /// The selection on the CPU (frustum-clusters groups the flags; the walls' angle is exact at
     /// the primaries' centroid), read back from the GPU at the first frame after select_range.
     std::vector<std::uint8_t> primary_flags_;
-    glm::vec3 primary_centroid_{0};  ///< render space, mean of the primary cells' centres
+    glm::vec3 primary_centroid_{0};
+    std::uint64_t primaries_of_all_renderers_ = 0;  ///< summed by the hooks, with the centroid  ///< render space, mean of the primary cells' centres
     bool selection_on_cpu_ = false;
     std::size_t cut_readback_bytes_ = 0;
     std::uint64_t selection_generation_ = 0;  ///< counts selection changes

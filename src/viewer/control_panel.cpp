@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <imgui.h>
 
-#include "cutaway/cut_surface/cut_surface_registry.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 
 namespace cutaway::viewer {
 namespace {
@@ -80,9 +80,7 @@ unsigned property_section(ViewerState& state, const ViewerScene& scene) {
 
 unsigned cut_section(ViewerState& state) {
     app::RenderOptions& o = state.options;
-    std::vector<std::string> strategies;
-    for (const pipeline::CutSurfaceEntry& entry : pipeline::cut_surface_strategies()) strategies.push_back(entry.name);
-    bool changed = choice_combo("strategy", o.settings.strategy, strategies);
+    bool changed = choice_combo("strategy", o.settings.strategy, pipeline::cut_strategy_names());
     changed |= choice_combo("seeds", o.seeds, {"boxes", "geometry"});
     changed |= ImGui::SliderFloat("aperture H (full)", &o.aperture[0], 0, 180, "%.1f deg");
     changed |= ImGui::SliderFloat("aperture V (full)", &o.aperture[1], 0, 180, "%.1f deg");

@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/frame_metrics.h"
 #include "gl_test_support.h"
@@ -75,6 +76,36 @@ TEST(CutStrategies, JumpFloodingWithinItsErrorBoundsAgainstExactAt512) {
             EXPECT_LE(error.max_signed_error, error.tolerance);
             RecordProperty(std::string(name) + "_wrong_fraction_trial_" + std::to_string(trial), std::to_string(error.wrong_fraction));
         }
+    }
+}
+
+TEST(CutStrategies, AutoDrawsClustersBelowTenThousandPrimariesAndTheSweepFromThere) {
+    // "auto" (cut_strategy_choice.h) is no method of its own: its cut must be the chosen
+    // strategy's, pixel for pixel, and differ from the other one's (else the check is vacuous).
+    constexpr int width = 320, height = 240;
+    auto renderer = make_renderer(petra(), width, height);
+    const std::vector<float>& poro = *petra().property("PORO");
+    std::mt19937 random(7);
+    const Camera camera = make_orbit_camera(renderer->frame(), random_pose(random), width, height);
+    pipeline::FrameSettings settings;
+    settings.mean_filter = 0;
+    const auto cut_of = [&](const std::string& strategy) {
+        settings.strategy = strategy;
+        renderer->render(settings, camera);
+        return renderer->read_strategy_cut(camera).pixels;
+    };
+    // Petra's 35,838 active cells: 1% of them lie below the threshold, half of them above it.
+    const std::pair<double, std::string> cases[] = {{0.01, "frustum-clusters"}, {0.5, "frustum-sweep"}};
+    for (const auto& [fraction, chosen] : cases) {
+        SCOPED_TRACE("fraction " + std::to_string(fraction));
+        renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", fraction));
+        const auto automatic = cut_of(pipeline::auto_cut_strategy);
+        const std::size_t primaries = renderer->primary_cell_count();
+        EXPECT_EQ(primaries >= pipeline::auto_sweep_from_primaries, chosen == "frustum-sweep") << primaries;
+        EXPECT_EQ(renderer->cut_strategy(settings), chosen);
+        const std::string other = chosen == "frustum-sweep" ? "frustum-clusters" : "frustum-sweep";
+        EXPECT_NE(cut_of(other), automatic) << other << " draws the same cut: the test cannot tell them apart";
+        EXPECT_EQ(cut_of(chosen), automatic);
     }
 }
 

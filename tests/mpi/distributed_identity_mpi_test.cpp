@@ -21,6 +21,7 @@
 #include <random>
 
 #include "annotation/property_units.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "distributed/rank_blocks.h"
 #include "distributed/rank_renderer.h"
 #include "generators/generator.h"
@@ -75,16 +76,24 @@ void compare_colour(const Frame& single, const Frame& distributed, const std::ve
         }
 }
 
+/// This rank's renderer of its k slab of `grid`, coloured by PORO over its whole range.
+std::unique_ptr<distributed::RankRenderer> make_rank(const grid::CornerPointGrid& grid, const pipeline::ModelFrame& frame) {
+    const distributed::MpiSession& session = mpi();
+    const grid::IjkBox slab =
+        distributed::split_into_slabs(grid, session.size(), distributed::SlabAxis::k)[std::size_t(session.rank())];
+    auto rank = std::make_unique<distributed::RankRenderer>(GlEnvironment::shaders(), grid, frame, slab,
+                                                            grid::default_face_tolerance(grid), width, height);
+    const std::vector<float>& poro = *grid.property("PORO");
+    const grid::PrimaryRange range = grid::active_value_range(grid, poro, "PORO");
+    rank->set_colouring(poro, {"PORO", range.min, range.max, annotation::property_unit("PORO")});
+    return rank;
+}
+
 void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
     const distributed::MpiSession& session = mpi();
     const pipeline::ModelFrame frame = pipeline::make_model_frame(grid, 0.0);
-    const grid::IjkBox slab =
-        distributed::split_into_slabs(grid, session.size(), distributed::SlabAxis::k)[std::size_t(session.rank())];
-    distributed::RankRenderer rank(GlEnvironment::shaders(), grid, frame, slab, grid::default_face_tolerance(grid), width,
-                                   height);
-    const std::vector<float>& poro = *grid.property("PORO");
-    const grid::PrimaryRange range = grid::active_value_range(grid, poro, "PORO");
-    rank.set_colouring(poro, {"PORO", range.min, range.max, annotation::property_unit("PORO")});
+    std::unique_ptr<distributed::RankRenderer> rank_renderer = make_rank(grid, frame);
+    distributed::RankRenderer& rank = *rank_renderer;
     std::unique_ptr<pipeline::CutawayRenderer> single;
     if (session.root()) single = make_renderer(grid, width, height);
 
@@ -159,6 +168,31 @@ TEST(DistributedIdentity, FaultedGeneratedModelWithInactiveCells) {
     const grid::CornerPointGrid grid = faulted_model_with_inactive_cells({24, 20, 8}, 0.25, 5);
     ASSERT_LT(grid.active_count(), grid.cell_count());
     check_identity(grid, 23);
+}
+
+TEST(DistributedAuto, PicksByThePrimariesOfAllRanks) {
+    // "auto" (cut_strategy_choice.h) picks by the primaries of every rank. With 12,000 of petra's
+    // cells selected, over the 10,000 threshold in all and fewer on at least one rank's slab, every
+    // rank must draw frustum-sweep as one process would: a rank picking by its own count would
+    // draw frustum-clusters, and the composite would mix two different cuts.
+    const distributed::MpiSession& session = mpi();
+    const grid::CornerPointGrid& grid = petra();
+    const pipeline::ModelFrame frame = pipeline::make_model_frame(grid, 0.0);
+    std::unique_ptr<distributed::RankRenderer> rank_renderer = make_rank(grid, frame);
+    distributed::RankRenderer& rank = *rank_renderer;
+    const std::vector<float>& poro = *grid.property("PORO");
+    const double fraction = 12000.0 / double(grid.active_count());
+    rank.set_primaries(grid::select_primaries(grid, poro, "PORO", grid::range_for_fraction(grid, poro, "PORO", fraction)));
+    pipeline::FrameSettings settings;
+    ASSERT_EQ(settings.strategy, pipeline::auto_cut_strategy);
+    std::mt19937 random(31);
+    rank.render(settings, pipeline::make_orbit_camera(frame, random_pose(random), width, height));
+
+    const std::uint64_t own = rank.renderer().primary_cell_count();
+    ASSERT_GE(session.sum(own), pipeline::auto_sweep_from_primaries);
+    ASSERT_GE(session.sum(own < pipeline::auto_sweep_from_primaries ? 1u : 0u), 1u) << "no rank would pick alone";
+    EXPECT_EQ(rank.renderer().cut_strategy(settings), "frustum-sweep") << "rank " << session.rank() << ", " << own
+                                                                        << " primaries of its own";
 }
 
 }  // namespace

@@ -30,7 +30,7 @@ CutSurfaceEntry find_cut_surface(const std::string& name) {
         if (entry.name == name) return entry;
         known += (known.empty() ? "" : ", ") + entry.name;
     }
-    throw std::invalid_argument("cut-surface strategy '" + name + "': expected one of " + known);
+    throw std::invalid_argument("cut-surface strategy '" + name + "': expected auto or one of " + known);
 }
 
 }  // namespace cutaway::pipeline
