@@ -3,9 +3,10 @@
 // the CPU reference builds it (ascending cell, then side).
 #include "common/grid.glsl"
 
-layout(std430, binding = 9) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 2 bits per side
+layout(std430, binding = 9) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 16 bits per cell, 2 per side
 layout(std430, binding = 10) buffer PrimaryBits { uint primary_bits[]; };  // 1 bit per compact cell
-layout(std430, binding = 15) readonly buffer CompactOfEclipse { uint compact_of_eclipse[]; };  // ~0u: inactive
+// Per 32 Eclipse cells: their active bits, and the active cells before them (gpu_primary_selection.cpp).
+layout(std430, binding = 15) readonly buffer ActiveWords { uvec2 active_words[]; };
 // Per word: primary cells and primary faces it holds; after the scan, the first index of each.
 layout(std430, binding = 16) buffer WordCounts { uvec2 word_counts[]; };
 
@@ -28,16 +29,23 @@ uvec3 compact_cell_ijk(uint compact) {
     return uvec3(texel % grid_dims.x, row % grid_dims.y, row / (plane_slots_per_layer * grid_dims.y));
 }
 
+// Compact index of Eclipse cell `cell` (its rank among the active cells), or no_cell if inactive.
+uint compact_of_eclipse(uint cell) {
+    uvec2 word = active_words[cell >> 5];
+    uint bit = 1u << (cell & 31u);
+    return (word.x & bit) == 0u ? no_cell : word.y + uint(bitCount(word.x & (bit - 1u)));
+}
+
 bool is_primary(uint compact) { return compact != no_cell && ((primary_bits[compact >> 5] >> (compact & 31u)) & 1u) != 0u; }
 
-uint face_class(uint compact, uint side) { return (cell_face_classes[compact] >> (2u * side)) & 3u; }
+uint face_class(uint compact, uint side) { return (cell_face_classes[compact >> 1] >> (16u * (compact & 1u) + 2u * side)) & 3u; }
 
 // Compact index of the active neighbour across `side` (I-, I+, J-, J+, K-, K+), or no_cell.
 uint neighbour(uint compact, uint side) {
     ivec3 c = ivec3(compact_cell_ijk(compact));
     c[side >> 1] += (side & 1u) == 0u ? -1 : 1;
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(grid_dims)))) return no_cell;
-    return compact_of_eclipse[uint(c.x) + grid_dims.x * (uint(c.y) + grid_dims.y * uint(c.z))];
+    return compact_of_eclipse(uint(c.x) + grid_dims.x * (uint(c.y) + grid_dims.y * uint(c.z)));
 }
 
 // A primary cell draws every face except an interior one shared with another primary (hidden

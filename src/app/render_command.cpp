@@ -81,6 +81,8 @@ int run_render(const RenderOptions& options) {
         renderer.set_primaries(selected_by->flags);
     else
         renderer.select_range(property.primary_range, box);
+    // The values live on the GPU now (colouring and selection); the frames read no CPU copy.
+    property.owned = std::vector<float>();
     glFinish();
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
     memory["resident_after_setup"] = run_context::proc_status_bytes("VmRSS");

@@ -14,9 +14,13 @@ FaceBuffer FaceBuffer::from(const std::vector<std::uint32_t>& records) {
 }
 
 namespace {
-/// The layout's packed classes (2 bits per side), one word per active cell as the shaders read them.
-std::vector<std::uint32_t> packed_face_classes(const GridLayout& layout) {
-    return {layout.face_classes.begin(), layout.face_classes.end()};
+/// The layout's packed classes (2 bits per side), 16 bits per active cell as the shaders read them
+/// (an R16UI buffer texture; the selection's storage buffer reads two cells per word, so the
+/// count is padded to even).
+std::vector<std::uint16_t> packed_face_classes(const GridLayout& layout) {
+    std::vector<std::uint16_t> classes(layout.face_classes.size() + layout.face_classes.size() % 2, 0);
+    std::copy(layout.face_classes.begin(), layout.face_classes.end(), classes.begin());
+    return classes;
 }
 /// Corner-plane slots per layer: 1 when compact (shared layer interfaces), 2 otherwise.
 unsigned slots_per_layer(const grid::ZcornStore& zcorn) { return zcorn.is_compact() ? 1u : 2u; }
@@ -93,7 +97,7 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
       corner_planes_(upload_corner_planes(zcorn, frame.centre.z)),
       cells_(gl::Buffer::from(std::span<const std::uint32_t>(gpu_cell_records(layout, zcorn)))),
       values_(layout.cells.size() * sizeof(float), nullptr, GL_DYNAMIC_STORAGE_BIT),
-      cell_face_classes_(gl::Buffer::from(std::span<const std::uint32_t>(packed_face_classes(layout)))),
+      cell_face_classes_(gl::Buffer::from(std::span<const std::uint16_t>(packed_face_classes(layout)))),
       primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
                     GL_DYNAMIC_STORAGE_BIT),
       shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
@@ -102,7 +106,7 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
       corner_plane_texels_(corner_planes_, GL_RGBA32F),
       cell_texels_(cells_, GL_RG32UI),
       value_texels_(values_, GL_R32F),
-      face_class_texels_(cell_face_classes_, GL_R32UI),
+      face_class_texels_(cell_face_classes_, GL_R16UI),
       primary_bit_texels_(primary_bits_, GL_R32UI) {}
 
 const FaceBuffer& GridBuffers::all_faces() const {

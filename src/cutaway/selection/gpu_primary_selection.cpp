@@ -10,11 +10,29 @@
 namespace cutaway::pipeline {
 namespace {
 
-enum SelectionBinding : unsigned { compact_of_eclipse_binding = 15,
+enum SelectionBinding : unsigned { active_words_binding = 15,
                                    word_counts_binding = 16, totals_binding = 17, primary_cells_out_binding = 18,
                                    primary_faces_out_binding = 19 };
 
 std::size_t word_count(std::size_t cells) { return (cells + 31) / 32; }
+
+/// Per word of 32 Eclipse cells: its active bits and the number of active cells before it, so
+/// primary_words.glsl finds an active cell's compact index (its rank in Eclipse order) as that
+/// count plus the active bits below it: 8 bytes per 32 cells instead of 4 bytes per cell.
+std::vector<std::uint32_t> active_words(const std::vector<std::uint32_t>& compact_of_cell) {
+    constexpr std::uint32_t inactive = std::numeric_limits<std::uint32_t>::max();
+    std::vector<std::uint32_t> words(2 * std::max<std::size_t>(word_count(compact_of_cell.size()), 1), 0);
+    std::uint32_t active = 0;
+    for (std::size_t cell = 0; cell < compact_of_cell.size(); ++cell) {
+        if (cell % 32 == 0) words[2 * (cell / 32) + 1] = active;
+        if (compact_of_cell[cell] == inactive) continue;
+        if (compact_of_cell[cell] != active)
+            throw std::logic_error("GPU selection: compact indices are not the active cells' ranks in Eclipse order");
+        words[2 * (cell / 32)] |= 1u << (cell % 32);
+        ++active;
+    }
+    return words;
+}
 
 }  // namespace
 
@@ -26,7 +44,7 @@ GpuPrimarySelection::GpuPrimarySelection(const gl::ShaderLibrary& shaders, const
       write_(shaders.build({{GL_COMPUTE_SHADER, "selection/write_primary_lists.comp"}})),
       active_cells_(layout.cells.size()),
       dims_(unsigned(dims.nx), unsigned(dims.ny), unsigned(dims.nz)),
-      compact_of_eclipse_(gl::Buffer::from(std::span<const std::uint32_t>(layout.compact_of_cell))),
+      active_words_(gl::Buffer::from(std::span<const std::uint32_t>(active_words(layout.compact_of_cell)))),
       word_counts_(std::max<std::size_t>(word_count(active_cells_), 1) * 2 * sizeof(std::uint32_t), nullptr),
       totals_(2 * sizeof(std::uint32_t), nullptr) {
     for (const gl::Program* p : {&mark_, &count_, &write_}) {
@@ -42,7 +60,7 @@ void GpuPrimarySelection::bind_inputs(const GridBuffers& grid) const {
     // A cell's IJK comes from its top-face texel in the grid's cell records (primary_words.glsl).
     for (const gl::Program* p : {&mark_, &count_, &write_})
         gl::set_uniform(*p, "plane_slots_per_layer", grid.plane_slots_per_layer());
-    compact_of_eclipse_.bind_base(GL_SHADER_STORAGE_BUFFER, compact_of_eclipse_binding);
+    active_words_.bind_base(GL_SHADER_STORAGE_BUFFER, active_words_binding);
     word_counts_.bind_base(GL_SHADER_STORAGE_BUFFER, word_counts_binding);
 }
 
@@ -93,7 +111,7 @@ void GpuPrimarySelection::build_lists(GridBuffers& grid) {
 }
 
 std::size_t GpuPrimarySelection::memory_bytes() const {
-    return compact_of_eclipse_.size_bytes() + word_counts_.size_bytes() +
+    return active_words_.size_bytes() + word_counts_.size_bytes() +
            totals_.size_bytes();
 }
 

@@ -33,7 +33,7 @@ private:
     gl::Program mark_, count_, scan_, write_;
     std::size_t active_cells_ = 0;
     glm::uvec3 dims_;
-    gl::Buffer compact_of_eclipse_, word_counts_, totals_;
+    gl::Buffer active_words_, word_counts_, totals_;
 };
 
 /// One bit per compact cell of `layout` from per-Eclipse-cell flags.
