@@ -123,9 +123,10 @@ def plot(rows, path):
                                  ("secondary", "stage 2: secondaries", "^"), ("culling", "culling", "v")):
         left.plot(cells, [r["stages_ms"].get(stage, 0) for r in default], marker=marker, linestyle="none",
                   label=f"{label}, default ({DEFAULT})")
-    for strategy in STRATEGIES:  # the strategy the default did not pick: its frame and stage 1 as open markers
+    # The strategy the default did not pick: its frame and stage 1 as open markers, one shape pair each.
+    for strategy, markers in zip(STRATEGIES, (("o", "s"), ("D", "P"))):
         other = [r for r in rows if r.get("strategy") == strategy and not is_default(r)]
-        for stage, label, marker, colour in (("total", "frame", "o", "C0"), ("cut_surface", "stage 1", "s", "C1")):
+        for stage, label, marker, colour in (("total", "frame", markers[0], "C0"), ("cut_surface", "stage 1", markers[1], "C1")):
             left.plot([r["active_cells"] for r in other], [r["stages_ms"][stage] for r in other], marker=marker,
                       linestyle="none", markerfacecolor="none", color=colour, label=f"{label}, {strategy}")
     left.axhline(5000, color="grey", linestyle="--", linewidth=1, label="target: scale-10m frame 5 s")
