@@ -42,6 +42,7 @@
 #include "camera_path.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_seeds.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/cutaway_renderer.h"
@@ -139,6 +140,12 @@ struct BenchSetup {
     SceneCache& cache;
 };
 
+/// The strategy in a benchmark's label: its name, or for "auto" the one it drew ("auto:frustum-sweep").
+std::string drawn_strategy_label(const pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings) {
+    const std::string drawn = renderer.cut_strategy(settings);
+    return drawn == settings.strategy ? drawn : settings.strategy + ":" + drawn;
+}
+
 void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     const bench::CutawayBenchOptions& options = setup.options;
     Scene& scene = setup.cache.scene(options.presets.at(std::size_t(state.range(7))));
@@ -201,7 +208,7 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     state.counters["cells"] = double(scene.model->grid.active_count());
     if (path.size() == 1 || state.range(1) >= 0) state.counters["aperture_deg"] = path.front().aperture_deg;
     state.SetLabel(options.presets.at(std::size_t(state.range(7))) + " " + pipeline::to_string(settings.draw) + " " +
-                   settings.strategy + " " +
+                   drawn_strategy_label(renderer, settings) + " " +
                    pipeline::to_string(settings.border) + " mean_filter " + std::to_string(settings.mean_filter));
 }
 
@@ -274,6 +281,8 @@ std::vector<std::string> chosen_strategies(const std::vector<std::string>& reque
     for (const std::string& name : requested) {
         if (name == "all")
             for (const pipeline::CutSurfaceEntry& entry : pipeline::cut_surface_strategies()) names.push_back(entry.name);
+        else if (name == pipeline::auto_cut_strategy)
+            names.push_back(name);  // the default: picks a registry strategy per frame
         else
             names.push_back(pipeline::find_cut_surface(name).name);  // throws for unknown names
     }
@@ -307,6 +316,7 @@ void register_benchmarks(const BenchSetup& setup) {
         ->Iterations(iterations)->UseManualTime()->Unit(benchmark::kMillisecond);
     std::vector<std::int64_t> with_reference;  // GPU strategies with a CPU reference
     for (std::size_t i = 0; i < setup.strategies.size(); ++i) {
+        if (setup.strategies[i] == pipeline::auto_cut_strategy) continue;  // not a method of its own
         const pipeline::CutSurfaceEntry entry = pipeline::find_cut_surface(setup.strategies[i]);
         if (entry.device == "gpu" && entry.cpu_reference && wants_cpu_reference(o.cpu_references, entry.name))
             with_reference.push_back(std::int64_t(i));

@@ -58,7 +58,7 @@ std::vector<T> parse_list(const std::string& flag, const std::string& text) {
 
 inline const char* usage_text() {
     return "bench_cutaway flags (besides Google Benchmark's):\n"
-           "  --presets=zaphirus,petra,opharine,sapphire   --fractions=0.01   --strategies=all|NAME,...\n"
+           "  --presets=zaphirus,petra,opharine,sapphire   --fractions=0.01   --strategies=all|auto|NAME,...\n"
            "  --borders=raycast[,threshold]   --mean_filters=9[,0,33]   --size=1920x1080\n"
            "  --draws=visible[,all-faces]   --apertures=60[,120] (default: the camera path's own)\n"
            "  --cpu_references=all|none|NAME,...   --ssao=1   --baseline=1\n"
