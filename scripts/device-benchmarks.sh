@@ -107,5 +107,5 @@ part cut_strategies 60 bench --presets=zaphirus,petra,opharine,sapphire --fracti
 for preset in scale-1m scale-10m; do
     for strategy in frustum-clusters frustum-sweep; do part "scale $preset $strategy" 40 scale "$preset" "$strategy"; done
 done
-part "scale scale-100m frustum-clusters" 200 scale scale-100m frustum-clusters
+part "scale scale-100m auto" 200 scale scale-100m auto  # the default (it draws frustum-sweep there)
 log "done"
