@@ -23,7 +23,7 @@ namespace {
 VisibleFaces make_visible_faces(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid,
                                 const GridLayout& layout, const ModelFrame& frame,
                                 const CutawayRenderer::CornerDepthsRead& corner_depths_read) {
-    const CellBricks bricks = build_cell_bricks(grid, layout.compact_of_cell, frame);
+    const CellBricks bricks = build_cell_bricks(grid, frame);
     if (corner_depths_read) corner_depths_read();
     // A frame selects a fraction of the faces (scale-10m: 1.1M of 33M): the buffer starts at an
     // eighth of them (all of them up to 2M faces) and grows when a frame needs more.
@@ -75,26 +75,36 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const grid::Box3& bounds,
                                  double z_scale, int width, int height, const CornerDepthsRead& corner_depths_read)
-    : CutawayRenderer(shaders, grid, make_model_frame(grid, bounds, z_scale),
-                      grid::FaceClassification(grid, grid::face_tolerance_for(bounds)), width, height, corner_depths_read) {}
+    : CutawayRenderer(
+          shaders, grid, make_model_frame(grid, bounds, z_scale),
+          [&grid, tolerance = grid::face_tolerance_for(bounds)](const ModelFrame& frame) {
+              return build_grid_layout(grid, grid::FaceClassification(grid, tolerance), frame);
+          },
+          width, height, corner_depths_read) {}
 
 CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
                                  const grid::FaceClassification& classes, int width, int height,
                                  const CornerDepthsRead& corner_depths_read)
+    : CutawayRenderer(
+          shaders, grid, frame, [&](const ModelFrame& model_frame) { return build_grid_layout(grid, classes, model_frame); },
+          width, height, corner_depths_read) {}
+
+CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
+                                 const LayOut& lay_out, int width, int height, const CornerDepthsRead& corner_depths_read)
     : shaders_(shaders),
       width_(checked_side(width, "width")),
       height_(checked_side(height, "height")),
       frame_(frame),
-      layout_(build_grid_layout(grid, classes, frame_)),
+      layout_(lay_out(frame_)),
       grid_(grid),
       compact_of_cell_(grid.actnum()),
       buffers_(layout_, grid.zcorn(), frame_),
       visible_(make_visible_faces(shaders, grid, layout_, frame_, corner_depths_read)),
-      selection_(shaders, layout_, grid.dims()),
+      selection_(shaders, layout_, grid),
       centroid_(shaders),
       colour_map_(make_colour_map_texture()),
       cut_(width, height),
-      filtered_cut_(width, height),
+      filtered_cut_(cut_, ShareResolved{}),
       rear_shell_(shaders, width, height),
       scene_(width, height),
       post_(width, height),
@@ -109,7 +119,6 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
     // buffers are built): the CPU copies are not read again (4 bytes per cell for the table;
     // compact_of_cell_ answers the few lookups a selection change needs).
     layout_.pillars = std::vector<float>();  // (= {} would keep the capacity)
-    layout_.compact_of_cell = std::vector<std::uint32_t>();
     set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));
     set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1, ""});
 }

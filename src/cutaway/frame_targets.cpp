@@ -10,15 +10,30 @@ const GLuint zero_id[4] = {0, 0, 0, 0};
 const float far_depth = 1.0f;
 }  // namespace
 
-CutTargets::CutTargets(int width, int height)
-    : surface(GL_TEXTURE_2D, GL_RGBA32F, width, height),
-      rear_clamp(GL_TEXTURE_2D, GL_R8, width, height),
-      depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
-    framebuffer.attach(GL_COLOR_ATTACHMENT0, surface);
-    framebuffer.attach(GL_COLOR_ATTACHMENT1, rear_clamp);
-    framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+namespace {
+void attach_cut(CutTargets& targets) {
+    targets.framebuffer.attach(GL_COLOR_ATTACHMENT0, targets.surface);
+    targets.framebuffer.attach(GL_COLOR_ATTACHMENT1, targets.rear_clamp);
+    targets.framebuffer.attach(GL_DEPTH_ATTACHMENT, targets.depth);
     const std::array<GLenum, 2> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    framebuffer.finish(buffers, "cut surface");
+    targets.framebuffer.finish(buffers, "cut surface");
+}
+}  // namespace
+
+CutTargets::CutTargets(int width, int height)
+    : own_surface_(GL_TEXTURE_2D, GL_RGBA32F, width, height),
+      own_rear_clamp_(GL_TEXTURE_2D, GL_R8, width, height),
+      surface(own_surface_),
+      rear_clamp(own_rear_clamp_),
+      depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
+    attach_cut(*this);
+}
+
+CutTargets::CutTargets(const CutTargets& resolved, ShareResolved)
+    : surface(resolved.surface),
+      rear_clamp(resolved.rear_clamp),
+      depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, resolved.depth.width(), resolved.depth.height()) {
+    attach_cut(*this);
 }
 
 void CutTargets::clear() const {
@@ -33,7 +48,6 @@ SceneTargets::SceneTargets(int width, int height)
       id(GL_TEXTURE_2D, GL_RG32UI, width, height),
       face_plane(GL_TEXTURE_2D, GL_RGBA32F, width, height),
       depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height),
-      nearest_face(GL_TEXTURE_2D, GL_R32UI, width, height),
       shell_depth(GL_TEXTURE_2D, GL_R32F, width, height),
       shell_depth_buffer(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
     framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
@@ -44,10 +58,6 @@ SceneTargets::SceneTargets(int width, int height)
     const std::array<GLenum, 4> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
                                         GL_COLOR_ATTACHMENT3};
     framebuffer.finish(buffers, "scene");
-    nearest_face_framebuffer.attach(GL_COLOR_ATTACHMENT0, nearest_face);
-    nearest_face_framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
-    const std::array<GLenum, 1> nearest_buffers{GL_COLOR_ATTACHMENT0};
-    nearest_face_framebuffer.finish(nearest_buffers, "nearest face");
     plain_framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
     plain_framebuffer.attach(GL_COLOR_ATTACHMENT2, id);
     plain_framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
@@ -69,9 +79,20 @@ void SceneTargets::clear() const {
     glClearNamedFramebufferfv(shell_framebuffer.id(), GL_DEPTH, 0, &far_depth);
 }
 
-void SceneTargets::clear_nearest_face() const {
-    glClearNamedFramebufferuiv(nearest_face_framebuffer.id(), GL_COLOR, 0, zero_id);
+const NearestFaceTarget& SceneTargets::nearest_face() const {
+    if (!nearest_face_) nearest_face_ = std::make_unique<NearestFaceTarget>(depth);
+    return *nearest_face_;
 }
+
+NearestFaceTarget::NearestFaceTarget(const gl::Texture& scene_depth)
+    : index(GL_TEXTURE_2D, GL_R32UI, scene_depth.width(), scene_depth.height()) {
+    framebuffer.attach(GL_COLOR_ATTACHMENT0, index);
+    framebuffer.attach(GL_DEPTH_ATTACHMENT, scene_depth);
+    const std::array<GLenum, 1> buffers{GL_COLOR_ATTACHMENT0};
+    framebuffer.finish(buffers, "nearest face");
+}
+
+void NearestFaceTarget::clear() const { glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, zero_id); }
 
 void SceneTargets::clear_plain() const {
     glClearNamedFramebufferfv(plain_framebuffer.id(), GL_COLOR, 0, zero);

@@ -1,21 +1,47 @@
 #pragma once
 // Render targets of one frame size.
+#include <memory>
+
 #include "gl/gl_objects.h"
 
 namespace cutaway::pipeline {
+
+/// Tag of CutTargets' constructor that shares the resolved textures.
+struct ShareResolved {};
 
 /// Stage 1 output: RGBA32F normal (world) + depth along the cut camera's axis, an R8 flag where
 /// the cut is clamped at the rear shell, and the depth buffer of the union (cleared to 0,
 /// GL_GREATER). SPEC.md's texture of cut positions is not kept: nothing reads positions but the
 /// resolve's normals, which rebuild them from the depth (as SSAO does from the scene's depth),
 /// and it cost 16 bytes per pixel, twice (the cut and its filtered copy).
+///
+/// The strategy's cut and its mean-filtered copy each have their own depth, and share one
+/// resolved surface and rear-clamp flag: a frame resolves only the cut it uses (the filtered one
+/// when the filter is on), so a second pair would only hold what nothing reads (17 bytes per
+/// pixel, 35 MB at 1080p).
 struct CutTargets {
     CutTargets(int width, int height);
-    gl::Texture surface;
-    gl::Texture rear_clamp;  ///< R8: 1 where the cut is the clamp in front of the rear shell
+    /// The same size as `resolved`, a depth of its own, `resolved`'s surface and rear_clamp.
+    CutTargets(const CutTargets& resolved, ShareResolved);
+
+private:
+    gl::Texture own_surface_, own_rear_clamp_;  ///< empty when shared
+
+public:
+    const gl::Texture& surface;
+    const gl::Texture& rear_clamp;  ///< R8: 1 where the cut is the clamp in front of the rear shell
     gl::Texture depth;
     gl::Framebuffer framebuffer;
     /// Clears to "nothing cut" (depth 0 everywhere).
+    void clear() const;
+};
+
+/// secondary/nearest_face.frag's output: 1 + the nearest kept face's index per pixel (R32UI),
+/// with the scene's depth.
+struct NearestFaceTarget {
+    explicit NearestFaceTarget(const gl::Texture& scene_depth);
+    gl::Texture index;
+    gl::Framebuffer framebuffer;
     void clear() const;
 };
 
@@ -28,10 +54,9 @@ struct SceneTargets {
     gl::Texture face_plane;    ///< RGBA32F: world normal of the visible secondary face, w = 1 (0 elsewhere)
     gl::Texture depth;         ///< DEPTH32F
     gl::Framebuffer framebuffer;
-    /// Stage 2's first pass on the visible path (secondary/nearest_face.frag): 1 + the nearest
-    /// kept face's index per pixel, with `depth`.
-    gl::Texture nearest_face;  ///< R32UI
-    gl::Framebuffer nearest_face_framebuffer;
+    /// Stage 2's first pass on the visible path with --stage2-passes 2 (allocated at its first
+    /// use: 4 bytes per pixel a one-pass frame does not need).
+    const NearestFaceTarget& nearest_face() const;
     /// The plain frame's (`--baseline`): colour, id and depth only (secondary/plain.frag), so a
     /// frame without a cut writes 12 bytes per pixel instead of the G-buffer's 48.
     gl::Framebuffer plain_framebuffer;
@@ -39,9 +64,10 @@ struct SceneTargets {
     gl::Texture shell_depth_buffer;
     gl::Framebuffer shell_framebuffer;
     void clear() const;
-    /// Only the two-pass stage 2 reads nearest_face: cleared there, not with the rest.
-    void clear_nearest_face() const;
     void clear_plain() const;
+
+private:
+    mutable std::unique_ptr<NearestFaceTarget> nearest_face_;
 };
 
 /// Post-processing: ambient occlusion factor and the final RGBA8 image.

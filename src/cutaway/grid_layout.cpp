@@ -48,10 +48,12 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
     // The shader's corner orders give outward normals for cells with positive signed volume in
     // model (x, y, z) space; render space flips z when up_sign < 0 (determinant sign up_sign).
     const bool render_flips = frame.up_sign < 0;
-    layout.compact_of_cell.assign(grid.cell_count(), no_cell);
+    // Compact index = rank among the active cells in Eclipse order (ActiveCellRank answers it
+    // later from ACTNUM: this table lives only while the layout is built).
+    std::vector<std::uint32_t> compact_of_cell(grid.cell_count(), no_cell);
     std::uint32_t active = 0;
     for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
-        if (grid.active(cell)) layout.compact_of_cell[cell] = active++;
+        if (grid.active(cell)) compact_of_cell[cell] = active++;
     layout.cells.resize(active);
     layout.face_classes.resize(active);
     // Each active cell's records at its compact index (Eclipse order), the cells split over the threads.
@@ -59,7 +61,7 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
 #pragma omp parallel for schedule(static)
     for (std::ptrdiff_t index = 0; index < cell_count; ++index) {
         const std::size_t cell = std::size_t(index);
-        const std::uint32_t compact = layout.compact_of_cell[cell];
+        const std::uint32_t compact = compact_of_cell[cell];
         if (compact == no_cell) continue;
         const grid::CellIjk c = grid::cell_ijk(dims, cell);
         const bool negative = grid::signed_volume(grid::cell_corners(grid, c.i, c.j, c.k)) < 0;

@@ -27,9 +27,6 @@ struct GridLayout {
     /// Per active cell: Eclipse cell index (bits 0-30) and bit 31 set when the face corner order
     /// of shaders/common/grid.glsl gives inward normals in render space for this cell.
     std::vector<std::uint32_t> cells;
-    /// Eclipse cell index -> compact index (or UINT32_MAX for inactive cells); the renderer
-    /// releases it once its bricks and selection buffers are built (ActiveCellRank answers after).
-    std::vector<std::uint32_t> compact_of_cell;
     /// Classification of the six faces of every active cell by compact index, 2 bits per side
     /// (FaceClass at bits 2 s, sides in FaceSide order), as the GPU reads them.
     std::vector<std::uint16_t> face_classes;

@@ -15,12 +15,15 @@ public:
     /// Faces per chunk: 4 x 16384 vertices = the 65536 a 16-bit index reaches.
     static constexpr std::uint32_t quads_per_chunk = 16384;
     /// Chunks drawn between two fences. Before a group is issued, the group before the last one
-    /// must have completed, so at most two groups (128K faces) are queued at a time. llvmpipe
+    /// must have completed, so at most two groups (64K faces) are queued at a time. llvmpipe
     /// bins a whole draw into scenes before its threads rasterise them; unthrottled, stage 2's
     /// 1.1M faces at scale-10m queued scenes that raised the peak resident memory from 109 to
     /// 122-126 bytes per active cell (alternating direct runs, same image, the frame no slower).
+    /// Groups of 2 chunks instead of 4: the frame's resident memory at scale-10m 905 against
+    /// 954 MB, and the warm frame no slower (3.37 and 3.64 s against 3.81 and 3.70 s, stage 2
+    /// 0.71-0.75 against 0.80-0.86 s, alternating runs of 1 warm-up and 3 timed frames at 1080p).
     /// A GPU always has the last group queued while the CPU waits for the one before it.
-    static constexpr std::size_t chunks_per_group = 4;
+    static constexpr std::size_t chunks_per_group = 2;
     /// Chunks (draw commands) that `faces` faces need.
     static std::size_t chunks_for(std::size_t faces) { return (faces + quads_per_chunk - 1) / quads_per_chunk; }
 

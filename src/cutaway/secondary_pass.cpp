@@ -79,14 +79,15 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
         const gl::Program& nearest = nearest_face_.get(nearest_defines);
         prepare_face_program(nearest, context);
         set_cut_lookup(nearest, clip, context.camera);
-        scene.clear_nearest_face();
-        scene.nearest_face_framebuffer.bind();
+        const NearestFaceTarget& nearest_face = scene.nearest_face();
+        nearest_face.clear();
+        nearest_face.framebuffer.bind();
         submit();
         glGetIntegerv(GL_DEPTH_FUNC, &depth_function);
         glDepthFunc(GL_EQUAL);
         glDepthMask(GL_FALSE);
         defines.emplace_back("NEAREST_FACE_TESTED", "");
-        scene.nearest_face.bind(7);
+        nearest_face.index.bind(7);
     }
     scene.framebuffer.bind();
     const gl::Program& p = programs_.get(defines);

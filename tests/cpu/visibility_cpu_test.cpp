@@ -40,7 +40,7 @@ TEST(SetUpThreads, OneThreadAndFourBuildTheSameRecords) {
         for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
             for (int side = 0; side < 6; ++side) b.faces.push_back(classes.at(cell, grid::FaceSide(side)));
         b.layout = pipeline::build_grid_layout(grid, classes, frame);
-        b.bricks = pipeline::build_cell_bricks(grid, b.layout.compact_of_cell, frame);
+        b.bricks = pipeline::build_cell_bricks(grid, frame);
         omp_set_num_threads(before);
         return b;
     };
@@ -52,16 +52,15 @@ TEST(SetUpThreads, OneThreadAndFourBuildTheSameRecords) {
     }
     EXPECT_EQ(one.faces, four.faces);
     EXPECT_EQ(one.layout.cells, four.layout.cells);
-    EXPECT_EQ(one.layout.compact_of_cell, four.layout.compact_of_cell);
     EXPECT_EQ(one.layout.face_classes, four.layout.face_classes);
     EXPECT_EQ(one.bricks.cells, four.bricks.cells);
     EXPECT_EQ(one.bricks.begin, four.bricks.begin);
     EXPECT_EQ(one.bricks.boxes, four.bricks.boxes);
 }
 
-// After its set-up the renderer answers Eclipse -> compact lookups (frustum-clusters' boxes) from
-// ACTNUM with a count per block of 64 cells instead of the layout's table: reek has inactive
-// cells, so the counts within a block matter.
+// The renderer answers Eclipse -> compact lookups (the bricks, frustum-clusters' boxes) from ACTNUM
+// with a count per block of 64 cells instead of a table: reek has inactive cells, so the counts
+// within a block matter. The layout's cells are the compact -> Eclipse map.
 TEST(ActiveCellRank, EqualsTheLayoutsCompactIndexOfEveryActiveCell) {
     const grid::CornerPointGrid grid = reek_grid();
     ASSERT_LT(grid.active_count(), grid.cell_count());
@@ -70,8 +69,9 @@ TEST(ActiveCellRank, EqualsTheLayoutsCompactIndexOfEveryActiveCell) {
                                     pipeline::make_model_frame(grid, 0.0));
     const pipeline::ActiveCellRank rank(grid.actnum());
     std::size_t wrong = 0;
-    for (std::size_t cell = 0; cell < grid.cell_count(); ++cell)
-        if (grid.active(cell)) wrong += rank(cell) != layout.compact_of_cell[cell];
+    ASSERT_EQ(layout.cells.size(), grid.active_count());
+    for (std::uint32_t compact = 0; compact < layout.cells.size(); ++compact)
+        wrong += rank(layout.cells[compact] & 0x7fffffffu) != compact;
     EXPECT_EQ(wrong, 0u);
 }
 
@@ -80,7 +80,7 @@ TEST(CellBricks, EveryActiveCellInExactlyOneBrickWhoseBoxHoldsItsCorners) {
     const pipeline::ModelFrame frame = pipeline::make_model_frame(grid, 0.0);
     const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
     const pipeline::GridLayout layout = pipeline::build_grid_layout(grid, classes, frame);
-    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, layout.compact_of_cell, frame);
+    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, frame);
 
     ASSERT_EQ(bricks.cells.size(), grid.active_count());
     ASSERT_EQ(bricks.boxes.size(), 8 * bricks.brick_count());

@@ -38,7 +38,7 @@ struct SelectionScene {
           frame(pipeline::make_model_frame(g, 0.0)),
           layout(pipeline::build_grid_layout(g, grid::FaceClassification(g, grid::default_face_tolerance(g)), frame)),
           buffers(layout, g.zcorn(), frame),
-          selection(GlEnvironment::shaders(), layout, g.dims()) {
+          selection(GlEnvironment::shaders(), layout, g) {
         std::vector<float> compact(layout.cells.size());
         for (std::size_t c = 0; c < compact.size(); ++c) compact[c] = values[layout.cells[c] & 0x7fffffffu];
         buffers.set_values(compact);

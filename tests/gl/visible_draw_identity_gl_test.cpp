@@ -165,9 +165,7 @@ TEST(VisibleDrawOrder, RecordsFollowBrickCellAndSideOrder) {
     const std::vector<std::uint32_t>& records = frame.records;
     ASSERT_GT(records.size(), 5000u) << "too few faces to show an order";
 
-    const grid::FaceClassification classes(grid, grid::default_face_tolerance(grid));
-    const pipeline::GridLayout layout = pipeline::build_grid_layout(grid, classes, frame.renderer->frame());
-    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, layout.compact_of_cell, frame.renderer->frame());
+    const pipeline::CellBricks bricks = pipeline::build_cell_bricks(grid, frame.renderer->frame());
     std::vector<std::uint32_t> slot_of(bricks.cells.size());
     for (std::uint32_t slot = 0; slot < bricks.cells.size(); ++slot) slot_of[bricks.cells[slot]] = slot;
     const auto key = [&](std::uint32_t record) {  // pipeline::pack_face's cell and side

@@ -19,15 +19,13 @@ std::size_t word_count(std::size_t cells) { return (cells + 31) / 32; }
 /// Per word of 32 Eclipse cells: its active bits and the number of active cells before it, so
 /// primary_words.glsl finds an active cell's compact index (its rank in Eclipse order) as that
 /// count plus the active bits below it: 8 bytes per 32 cells instead of 4 bytes per cell.
-std::vector<std::uint32_t> active_words(const std::vector<std::uint32_t>& compact_of_cell) {
-    constexpr std::uint32_t inactive = std::numeric_limits<std::uint32_t>::max();
-    std::vector<std::uint32_t> words(2 * std::max<std::size_t>(word_count(compact_of_cell.size()), 1), 0);
+/// The compact indices are these ranks (grid_layout.h).
+std::vector<std::uint32_t> active_words(const std::vector<std::uint8_t>& actnum) {
+    std::vector<std::uint32_t> words(2 * std::max<std::size_t>(word_count(actnum.size()), 1), 0);
     std::uint32_t active = 0;
-    for (std::size_t cell = 0; cell < compact_of_cell.size(); ++cell) {
+    for (std::size_t cell = 0; cell < actnum.size(); ++cell) {
         if (cell % 32 == 0) words[2 * (cell / 32) + 1] = active;
-        if (compact_of_cell[cell] == inactive) continue;
-        if (compact_of_cell[cell] != active)
-            throw std::logic_error("GPU selection: compact indices are not the active cells' ranks in Eclipse order");
+        if (actnum[cell] == 0) continue;
         words[2 * (cell / 32)] |= 1u << (cell % 32);
         ++active;
     }
@@ -37,14 +35,14 @@ std::vector<std::uint32_t> active_words(const std::vector<std::uint32_t>& compac
 }  // namespace
 
 GpuPrimarySelection::GpuPrimarySelection(const gl::ShaderLibrary& shaders, const GridLayout& layout,
-                                         const grid::GridDims& dims)
+                                         const grid::CornerPointGrid& grid)
     : mark_(shaders.build({{GL_COMPUTE_SHADER, "selection/mark_primaries.comp"}})),
       count_(shaders.build({{GL_COMPUTE_SHADER, "selection/count_primary_lists.comp"}})),
       scan_(shaders.build({{GL_COMPUTE_SHADER, "selection/scan_primary_counts.comp"}})),
       write_(shaders.build({{GL_COMPUTE_SHADER, "selection/write_primary_lists.comp"}})),
       active_cells_(layout.cells.size()),
-      dims_(unsigned(dims.nx), unsigned(dims.ny), unsigned(dims.nz)),
-      active_words_(gl::Buffer::from(std::span<const std::uint32_t>(active_words(layout.compact_of_cell)))),
+      dims_(unsigned(grid.dims().nx), unsigned(grid.dims().ny), unsigned(grid.dims().nz)),
+      active_words_(gl::Buffer::from(std::span<const std::uint32_t>(active_words(grid.actnum())))),
       word_counts_(std::max<std::size_t>(word_count(active_cells_), 1) * 2 * sizeof(std::uint32_t), nullptr),
       totals_(2 * sizeof(std::uint32_t), nullptr) {
     for (const gl::Program* p : {&mark_, &count_, &write_}) {

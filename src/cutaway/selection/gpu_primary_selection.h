@@ -16,7 +16,8 @@ namespace cutaway::pipeline {
 
 class GpuPrimarySelection {
 public:
-    GpuPrimarySelection(const gl::ShaderLibrary& shaders, const GridLayout& layout, const grid::GridDims& dims);
+    /// `layout` of `grid` (its dimensions and ACTNUM are read here).
+    GpuPrimarySelection(const gl::ShaderLibrary& shaders, const GridLayout& layout, const grid::CornerPointGrid& grid);
 
     /// Primaries: active cells whose value (GridBuffers::set_values) lies in `range`, inside `box`.
     void select_range(GridBuffers& grid, const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box);

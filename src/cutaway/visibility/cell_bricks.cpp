@@ -2,27 +2,34 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
+#include "cutaway/active_cell_rank.h"
 #include "grid/cell_geometry.h"
 
 namespace cutaway::pipeline {
 
-CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const std::vector<std::uint32_t>& compact_of_cell,
-                             const ModelFrame& frame) {
+CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const ModelFrame& frame) {
+    const ActiveCellRank rank(grid.actnum());
     const grid::GridDims& dims = grid.dims();
     const int bx = (dims.nx + brick_side - 1) / brick_side, by = (dims.ny + brick_side - 1) / brick_side,
               bz = (dims.nz + brick_side - 1) / brick_side;
     const float pad = 1e-5f * std::max(1.0f, 2.0f * frame.radius());
     const std::ptrdiff_t brick_count = std::ptrdiff_t(bx) * by * bz;
     // Calls visit(compact) for each active cell of brick `b` (x fastest), in the order the list keeps.
+    // A row's active cells follow each other in Eclipse order: its first one's rank, then +1.
     const auto for_each_active_cell = [&](std::ptrdiff_t b, auto&& visit) {
         const int xi = int(b % bx), yj = int(b / bx % by), zk = int(b / (std::ptrdiff_t(bx) * by));
         for (int k = zk * brick_side; k < std::min(dims.nz, (zk + 1) * brick_side); ++k)
-            for (int j = yj * brick_side; j < std::min(dims.ny, (yj + 1) * brick_side); ++j)
+            for (int j = yj * brick_side; j < std::min(dims.ny, (yj + 1) * brick_side); ++j) {
+                std::optional<std::uint32_t> next;
                 for (int i = xi * brick_side; i < std::min(dims.nx, (xi + 1) * brick_side); ++i) {
-                    const std::uint32_t compact = compact_of_cell[dims.cell_index(i, j, k)];
-                    if (compact != std::numeric_limits<std::uint32_t>::max()) visit(compact, i, j, k);
+                    const std::size_t cell = dims.cell_index(i, j, k);
+                    if (!grid.active(cell)) continue;
+                    if (!next) next = rank(cell);
+                    visit((*next)++, i, j, k);
                 }
+            }
     };
     // Two passes over the bricks, split over the threads: the active cells per brick, then (from
     // their running sum) each brick's cells and box; bricks without an active cell are dropped.

@@ -23,8 +23,8 @@ struct CellBricks {
     std::size_t brick_count() const { return begin.empty() ? 0 : begin.size() - 1; }
 };
 
-/// `compact_of_cell`: Eclipse cell -> compact index (UINT32_MAX for inactive cells), as in GridLayout.
-CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const std::vector<std::uint32_t>& compact_of_cell,
-                             const ModelFrame& frame);
+/// Cells by compact index: an active cell's rank among the active cells in Eclipse order, as in
+/// GridLayout (counted from ACTNUM, ActiveCellRank: no table of 4 bytes per cell).
+CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const ModelFrame& frame);
 
 }  // namespace cutaway::pipeline
