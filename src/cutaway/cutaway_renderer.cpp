@@ -23,8 +23,7 @@ namespace {
 VisibleFaces make_visible_faces(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid,
                                 const GridLayout& layout, const ModelFrame& frame,
                                 const CutawayRenderer::CornerDepthsRead& corner_depths_read) {
-    const CellBricks bricks = build_cell_bricks(grid, frame);
-    if (corner_depths_read) corner_depths_read();
+    const CellBricks bricks = build_cell_bricks(grid, frame, corner_depths_read);
     // A frame selects a fraction of the faces (scale-10m: 1.1M of 33M): the buffer starts at an
     // eighth of them (all of them up to 2M faces) and grows when a frame needs more.
     const std::size_t limit = selectable_face_capacity(layout);

@@ -2,6 +2,7 @@
 // Active cells grouped into IJK bricks for per-frame culling (SPEC.md section 6): a brick is a
 // block of at most brick_side^3 cells; the GPU tests the brick's box first, then its cells.
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "cutaway/model_frame.h"
@@ -25,6 +26,9 @@ struct CellBricks {
 
 /// Cells by compact index: an active cell's rank among the active cells in Eclipse order, as in
 /// GridLayout (counted from ACTNUM, ActiveCellRank: no table of 4 bytes per cell).
-CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const ModelFrame& frame);
+/// `corners_read` (if set) is called once the boxes are built, before the cell lists are: the last
+/// read of the grid's corner depths, which may be released from there.
+CellBricks build_cell_bricks(const grid::CornerPointGrid& grid, const ModelFrame& frame,
+                             const std::function<void()>& corners_read = {});
 
 }  // namespace cutaway::pipeline
