@@ -114,9 +114,8 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       ssao_(shaders),
       composite_(shaders),
       colour_bar_(shaders) {
-    // The GPU holds the pillars and the Eclipse -> compact table now (the bricks and the selection
-    // buffers are built): the CPU copies are not read again (4 bytes per cell for the table;
-    // compact_of_cell_ answers the few lookups a selection change needs).
+    // The GPU holds the pillars now: the CPU copy is not read again (compact_of_cell_ answers the
+    // few Eclipse -> compact lookups a selection change needs, from ACTNUM).
     layout_.pillars = std::vector<float>();  // (= {} would keep the capacity)
     set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));
     set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1, ""});

@@ -8,9 +8,7 @@ namespace {
 const float zero[4] = {0, 0, 0, 0};
 const GLuint zero_id[4] = {0, 0, 0, 0};
 const float far_depth = 1.0f;
-}  // namespace
 
-namespace {
 void attach_cut(CutTargets& targets) {
     targets.framebuffer.attach(GL_COLOR_ATTACHMENT0, targets.surface);
     targets.framebuffer.attach(GL_COLOR_ATTACHMENT1, targets.rear_clamp);
