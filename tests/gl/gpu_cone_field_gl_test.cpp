@@ -165,5 +165,30 @@ TEST(GpuConeField, TransformsOnTheConeTestScenesMatchTheCpuAndTheSpecBounds) {
     }
 }
 
+TEST(GpuConeField, JumpFloodingOnOddSizesEqualsTheCpu) {
+    // Sizes that are not multiples of the steps: each pass floods 2 x 2 blocks one step apart
+    // and, in an axis's last partial span, single pixels (jump_flood_split.h); a pixel flooded
+    // twice, never or with the wrong taps shows here. Random seeds (depths 1-200, about 1 pixel
+    // in 500, so cones compete over long distances). Tolerance as in the tests above.
+    const double span = 256.0, slope = 2.0;
+    std::mt19937 random(11);
+    for (const auto& [width, height] : std::vector<std::pair<int, int>>{{301, 173}, {97, 300}, {640, 360}}) {
+        SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
+        cone_field::SeedImage seeds(width, height);
+        std::uniform_int_distribution<int> pick(0, 499);
+        std::uniform_real_distribution<float> depth(1.0f, 200.0f);
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x)
+                if (pick(random) == 0) seeds.set_seed(x, y, depth(random));
+        for (const cone_field::JfaVariant variant : {cone_field::JfaVariant::jfa, cone_field::JfaVariant::one_plus_jfa}) {
+            SCOPED_TRACE(std::string(cone_field::jfa_variant_name(variant)));
+            auto gpu = pipeline::make_gpu_jump_flooding(GlEnvironment::shaders(), variant);
+            const cone_field::FloatImage cut = run_on_gpu(*gpu, seeds, slope);
+            const Difference d = compare(cut, cone_field::jump_flooding_cut(seeds, slope, variant), 8.0 * std::ldexp(1.0, -24) * span);
+            EXPECT_LE(d.pixels_off, cut.pixels.size() / 1000) << "largest difference " << d.largest;
+        }
+    }
+}
+
 }  // namespace
 }  // namespace cutaway::test

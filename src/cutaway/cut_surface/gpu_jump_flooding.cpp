@@ -10,15 +10,29 @@
 // took 300 ms for sapphire's 11 passes against the compute passes' 135 ms; 128 x 8, 32 x 32 and
 // 8 x 8 groups were within noise of 64 x 4 (1920x1080, LP_NUM_THREADS=2).
 //
+// Each invocation floods a 2 x 2 block of pixels one step apart, so the block's 36 taps are 16
+// loads, and a quarter of the invocations store four pixels each: a pass of a small step took
+// 7.2-7.5 ms instead of 11.1-11.4 (sapphire, 1920x1080, LP_NUM_THREADS=2, alternating runs).
+// Where an axis has no partner a step further (its last partial span), a dispatch of its own
+// floods those pixels one per invocation along that axis, so no invocation is wasted. 4 x 2
+// blocks were slower (24 ms: more live registers than a SIMD lane set keeps), and so were several
+// small steps fused in shared memory (3 steps in 95 ms against 33), and so was a first pass
+// reading the seed image instead of an init pass's owners (20-35 ms against 9 + 9: texelFetch of
+// the depth texture with bounds tests costs more than the image loads).
+//
 // Against the CPU reference (cone_field/jump_flooding.h): the same steps, taps, comparisons and
 // tie-breaking, in float (stored depth units) where the reference uses double (depth units).
 // Where two candidates' heights differ by less than float rounding a pass may keep the other
 // one; the cut then differs by about that rounding unless the different owner later loses or
 // wins differently. tests/gl/gpu_cone_field_gl_test.cpp measures both.
+#include <algorithm>
 #include <array>
+#include <bit>
 #include <string>
+#include <vector>
 
 #include "cutaway/cut_surface/gpu_cone_transform.h"
+#include "cutaway/cut_surface/jump_flood_split.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
@@ -28,49 +42,86 @@ constexpr int group_x = 64, group_y = 4;  // jump_flood.comp's local size (GROUP
 
 gl::ShaderDefines group_defines() { return {{"GROUP_X", std::to_string(group_x)}, {"GROUP_Y", std::to_string(group_y)}}; }
 
+
+/// A flooding pass's programs by block: 1 or 2 pixels along x and along y. `last`: the last
+/// pass's, storing the cut instead of owners (CUT_OUT).
+class BlockPrograms {
+public:
+    BlockPrograms(const gl::ShaderLibrary& shaders, bool last)
+        : programs_{build(shaders, last, 1, 1), build(shaders, last, 2, 1), build(shaders, last, 1, 2), build(shaders, last, 2, 2)} {}
+    const gl::Program& of(bool paired_x, bool paired_y) const { return programs_[std::size_t(paired_x) + 2 * std::size_t(paired_y)]; }
+
+private:
+    static gl::Program build(const gl::ShaderLibrary& shaders, bool last, int block_x, int block_y) {
+        gl::ShaderDefines defines = group_defines();
+        defines.push_back({"BLOCK_X", std::to_string(block_x)});
+        defines.push_back({"BLOCK_Y", std::to_string(block_y)});
+        if (last) defines.push_back({"CUT_OUT", ""});
+        return shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}}, defines);
+    }
+    std::array<gl::Program, 4> programs_;
+};
+
+/// One flooding pass of `step`: a dispatch per region of jump_flood_regions.
+void flood(const BlockPrograms& programs, int step, float slope, int width, int height) {
+    for (const JumpFloodRegion& region : jump_flood_regions(width, height, step)) {
+        const gl::Program& program = programs.of(region.paired_x, region.paired_y);
+        gl::set_uniform(program, "slope", slope);
+        gl::set_uniform(program, "step_log2", std::countr_zero(unsigned(step)));
+        gl::set_uniform(program, "origin", region.origin);
+        gl::set_uniform(program, "invocations", region.invocations);
+        program.use();
+        glDispatchCompute(group_count(region.invocations.x, group_x), group_count(region.invocations.y, group_y), 1);
+    }
+}
+
 class GpuJumpFlooding final : public GpuConeTransform {
 public:
     GpuJumpFlooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant)
         : init_(shaders, "cut_surface/jump_flood.comp", group_defines()),
-          pass_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}}, group_defines())),
-          resolve_(shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/cone_resolve.frag"}},
-                                 {{"JUMP_FLOODING", ""}})),
+          passes_(shaders, false),
+          last_passes_(shaders, true),
           variant_(variant) {}
 
     void run(const GpuConeInput& in, const CutTargets& targets) override {
         const int width = targets.depth.width(), height = targets.depth.height();
         if (owners_[0].width() != width || owners_[0].height() != height)
+        {
             for (gl::Texture& owners : owners_) owners = gl::Texture(GL_TEXTURE_2D, GL_RG32UI, width, height);
-        const unsigned groups_x = group_count(width, group_x), groups_y = group_count(height, group_y);
+            cut_ = gl::Buffer(std::size_t(width) * std::size_t(height) * sizeof(float), nullptr);
+        }
 
         const gl::Program& init = init_.prepare(in);
         glBindImageTexture(0, owners_[0].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
         init.use();
-        glDispatchCompute(groups_x, groups_y, 1);
+        glDispatchCompute(group_count(width, group_x), group_count(height, group_y), 1);
 
+        const std::vector<int> steps = cone_field::jfa_steps(variant_, width, height);
         int current = 0;
-        gl::set_uniform(pass_, "slope", in.slope);
-        pass_.use();
-        for (const int step : cone_field::jfa_steps(variant_, width, height)) {
-            glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-            gl::set_uniform(pass_, "step_size", step);
+        for (std::size_t i = 0; i < steps.size(); ++i) {
+            const bool last = i + 1 == steps.size();
+            glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
             glBindImageTexture(1, owners_[std::size_t(current)].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
-            glBindImageTexture(0, owners_[std::size_t(1 - current)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
-            glDispatchCompute(groups_x, groups_y, 1);
+            if (last)
+                cut_.bind_base(GL_SHADER_STORAGE_BUFFER, 0);
+            else
+                glBindImageTexture(0, owners_[std::size_t(1 - current)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
+            flood(last ? last_passes_ : passes_, steps[i], in.slope, width, height);
             current = 1 - current;
         }
-
-        gl::set_uniform(resolve_, "owners", 0);
-        gl::set_uniform(resolve_, "slope", in.slope);
-        owners_[std::size_t(current)].bind(0);
-        write_cut_depth(resolve_, targets);
+        // The cut into the depth image: a copy from the buffer (no fragment pass, nothing read back).
+        glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, cut_.id());
+        glTextureSubImage2D(targets.depth.id(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
     }
 
 private:
     SeedInitPrograms init_;
-    gl::Program pass_, resolve_;
+    BlockPrograms passes_, last_passes_;
     cone_field::JfaVariant variant_;
     std::array<gl::Texture, 2> owners_;  ///< ping-pong, resized with the targets
+    gl::Buffer cut_;                     ///< the last pass's cut, copied into the cut depth image
 };
 
 }  // namespace
