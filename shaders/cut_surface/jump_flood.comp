@@ -12,7 +12,7 @@
 layout(local_size_x = GROUP_X, local_size_y = GROUP_Y) in;
 
 #ifdef CUT_OUT
-layout(std430, binding = 0) writeonly buffer CutOut { float cut_out[]; };
+layout(r32f, binding = 0) uniform writeonly imageBuffer cut_out;  // gl/float_image_buffer.h
 #else
 layout(rg32ui, binding = 0) uniform writeonly uimage2D owners_out;
 #endif
@@ -57,7 +57,7 @@ void main() {
                 best = flood_take(best, texels[tap.y][tap.x], p, slope);
             }
 #ifdef CUT_OUT
-            if (stores) cut_out[p.y * imageSize(owners_in).x + p.x] = best.owner.x == 0u ? 0.0 : clamp(best.height, 0.0, 1.0);
+            if (stores) imageStore(cut_out, p.y * imageSize(owners_in).x + p.x, vec4(best.owner.x == 0u ? 0.0 : clamp(best.height, 0.0, 1.0)));
 #else
             if (stores) imageStore(owners_out, p, uvec4(best.owner, 0u, 0u));
 #endif

@@ -16,4 +16,7 @@ inline std::pair<GLuint, GLuint> dispatch_grid(std::size_t groups) {
     return {GLuint(groups_x), GLuint((std::max<std::size_t>(groups, 1) + groups_x - 1) / groups_x)};
 }
 
+/// Groups of `group` invocations covering `count`.
+inline unsigned group_count(int count, int group) { return unsigned((count + group - 1) / group); }
+
 }  // namespace cutaway::gl

@@ -1,11 +1,16 @@
-// The distance-scaled mean-filter kernel (src/cutaway/post/mean_filter.h) against the full kernel
-// on rendered frames: the same wherever the radius stays the full one, nearer the unfiltered cut
-// where it shrinks (the far cut walls), and no primary pixel lost.
+// The mean filter (src/cutaway/post/mean_filter.h) against a CPU box filter on random depth
+// images, and the distance-scaled kernel against the full kernel on rendered frames: the same
+// wherever the radius stays the full one, nearer the unfiltered cut where it shrinks (the far cut
+// walls), and no primary pixel lost.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <random>
 
+#include "cutaway/cut_surface/cut_depth_image.h"
+#include "cutaway/post/mean_filter.h"
 #include "gl_test_support.h"
 #include "metrics/image_metrics.h"
 
@@ -28,6 +33,63 @@ Frame render(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings settin
     settings.mean_filter_kernel = kernel_kind;
     renderer.render(settings, camera);
     return {renderer.read_cut_depth().values, renderer.read_ids()};
+}
+
+/// The k x k mean with edges clamped, every `stride`-th texel along each axis from -k/2 (double).
+cone_field::FloatImage box_mean(const cone_field::FloatImage& image, int size, int stride) {
+    cone_field::FloatImage out(image.width, image.height);
+    const int r = size / 2;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            double sum = 0;
+            int count = 0;
+            for (int dy = -r; dy <= r; dy += stride)
+                for (int dx = -r; dx <= r; dx += stride) {
+                    sum += image.at(std::clamp(x + dx, 0, image.width - 1), std::clamp(y + dy, 0, image.height - 1));
+                    ++count;
+                }
+            out.at(x, y) = float(sum / count);
+        }
+    return out;
+}
+
+TEST(MeanFilter, EqualsTheBoxMeanOnRandomDepthImages) {
+    // Odd sizes (edges clamped on every side), a quarter of the pixels with nothing cut (0, which
+    // the filter averages like any depth). The camera has near = 0, so stored depth s / far is
+    // linear in s and the stored mean is the mean of the depths. Tolerance: the GPU sums k floats
+    // per pass in float, the CPU in double: k + 2 roundings of values <= 1 (2^-24 each) per pass,
+    // times far for depth units.
+    pipeline::Camera camera;
+    camera.width = 97;
+    camera.height = 61;
+    camera.near_plane = 0.0f;
+    camera.far_plane = 100.0f;
+    std::mt19937 random(5);
+    std::uniform_real_distribution<float> depth(1.0f, 99.0f);
+    std::uniform_int_distribution<int> quarter(0, 3);
+    cone_field::FloatImage cut(camera.width, camera.height);
+    for (float& s : cut.pixels) s = quarter(random) == 0 ? 0.0f : depth(random);
+    const pipeline::CutTargets input(camera.width, camera.height), output(camera.width, camera.height);
+    pipeline::write_cut_depth_texture(cut, camera, input.depth);
+    pipeline::MeanFilter filter(GlEnvironment::shaders());
+    struct Case {
+        int size;
+        pipeline::MeanFilterKernel kernel;
+        float reference_depth;  // distance-scaled: beyond every depth = the full kernel; below them = radius 1
+        int expected_size, stride;
+    };
+    for (const Case& c : {Case{9, pipeline::MeanFilterKernel::full, 0, 9, 1}, Case{3, pipeline::MeanFilterKernel::full, 0, 3, 1},
+                          Case{33, pipeline::MeanFilterKernel::full, 0, 33, 1}, Case{9, pipeline::MeanFilterKernel::sampled, 0, 9, 2},
+                          Case{9, pipeline::MeanFilterKernel::distance_scaled, 1000.0f, 9, 1}}) {
+        SCOPED_TRACE("kernel " + std::to_string(c.size) + " kind " + std::to_string(int(c.kernel)));
+        filter.apply(input, output, c.size, c.kernel, camera, c.reference_depth);
+        const cone_field::FloatImage gpu = pipeline::read_cut_depth_texture(output.depth, camera);
+        const cone_field::FloatImage cpu = box_mean(cut, c.expected_size, c.stride);
+        const double tolerance = 2.0 * (c.expected_size + 2) * std::ldexp(1.0, -24) * camera.far_plane;
+        double largest = 0;
+        for (std::size_t i = 0; i < cut.pixel_count(); ++i) largest = std::max(largest, double(std::abs(gpu.pixels[i] - cpu.pixels[i])));
+        EXPECT_LE(largest, tolerance);
+    }
 }
 
 TEST(MeanFilterKernel, DistanceScaledIsTheFullKernelNearAndSharperOnFarWalls) {

@@ -1,8 +1,10 @@
 #pragma once
 // Turns a strategy's depth image into the cut-surface targets stage 2 reads: world normal +
-// depth (RGBA32F) and the rear-shell clamp flag (R8), one full-screen pass.
+// depth (RGBA32F) and the rear-shell clamp flag (R8), one compute pass
+// (shaders/cut_surface/resolve.comp).
 #include "cutaway/camera.h"
 #include "cutaway/frame_targets.h"
+#include "gl/float_image_buffer.h"
 #include "gl/shader_library.h"
 
 namespace cutaway::pipeline {
@@ -18,9 +20,7 @@ public:
 
 private:
     gl::Program program_;
+    gl::FloatImageBuffer depth_, rear_shell_;  ///< the depth images as the pass reads them
 };
-
-/// Sets the cut camera uniforms of shaders/cut_surface/cut_output.glsl on `program`.
-void set_cut_output_uniforms(const gl::Program& program, const Camera& cut_camera);
 
 }  // namespace cutaway::pipeline

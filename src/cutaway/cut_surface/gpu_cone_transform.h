@@ -10,6 +10,7 @@
 #include "cutaway/cone_field/chamfer.h"
 #include "cutaway/cone_field/jump_flooding.h"
 #include "cutaway/frame_targets.h"
+#include "gl/compute_dispatch.h"
 #include "gl/shader_library.h"
 
 namespace cutaway::pipeline {
@@ -47,8 +48,7 @@ private:
     gl::Program plain_, widened_;
 };
 
-/// Groups of `group` invocations covering `count`.
-inline unsigned group_count(int count, int group) { return unsigned((count + group - 1) / group); }
+using gl::group_count;
 
 /// Writes targets.depth from `program`, a full-screen fragment pass that sets gl_FragDepth
 /// (shaders/cut_surface/cone_resolve.frag): depth test on with GL_ALWAYS, so every pixel is

@@ -33,6 +33,7 @@
 
 #include "cutaway/cut_surface/gpu_cone_transform.h"
 #include "cutaway/cut_surface/jump_flood_split.h"
+#include "gl/float_image_buffer.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
@@ -88,7 +89,7 @@ public:
         if (owners_[0].width() != width || owners_[0].height() != height)
         {
             for (gl::Texture& owners : owners_) owners = gl::Texture(GL_TEXTURE_2D, GL_RG32UI, width, height);
-            cut_ = gl::Buffer(std::size_t(width) * std::size_t(height) * sizeof(float), nullptr);
+            cut_.resize(width, height);
         }
 
         const gl::Program& init = init_.prepare(in);
@@ -103,17 +104,13 @@ public:
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
             glBindImageTexture(1, owners_[std::size_t(current)].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
             if (last)
-                cut_.bind_base(GL_SHADER_STORAGE_BUFFER, 0);
+                cut_.bind_image(0, GL_WRITE_ONLY);
             else
                 glBindImageTexture(0, owners_[std::size_t(1 - current)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
             flood(last ? last_passes_ : passes_, steps[i], in.slope, width, height);
             current = 1 - current;
         }
-        // The cut into the depth image: a copy from the buffer (no fragment pass, nothing read back).
-        glMemoryBarrier(GL_PIXEL_BUFFER_BARRIER_BIT);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, cut_.id());
-        glTextureSubImage2D(targets.depth.id(), 0, 0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
-        glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+        cut_.write_depth(targets.depth);  // a copy on the GL side: no fragment pass, nothing read back
     }
 
 private:
@@ -121,7 +118,7 @@ private:
     BlockPrograms passes_, last_passes_;
     cone_field::JfaVariant variant_;
     std::array<gl::Texture, 2> owners_;  ///< ping-pong, resized with the targets
-    gl::Buffer cut_;                     ///< the last pass's cut, copied into the cut depth image
+    gl::FloatImageBuffer cut_;           ///< the last pass's cut, copied into the cut depth image
 };
 
 }  // namespace

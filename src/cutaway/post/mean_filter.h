@@ -1,7 +1,8 @@
 #pragma once
-// Mean filter of the cut surface (k x k), as two 1D passes. Kernels (SPEC.md stage extras):
+// Mean filter of the cut surface (k x k), as two 1D compute passes over image buffers
+// (shaders/post/mean_filter.comp). Kernels (SPEC.md stage extras):
 //   full: every texel of the k x k window;
-//   sampled: every other texel along each axis (a quarter of the fetches);
+//   sampled: every other texel along each axis (a quarter of the loads);
 //   distance-scaled: the radius shrinks with distance to the camera, so far cut walls, a few
 //     pixels wide, are not smoothed away: r(p) = clamp(round(R * d_ref / d(p)), 1, R), R = k / 2,
 //     d(p) the unfiltered cut's depth at p along the cut camera's axis (R where nothing is cut),
@@ -16,6 +17,7 @@
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/model_frame.h"
+#include "gl/float_image_buffer.h"
 #include "gl/program_cache.h"
 
 namespace cutaway::pipeline {
@@ -35,8 +37,9 @@ public:
 private:
     const gl::Program& program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera, float reference_depth);
     gl::ProgramCache programs_;
-    gl::Texture rows_;               ///< R32F: the first (row) pass
-    gl::Framebuffer rows_framebuffer_;
+    gl::FloatImageBuffer unfiltered_;  ///< input.depth; the second pass's output where the kernel does not read it then
+    gl::FloatImageBuffer rows_;        ///< the first (row) pass
+    gl::FloatImageBuffer filtered_;    ///< the second pass's output for the distance-scaled kernel (allocated at its first use)
 };
 
 }  // namespace cutaway::pipeline

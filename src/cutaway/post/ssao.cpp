@@ -1,22 +1,24 @@
 #include "cutaway/post/ssao.h"
 
-#include "cutaway/post/fullscreen_pass.h"
+#include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 
 Ssao::Ssao(const gl::ShaderLibrary& shaders)
-    : programs_(shaders, {{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "post/ssao.frag"}}) {}
+    : programs_(shaders, {{GL_COMPUTE_SHADER, "post/ssao.comp"}}) {}
 
 void Ssao::apply(const SceneTargets& scene, const PostTargets& post, const Camera& camera, int samples, float radius) {
     const gl::Program& p = programs_.get({{"SAMPLES", std::to_string(samples)}});
-    gl::set_uniform(p, "normal_depth", 0);
-    scene.normal_depth.bind(0);
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "radius", radius);
     gl::set_uniform(p, "strength", 1.6f);
-    draw_fullscreen(p, post.ambient_framebuffer, camera.width, camera.height);
+    glBindImageTexture(0, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
+    p.use();
+    glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);  // ssao.comp's 64 x 4
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 }  // namespace cutaway::pipeline

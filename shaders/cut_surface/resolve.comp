@@ -1,0 +1,78 @@
+#version 450 core
+// Cut surface targets from a strategy's depth image: the world normal (facing the camera) and
+// depth s per pixel, and where the cut is clamped in front of the rear shell unless the frame is
+// see-through (src/cutaway/rear_shell_depth.h). A compute pass over image buffers
+// (gl/float_image_buffer.h, src/cutaway/cut_surface/cut_resolve.cpp). The normal comes from the
+// neighbours' world positions on the smoother side of each axis, so a wall's edge does not bend it.
+layout(local_size_x = 64, local_size_y = 4) in;
+
+layout(r32f, binding = 0) uniform readonly imageBuffer cut_depth;         // (s - near) / (far - near), 0 = nothing cut
+layout(r32f, binding = 1) uniform readonly imageBuffer rear_shell_depth;  // the same encoding: the farthest shell face, 0 = none
+layout(rgba32f, binding = 2) uniform writeonly image2D surface;           // world normal, depth s (0: no cut)
+layout(r8, binding = 3) uniform writeonly image2D rear_clamp;             // 1: clamped at the rear shell
+uniform bool clamp_to_rear_shell;
+uniform float rear_margin;       // render units in front of the rear shell
+uniform mat4 inverse_cut_view;
+uniform vec2 projection_scale;   // P[0][0], P[1][1] of the cut camera
+uniform ivec2 cut_size;          // pixels
+uniform float cut_near;          // cut camera near plane
+uniform float cut_far;           // cut camera far plane
+uniform vec3 cut_camera_position;  // world
+
+vec3 cut_world_position(vec2 window, float s) {
+    vec2 ndc = window / vec2(cut_size) * 2.0 - 1.0;
+    vec3 eye = vec3(ndc / projection_scale * s, -s);
+    return (inverse_cut_view * vec4(eye, 1.0)).xyz;
+}
+
+float stored_to_depth(float stored) { return stored > 0.0 ? cut_near + stored * (cut_far - cut_near) : 0.0; }
+
+int index_of(ivec2 texel) { return texel.y * cut_size.x + texel.x; }
+
+float strategy_depth(ivec2 texel) { return stored_to_depth(imageLoad(cut_depth, index_of(texel)).r); }
+
+/// The cut's depth s at a texel, kept rear_margin in front of the rear shell; 0 outside the image.
+float depth_of(ivec2 texel) {
+    if (any(lessThan(texel, ivec2(0))) || any(greaterThanEqual(texel, cut_size))) return 0.0;
+    float s = strategy_depth(texel);
+    if (clamp_to_rear_shell && s > 0.0) {
+        float rear = stored_to_depth(imageLoad(rear_shell_depth, index_of(texel)).r);
+        if (rear > 0.0) s = min(s, rear - rear_margin);
+    }
+    return s;
+}
+
+// One pixel's targets from the clamped depths around it: its own `s` and its neighbours ahead and
+// behind along x and y (0: none), and the strategy's own depth there (for the clamp flag).
+void resolve_pixel(ivec2 texel, float s, float x_ahead, float x_behind, float y_ahead, float y_behind, float strategy) {
+    if (s <= 0.0) {
+        imageStore(surface, texel, vec4(0.0));
+        imageStore(rear_clamp, texel, vec4(0.0));
+        return;
+    }
+    vec3 world = cut_world_position(vec2(texel) + 0.5, s);
+    vec3 tangent[2];
+    for (int axis = 0; axis < 2; ++axis) {
+        ivec2 step = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        float ahead = axis == 0 ? x_ahead : y_ahead, behind = axis == 0 ? x_behind : y_behind;
+        bool use_ahead = ahead > 0.0 && (behind <= 0.0 || abs(ahead - s) <= abs(behind - s));
+        float other = use_ahead ? ahead : behind;
+        ivec2 other_texel = use_ahead ? texel + step : texel - step;
+        tangent[axis] = other > 0.0 ? (cut_world_position(vec2(other_texel) + 0.5, other) - world) * (use_ahead ? 1.0 : -1.0)
+                                    : vec3(0.0);
+    }
+    vec3 normal = cross(tangent[0], tangent[1]);
+    normal = dot(normal, normal) > 0.0 ? normalize(normal) : normalize(cut_camera_position - world);
+    if (dot(normal, cut_camera_position - world) < 0.0) normal = -normal;
+    imageStore(surface, texel, vec4(normal, s));
+    // The cut here is the clamp at the rear shell, not the strategy's surface (stage 2 draws no
+    // border lines against it: common/cut_lookup.glsl).
+    imageStore(rear_clamp, texel, vec4(s < strategy ? 1.0 : 0.0));
+}
+
+void main() {
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(texel, cut_size))) return;
+    resolve_pixel(texel, depth_of(texel), depth_of(texel + ivec2(1, 0)), depth_of(texel - ivec2(1, 0)),
+                  depth_of(texel + ivec2(0, 1)), depth_of(texel - ivec2(0, 1)), strategy_depth(texel));
+}

@@ -1,0 +1,50 @@
+#version 450 core
+// Screen-space ambient occlusion in the style of Shanmugam & Arikan 2007: SAMPLES points in a
+// disc of world radius `radius` around each pixel, rebuilt from linear depth; each occludes by
+// how much it lies above the pixel's tangent plane, with distance falloff. Works on every
+// surface of the frame, the cut fill included (its normals are the cut surface's). A compute pass
+// with image loads: on llvmpipe 48-54 ms at 1920x1080 against the fragment pass's 64-68 with
+// texelFetch (sapphire, alternating runs; the same image).
+layout(local_size_x = 64, local_size_y = 4) in;
+
+layout(rgba32f, binding = 0) uniform readonly image2D normal_depth;  // eye-space normal, linear depth (0 = background)
+layout(r16f, binding = 1) uniform writeonly image2D ambient;
+uniform vec2 projection_scale;   // P[0][0], P[1][1]
+uniform vec2 viewport_size;
+uniform float radius;            // render units
+uniform float strength;
+
+vec3 eye_position(vec2 window, float depth) {
+    vec2 ndc = window / viewport_size * 2.0 - 1.0;
+    return vec3(ndc / projection_scale * depth, -depth);
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, ivec2(viewport_size)))) return;
+    vec2 window = vec2(pixel) + 0.5;  // the pixel's centre, as gl_FragCoord.xy
+    vec4 here = imageLoad(normal_depth, pixel);
+    if (here.a <= 0.0) {  // background: a branch, so that background-only SIMD lanes skip the samples
+        imageStore(ambient, pixel, vec4(1.0));
+        return;
+    }
+    vec3 position = eye_position(window, here.a);
+    vec3 normal = normalize(here.xyz);
+    float radius_px = radius * projection_scale.y * 0.5 * viewport_size.y / here.a;
+    // Per-pixel rotation of a fixed spiral (interleaved gradient noise) hides banding.
+    float angle0 = 6.2831853 * fract(52.9829189 * fract(dot(window, vec2(0.06711056, 0.00583715))));
+    float occlusion = 0.0;
+    for (int k = 0; k < SAMPLES; ++k) {
+        float t = (float(k) + 0.5) / float(SAMPLES);
+        float angle = angle0 + 2.3999632 * float(k);  // golden angle spiral
+        vec2 offset = radius_px * sqrt(t) * vec2(cos(angle), sin(angle));
+        ivec2 texel = ivec2(window + offset);
+        // Outside the image a load reads 0: no depth, no occlusion (selects, not branches).
+        float depth = imageLoad(normal_depth, texel).a;
+        vec3 d = eye_position(vec2(texel) + 0.5, depth) - position;
+        float distance2 = dot(d, d);
+        float occludes = max(dot(normal, d) / sqrt(distance2 + 1e-12) - 0.05, 0.0) / (1.0 + distance2 / (radius * radius));
+        occlusion += depth > 0.0 ? occludes : 0.0;
+    }
+    imageStore(ambient, pixel, vec4(clamp(1.0 - strength * occlusion / float(SAMPLES), 0.0, 1.0)));
+}
