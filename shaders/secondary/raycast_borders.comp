@@ -9,12 +9,12 @@ layout(local_size_x = 64, local_size_y = 4) in;
 #include "common/border_test.glsl"
 #include "common/line_style.glsl"
 
-uniform sampler2D face_plane;    // world face normal, w = 1 + face class (0: no secondary)
-uniform sampler2D normal_depth;  // w: linear depth in the model camera
+layout(rgba32f, binding = 2) uniform readonly image2D face_plane;    // world face normal, w = 1 + face class (0: no secondary)
+layout(rgba32f, binding = 3) uniform readonly image2D normal_depth;  // w: linear depth in the model camera
 uniform vec3 shell_cut_colour;
 uniform bool hide_internal_lines;  // no border lines on the cut fill (shell-cut lines stay)
-layout(rgba8) uniform image2D scene_colour;
-layout(rg32ui) uniform uimage2D scene_id;
+layout(rgba8, binding = 0) uniform image2D scene_colour;
+layout(rg32ui, binding = 1) uniform uimage2D scene_id;
 
 const uint face_class_shell = 3u;
 const uint flag_cut_fill = 2u;
@@ -25,9 +25,9 @@ void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, ivec2(viewport_size)))) return;
     vec2 window = vec2(texel) + 0.5;  // the pixel's centre, as gl_FragCoord.xy
-    vec4 plane = texelFetch(face_plane, texel, 0);
+    vec4 plane = imageLoad(face_plane, texel);
     if (plane.w == 0.0) return;
-    float depth = texelFetch(normal_depth, texel, 0).a;
+    float depth = imageLoad(normal_depth, texel).a;
     vec2 ndc = window / viewport_size * 2.0 - 1.0;
     vec3 world = (inverse_view * vec4(ndc / projection_scale * depth, -depth, 1.0)).xyz;
     if (at_view_rear_shell(world, texel) || !raycast_border(window, world, plane.xyz)) return;  // secondary.frag

@@ -52,14 +52,14 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
     gl::set_uniform(p, "hide_internal_lines", settings.hide_internal_lines);
-    gl::set_uniform(p, "face_plane", 2);
-    gl::set_uniform(p, "normal_depth", 3);
-    scene.face_plane.bind(2);
-    scene.normal_depth.bind(3);
-    gl::set_uniform(p, "scene_colour", 0);
-    gl::set_uniform(p, "scene_id", 1);
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
+    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);  // image loads: cheaper than texelFetch on llvmpipe
+    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    // Render targets read as images: on llvmpipe only a barrier makes a compute pass wait for the
+    // draws still being rasterised into them (a texture bound for sampling does that by itself).
+    // Without it the border test read stale face planes (GoldenImages, CutawayBorders tests).
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
     p.use();
     constexpr int group_x = 64, group_y = 4;  // raycast_borders.comp's local size
     glDispatchCompute(GLuint((camera.width + group_x - 1) / group_x), GLuint((camera.height + group_y - 1) / group_y), 1);

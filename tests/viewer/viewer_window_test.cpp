@@ -211,7 +211,7 @@ TEST_F(ViewerWindowTest, ScriptDrivesCameraAndEveryControl) {
 TEST_F(ViewerWindowTest, EditedShadersAreReloadedAndBrokenOnesReported) {
     const std::filesystem::path shaders = dir_.path() / "shaders";
     std::filesystem::copy(CUTAWAY_SOURCE_DIR "/shaders", shaders, std::filesystem::copy_options::recursive);
-    const std::filesystem::path composite = shaders / "post" / "composite.frag";
+    const std::filesystem::path composite = shaders / "post" / "composite.comp";
     std::ofstream(path("wait.txt")) << "sleep 6\nquit\n";
     // After the first frame: an edit that compiles, then (a second later) one that does not.
     bool edited = false;
@@ -229,7 +229,7 @@ TEST_F(ViewerWindowTest, EditedShadersAreReloadedAndBrokenOnesReported) {
     ASSERT_EQ(view.exit_code, 0) << view.output;
     EXPECT_NE(view.output.find("shaders reloaded"), std::string::npos) << view.output;
     EXPECT_NE(view.output.find("shader edit not applied"), std::string::npos) << view.output;
-    EXPECT_NE(view.output.find("composite.frag"), std::string::npos) << "the compile error names the file\n" << view.output;
+    EXPECT_NE(view.output.find("composite.comp"), std::string::npos) << "the compile error names the file\n" << view.output;
 }
 
 TEST_F(ViewerWindowTest, BadScriptIsRefusedBeforeAWindowOpens) {

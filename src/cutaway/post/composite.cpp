@@ -1,6 +1,6 @@
 #include "cutaway/post/composite.h"
 
-#include "cutaway/post/fullscreen_pass.h"
+#include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
@@ -12,7 +12,7 @@ const glm::vec3 silhouette_colour(0.0f, 0.8f, 1.0f);
 }  // namespace
 
 Composite::Composite(const gl::ShaderLibrary& shaders)
-    : programs_(shaders, {{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "post/composite.frag"}}) {}
+    : programs_(shaders, {{GL_COMPUTE_SHADER, "post/composite.comp"}}) {}
 
 void Composite::apply(const SceneTargets& scene, const PostTargets& post, const FrameSettings& settings, int width,
                       int height) {
@@ -22,14 +22,11 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
     if (settings.silhouette) defines.emplace_back("SILHOUETTE", "");
     if (settings.contours) defines.emplace_back("CONTOURS", "");
     const gl::Program& p = programs_.get(defines);
-    gl::set_uniform(p, "scene_colour", 0);
-    gl::set_uniform(p, "ambient", 1);
-    gl::set_uniform(p, "scene_id", 2);
-    gl::set_uniform(p, "shell_depth", 3);
-    scene.colour.bind(0);
-    post.ambient.bind(1);
-    scene.id.bind(2);
-    scene.shell_depth.bind(3);
+    glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
+    glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R16F);
+    glBindImageTexture(2, scene.id.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindImageTexture(3, scene.shell_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(4, post.final_colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     gl::set_uniform(p, "viewport_size", glm::vec2(float(width), float(height)));
     gl::set_uniform(p, "saturation_primary", settings.saturation_primary);
     gl::set_uniform(p, "saturation_secondary", settings.saturation_secondary);
@@ -38,7 +35,12 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
     gl::set_uniform(p, "contour_colour", glm::vec3(0.05f, 0.05f, 0.05f));
     gl::set_uniform(p, "contour_jump", 0.02f);
     gl::set_uniform(p, "background", glm::vec3(1.0f, 1.0f, 1.0f));
-    draw_fullscreen(p, post.final_framebuffer, width, height);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);  // render targets read as images (secondary_pass.cpp: llvmpipe)
+    p.use();
+    glDispatchCompute(gl::group_count(width, 64), gl::group_count(height, 4), 1);  // composite.comp's 64 x 4
+    // Then drawn over (colour bar), read back or blitted.
+    glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
+                    GL_PIXEL_BUFFER_BARRIER_BIT);
 }
 
 }  // namespace cutaway::pipeline

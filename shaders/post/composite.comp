@@ -1,10 +1,14 @@
 #version 450 core
 // Final image: ambient occlusion, saturation contrast (HSV), primary silhouette, shell contours.
-// Each is a #define variant: SSAO, SATURATION, SILHOUETTE, CONTOURS.
-uniform sampler2D scene_colour;
-uniform sampler2D ambient;
-uniform usampler2D scene_id;     // compact cell + 1, flags
-uniform sampler2D shell_depth;   // linear depth of the uncut shell (0 = background)
+// Each is a #define variant: SSAO, SATURATION, SILHOUETTE, CONTOURS. A compute pass with image
+// loads (as post/ssao.comp; src/cutaway/post/composite.cpp).
+layout(local_size_x = 64, local_size_y = 4) in;
+
+layout(rgba8, binding = 0) uniform readonly image2D scene_colour;
+layout(r16f, binding = 1) uniform readonly image2D ambient;
+layout(rg32ui, binding = 2) uniform readonly uimage2D scene_id;  // compact cell + 1, flags
+layout(r32f, binding = 3) uniform readonly image2D shell_depth;  // linear depth of the uncut shell (0 = background)
+layout(rgba8, binding = 4) uniform writeonly image2D final_colour;
 uniform vec2 viewport_size;
 uniform float saturation_primary;    // factor on primaries' saturation
 uniform float saturation_secondary;  // factor on secondaries' saturation
@@ -13,8 +17,6 @@ uniform vec3 silhouette_colour;     // not the shell-cut lines' red
 uniform vec3 contour_colour;
 uniform float contour_jump;          // relative depth jump that makes a fold contour
 uniform vec3 background;
-
-layout(location = 0) out vec4 out_colour;
 
 const uint flag_primary = 1u;
 
@@ -31,16 +33,17 @@ vec3 hsv_to_rgb(vec3 c) {
     return c.z * mix(vec3(1.0), clamp(p - 1.0, 0.0, 1.0), c.y);
 }
 
-bool is_primary(ivec2 texel) { return (texelFetch(scene_id, texel, 0).g & flag_primary) != 0u; }
+bool is_primary(ivec2 texel) { return (imageLoad(scene_id, texel).g & flag_primary) != 0u; }
 
 void main() {
-    ivec2 texel = ivec2(gl_FragCoord.xy);
-    uvec2 id = texelFetch(scene_id, texel, 0).rg;
+    ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(texel, ivec2(viewport_size)))) return;
+    uvec2 id = imageLoad(scene_id, texel).rg;
     bool covered = id.r != 0u;
     bool primary = (id.g & flag_primary) != 0u;
-    vec3 colour = covered ? texelFetch(scene_colour, texel, 0).rgb : background;
+    vec3 colour = covered ? imageLoad(scene_colour, texel).rgb : background;
 #ifdef SSAO
-    if (covered) colour *= texelFetch(ambient, texel, 0).r;
+    if (covered) colour *= imageLoad(ambient, texel).r;
 #endif
 #ifdef SATURATION
     if (covered) {
@@ -66,16 +69,16 @@ void main() {
 #endif
 #ifdef CONTOURS
     // Outline of the uncut shell and its folds: a 1-pixel line where the shell's depth jumps.
-    float depth = texelFetch(shell_depth, texel, 0).r;
+    float depth = imageLoad(shell_depth, texel).r;
     ivec2 last_texel = ivec2(viewport_size) - 1;
     const ivec2 neighbours[4] = ivec2[](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
     bool contour = false;
     for (int n = 0; n < 4; ++n) {
-        float other = texelFetch(shell_depth, clamp(texel + neighbours[n], ivec2(0), last_texel), 0).r;
+        float other = imageLoad(shell_depth, clamp(texel + neighbours[n], ivec2(0), last_texel)).r;
         // Only the nearer side of a jump draws, so the line is one pixel wide.
         contour = contour || (depth > 0.0 && (other == 0.0 || other - depth > contour_jump * depth));
     }
     if (contour && !primary) colour = contour_colour;
 #endif
-    out_colour = vec4(colour, 1.0);
+    imageStore(final_colour, texel, vec4(colour, 1.0));
 }
