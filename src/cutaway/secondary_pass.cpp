@@ -1,5 +1,6 @@
 #include "cutaway/secondary_pass.h"
 
+#include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
@@ -56,13 +57,9 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
     glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);  // image loads: cheaper than texelFetch on llvmpipe
     glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    // Render targets read as images: on llvmpipe only a barrier makes a compute pass wait for the
-    // draws still being rasterised into them (a texture bound for sampling does that by itself).
-    // Without it the border test read stale face planes (GoldenImages, CutawayBorders tests).
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    gl::wait_for_draws_before_image_loads();
     p.use();
-    constexpr int group_x = 64, group_y = 4;  // raycast_borders.comp's local size
-    glDispatchCompute(GLuint((camera.width + group_x - 1) / group_x), GLuint((camera.height + group_y - 1) / group_y), 1);
+    glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);  // raycast_borders.comp's 64 x 4
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 

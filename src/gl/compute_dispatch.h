@@ -1,5 +1,5 @@
 #pragma once
-// Workgroup counts for a compute dispatch of any size.
+// Compute dispatches: workgroup counts of any size, and waiting for draws before image loads.
 #include <algorithm>
 #include <cstddef>
 #include <utility>
@@ -15,6 +15,12 @@ inline std::pair<GLuint, GLuint> dispatch_grid(std::size_t groups) {
     const std::size_t groups_x = std::min<std::size_t>(std::max<std::size_t>(groups, 1), 65535);
     return {GLuint(groups_x), GLuint((std::max<std::size_t>(groups, 1) + groups_x - 1) / groups_x)};
 }
+
+/// Call before a compute pass that reads render targets as images: llvmpipe rasterises
+/// asynchronously, and only a barrier (or binding the texture for sampling) makes the pass wait for
+/// the draws into them. Without it the ray-cast border pass read stale face planes (the
+/// GoldenImages and CutawayBorders tests).
+inline void wait_for_draws_before_image_loads() { glMemoryBarrier(GL_ALL_BARRIER_BITS); }
 
 /// Groups of `group` invocations covering `count`.
 inline unsigned group_count(int count, int group) { return unsigned((count + group - 1) / group); }

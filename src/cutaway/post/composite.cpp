@@ -35,7 +35,7 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
     gl::set_uniform(p, "contour_colour", glm::vec3(0.05f, 0.05f, 0.05f));
     gl::set_uniform(p, "contour_jump", 0.02f);
     gl::set_uniform(p, "background", glm::vec3(1.0f, 1.0f, 1.0f));
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);  // render targets read as images (secondary_pass.cpp: llvmpipe)
+    gl::wait_for_draws_before_image_loads();
     p.use();
     glDispatchCompute(gl::group_count(width, 64), gl::group_count(height, 4), 1);  // composite.comp's 64 x 4
     // Then drawn over (colour bar), read back or blitted.

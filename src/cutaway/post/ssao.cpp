@@ -16,7 +16,7 @@ void Ssao::apply(const SceneTargets& scene, const PostTargets& post, const Camer
     gl::set_uniform(p, "strength", 1.6f);
     glBindImageTexture(0, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);  // render targets read as images (secondary_pass.cpp: llvmpipe)
+    gl::wait_for_draws_before_image_loads();
     p.use();
     glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);  // ssao.comp's 64 x 4
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
