@@ -36,17 +36,18 @@ def markdown(document):
         "the camera + surface filter, re-executed every frame. Ours plain = `baseline_ms`, ours cutaway = "
         "`stages_ms.total` (1% primaries, 9x9 mean filter, SSAO, ray-cast borders). Faces: ours as stats.json "
         "reports them (`baseline_faces_drawn`; `faces_drawn` per stage), n/a where it does not. Ours: `visible` = the "
-        "default renderer (GPU-culled faces, one frustum per IJK box of adjacent primaries); `per-cell frustum` = the "
-        "paper's one frustum per primary; `all-faces` = every face of every cell (the paper's path).", "",
-        "| model | active cells | ours | VTK surface ms | VTK faces | VTK clip ms | VTK clip faces | ours plain ms | "
+        "default renderer (GPU-culled faces, the default cut strategy `auto`: one frustum per IJK box of adjacent "
+        "primaries, or their union swept in O(pixels) from the device's threshold on; column `cut` names the one drawn); "
+        "`per-cell frustum` = the paper's one frustum per primary; `all-faces` = every face of every cell (the paper's path).", "",
+        "| model | active cells | ours | cut | VTK surface ms | VTK faces | VTK clip ms | VTK clip faces | ours plain ms | "
         "ours plain faces | ours cutaway ms | ours cutaway faces | plain / VTK surface | cutaway / VTK clip |",
-        "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|"]
+        "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|"]
     for model in document["models"]:
         vtk = model["vtk"]
         for draw, ours in model["ours"].items():
             ratio = model["ratios"][draw]
             lines.append(
-                f"| {model['model'].split()[0]} | {model['active_cells']:,} | {draw} | "
+                f"| {model['model'].split()[0]} | {model['active_cells']:,} | {draw} | {ours.get('cut_strategy', 'n/a')} | "
                 f"{_ms(vtk['surface'])} | {_count(vtk['surface']['faces_drawn'])} | {_ms(vtk['clip'])} | "
                 f"{_count(vtk['clip']['faces_drawn'])} | {_ms(ours['plain_ms'])} | {_count(ours['plain_faces_drawn'])} | "
                 f"{_ms(ours['cutaway_ms'])} | {_count(ours['cutaway_faces_drawn'])} | {ratio['plain_over_vtk_surface']:.2f} | {ratio['cutaway_over_vtk_clip']:.2f} |")

@@ -54,8 +54,9 @@ MODELS = ("petra", "sapphire")
 SEED = 1  # generator_parameters.h default: the seed preset:NAME renders with
 DEFAULT_POSE = (35.0, 30.0)  # render_options.h: --camera 35 30 0
 PAPER_FLAGS = ("--primary-fraction", "0.01", "--mean-filter", "9", "--ssao", "on", "--border", "raycast")
-# Ours, by name (the column "draw" of the table): the default renderer (visible faces, one frustum
-# per IJK box of adjacent primaries), the same with the paper's one frustum per primary, and the
+# Ours, by name (the column "draw" of the table): the default renderer (visible faces, the default
+# cut strategy "auto": one frustum per IJK box of adjacent primaries, or their union swept in
+# O(pixels) from the device's threshold on, cut_strategy_choice.h), the same with the paper's one frustum per primary, and the
 # paper's path (every face of every cell, one frustum per primary).
 CONFIGURATIONS = (("visible", ()), ("visible, per-cell frustum", ("--strategy", "frustum")),
                   ("all-faces, per-cell frustum (paper)", ("--draw", "all-faces", "--strategy", "frustum")))
@@ -158,7 +159,7 @@ def ours_round(exp, grdecl, camera, proto, flags):
                        *flags)
     return {"plain_ms": stats["baseline_ms"], "cutaway_ms": stats["stages_ms"]["total"],
             "stages_ms": stats["stages_ms"], "plain_faces_drawn": stats.get("baseline_faces_drawn"),
-            "cutaway_faces_drawn": stats.get("faces_drawn"),
+            "cutaway_faces_drawn": stats.get("faces_drawn"), "cut_strategy": stats["strategy"]["name"],
             "face_fields": {k: v for k, v in stats.items() if "faces" in k}, "primary_cells": stats.get("primary_cells"),
             "gl_renderer": stats.get("gl_renderer"), "gl_version": stats.get("gl_version"),
             "lp_num_threads": stats.get("lp_num_threads"), "git_revision": stats.get("git_revision")}
@@ -221,7 +222,8 @@ def summarise_vtk(vtk_rounds):
 def summarise_ours(rounds):
     """Spread over rounds of our plain and cutaway frame (ms), and the first round's face counts."""
     return {"plain_ms": spread([r["plain_ms"] for r in rounds]), "cutaway_ms": spread([r["cutaway_ms"] for r in rounds]),
-            "plain_faces_drawn": rounds[0]["plain_faces_drawn"], "cutaway_faces_drawn": rounds[0]["cutaway_faces_drawn"]}
+            "plain_faces_drawn": rounds[0]["plain_faces_drawn"], "cutaway_faces_drawn": rounds[0]["cutaway_faces_drawn"],
+            "cut_strategy": rounds[0]["cut_strategy"]}
 
 
 def measure_model(exp, x, preset, proto, draws, scratch):

@@ -360,7 +360,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
                 "not computed under mpirun (the metrics' extra frames are single-process; compare --cell-ids with a "
                 "single-process run instead)";
         }
-    stats["strategy"] = strategy_json(strategy, settings.strategy);
+    stats["strategy"] = strategy_json(strategy, settings.strategy, rank.renderer().auto_sweep_from());
     stats["gl_renderer"] = gl::gl_renderer();
     stats["gl_version"] = gl::gl_version();
     stats["gl_platform"] = scene.context->platform();

@@ -144,7 +144,7 @@ int run_render(const RenderOptions& options) {
                                       {"pixels", m.border_width.pixels}};
         stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
     }
-    stats["strategy"] = strategy_json(strategy, settings.strategy);
+    stats["strategy"] = strategy_json(strategy, settings.strategy, renderer.auto_sweep_from());
     stats["gl_renderer"] = gl::gl_renderer();
     stats["gl_version"] = gl::gl_version();
     stats["gl_platform"] = context->platform();

@@ -109,7 +109,7 @@ void add_selection_options(CLI::App& c, RenderOptions& o) {
 }
 
 void add_frame_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("--strategy", o.settings.strategy, "cut-surface strategy (default auto: frustum-clusters, one frustum per IJK box of adjacent primaries, below 10,000 primary cells, frustum-sweep from there; frustum: one per primary, the paper's)")->capture_default_str();
+    c.add_option("--strategy", o.settings.strategy, "cut-surface strategy (default auto: frustum-clusters, one frustum per IJK box of adjacent primaries, below 10,000 primary cells on a GPU and 500 on a software rasteriser such as llvmpipe, frustum-sweep from there; frustum: one per primary, the paper's)")->capture_default_str();
     c.add_option("--draw", o.draw,
                  "stage 2 faces: visible (GPU culling against the frustum and the cut) | all-faces (the paper's path)");
     c.add_option("--stage2-passes", o.stage2_passes,

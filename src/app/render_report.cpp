@@ -47,11 +47,12 @@ json stage_statistics(const std::vector<pipeline::FrameTimes>& runs, const std::
             {"total_ms_per_run", all_runs}};
 }
 
-json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::string& requested) {
+json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::string& requested, std::uint64_t auto_sweep_from) {
     json out = {{"name", drawn.name}, {"device", drawn.device}, {"why", drawn.why}, {"requested", requested}};
-    if (requested == pipeline::auto_cut_strategy)
-        out["chosen_by"] = "auto: frustum-clusters below " + std::to_string(pipeline::auto_sweep_from_primaries) +
-                           " primary cells, frustum-sweep from there (cut_strategy_choice.h)";
+    if (requested == pipeline::auto_cut_strategy) {
+        out["chosen_by"] = pipeline::auto_choice_rule(auto_sweep_from);
+        out["auto_sweep_from_primaries"] = auto_sweep_from;
+    }
     return out;
 }
 

@@ -19,8 +19,9 @@ nlohmann::json stage_statistics(const std::vector<pipeline::FrameTimes>& runs, c
 nlohmann::json faces_drawn_json(const pipeline::FacesDrawn& drawn);
 
 /// stats.json "strategy": the registry strategy that drew the cut (`drawn`), and what was asked
-/// for (`requested`: its own name, or "auto" with the rule it picked by).
-nlohmann::json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::string& requested);
+/// for (`requested`: its own name, or "auto" with the rule it picked by: frustum-sweep from
+/// `auto_sweep_from` primaries).
+nlohmann::json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::string& requested, std::uint64_t auto_sweep_from);
 
 /// A metric's value, or null with KEY_absent saying why when its denominator is zero (0/0 is not 1).
 void put_metric(nlohmann::json& stats, const std::string& key, double fraction, std::size_t denominator,

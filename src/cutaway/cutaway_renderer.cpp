@@ -164,7 +164,7 @@ void CutawayRenderer::set_primary_centroid() {
 }
 
 std::string CutawayRenderer::cut_strategy(const FrameSettings& settings) const {
-    return resolve_cut_strategy(settings.strategy, primaries_of_all_renderers_);
+    return resolve_cut_strategy(settings.strategy, primaries_of_all_renderers_, auto_sweep_from_);
 }
 
 void CutawayRenderer::selection_changed() {

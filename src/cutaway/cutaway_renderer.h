@@ -14,6 +14,7 @@
 #include "cutaway/cone_field/cone_image.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_resolve.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "cutaway/exposed_surface.h"
 #include "cutaway/frame_settings.h"
@@ -28,6 +29,7 @@
 #include "cutaway/selection/primary_centroid.h"
 #include "cutaway/secondary_pass.h"
 #include "cutaway/visibility/visible_faces.h"
+#include "gl/gl_context.h"
 #include "gl/image.h"
 #include "gl/stage_timer.h"
 #include "grid/corner_point_grid.h"
@@ -138,6 +140,8 @@ public:
     /// "auto" the one it picks for the primaries of every renderer (cut_strategy_choice.h), as
     /// of the last frame drawn.
     std::string cut_strategy(const FrameSettings& settings) const;
+    /// The primary cells from which "auto" picks frustum-sweep on this context's GL device.
+    std::uint64_t auto_sweep_from() const { return auto_sweep_from_; }
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until unfreeze().
     void freeze(const Camera& camera) { frozen_camera_ = camera; frozen_valid_ = false; }
@@ -249,6 +253,7 @@ private:
     std::vector<std::uint8_t> primary_flags_;
     glm::vec3 primary_centroid_{0};                 ///< render space, mean of the primary cells' centres
     std::uint64_t primaries_of_all_renderers_ = 0;  ///< summed by the hooks, with the centroid
+    std::uint64_t auto_sweep_from_ = auto_sweep_from_primaries(gl::gl_renderer());
     bool selection_on_cpu_ = false;
     std::size_t cut_readback_bytes_ = 0;
     std::uint64_t selection_generation_ = 0;  ///< counts selection changes
