@@ -46,12 +46,13 @@ struct NearestFaceTarget {
 };
 
 /// Stages 2 and 3: lit colour, eye-space normal + linear depth, cell id + flags, depth.
+/// colour and face_plane hold something only where id is not 0 (clear() leaves them as they were).
 struct SceneTargets {
     SceneTargets(int width, int height);
-    gl::Texture colour;        ///< RGBA8
-    gl::Texture normal_depth;  ///< RGBA32F
+    gl::Texture colour;        ///< RGBA8, where id is not 0
+    gl::Texture normal_depth;  ///< RGBA32F (0 = background)
     gl::Texture id;            ///< RG32UI: compact cell + 1 (0 = background), flags
-    gl::Texture face_plane;    ///< RGBA32F: world normal of the visible secondary face, w = 1 (0 elsewhere)
+    gl::Texture face_plane;    ///< RGBA32F where id is not 0: world normal of the visible secondary face, w = 1 + face class (0 on primaries)
     gl::Texture depth;         ///< DEPTH32F
     gl::Framebuffer framebuffer;
     /// Stage 2's first pass on the visible path with --stage2-passes 2 (allocated at its first
