@@ -4,11 +4,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 namespace {
-constexpr int group_side = 8;  // visibility/cut_pyramid.comp local size
+constexpr int group_x = 64, group_y = 4;  // visibility/cut_pyramid.comp local size
 }  // namespace
 
 CutDepthPyramid::CutDepthPyramid(const gl::ShaderLibrary& shaders)
@@ -39,8 +40,8 @@ void CutDepthPyramid::build(const gl::Texture& cut_surface) {
     for (int level = 0; level < levels(); ++level) {
         const gl::Program& p = level == 0 ? first_ : next_;
         if (level == 0) {
-            gl::set_uniform(p, "cut_surface", 0);
-            cut_surface.bind(0);
+            glBindImageTexture(0, cut_surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+            gl::wait_for_draws_before_image_loads();  // the surface may come from a draw or an image store
         } else {
             gl::set_uniform(p, "below_size", sizes_[std::size_t(level - 1)]);
             gl::set_uniform(p, "below_offset", offsets_[std::size_t(level - 1)]);
@@ -49,7 +50,7 @@ void CutDepthPyramid::build(const gl::Texture& cut_surface) {
         gl::set_uniform(p, "level_offset", offsets_[std::size_t(level)]);
         p.use();
         const glm::ivec2 size = sizes_[std::size_t(level)];
-        glDispatchCompute(GLuint((size.x + group_side - 1) / group_side), GLuint((size.y + group_side - 1) / group_side), 1);
+        glDispatchCompute(gl::group_count(size.x, group_x), gl::group_count(size.y, group_y), 1);
         glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
 }
