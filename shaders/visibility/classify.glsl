@@ -2,7 +2,10 @@
 // shared by visibility/classify_bricks.comp and visibility/cull_cells.comp: culled (outside the
 // frustum), in front of the cut (every fragment discarded), behind it (every fragment kept) or
 // straddling it.
-layout(std430, binding = 13) readonly buffer CutPyramid { vec2 pyramid[]; };  // visibility/cut_pyramid.comp
+// visibility/cut_pyramid.comp's (min, max) pairs as RG32F texels: on llvmpipe a storage-buffer load
+// at an index that varies across SIMD lanes runs lane by lane, a texel fetch is one gather (the
+// culling's cell pass took 34 ms at 1080p on sapphire before, 27-28 ms after).
+uniform samplerBuffer pyramid_texels;
 
 uniform mat4 view_projection;   // model camera
 uniform vec3 eye_position;      // model camera, render space
@@ -43,7 +46,7 @@ vec2 cut_range(ivec2 lo, ivec2 hi) {
     ivec2 a = min(lo >> level, size - 1), b = min(hi >> level, size - 1);
     for (int y = a.y; y <= b.y; ++y)
         for (int x = a.x; x <= b.x; ++x) {
-            vec2 r = pyramid[offset + y * size.x + x];
+            vec2 r = texelFetch(pyramid_texels, offset + y * size.x + x).rg;
             range = vec2(min(range.x, r.x), max(range.y, r.y));
         }
     return range;

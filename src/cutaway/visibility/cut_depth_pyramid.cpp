@@ -32,7 +32,16 @@ void CutDepthPyramid::build(const gl::Texture& cut_surface) {
             throw std::invalid_argument("cut image " + std::to_string(cut_surface.width()) + "x" +
                                         std::to_string(cut_surface.height()) + ": the culling pyramid holds at most " +
                                         std::to_string(max_pyramid_levels) + " levels");
+        GLint max_texels = 0;
+        glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
+        if (texels > std::size_t(max_texels))
+            throw std::invalid_argument("cut image " + std::to_string(cut_surface.width()) + "x" +
+                                        std::to_string(cut_surface.height()) + ": its culling pyramid needs " +
+                                        std::to_string(texels) + " texels, more than this GL's buffer textures hold (" +
+                                        std::to_string(max_texels) + ")");
+        texels_ = {};
         buffer_ = gl::Buffer(texels * sizeof(glm::vec2), nullptr);
+        texels_ = gl::BufferTexture(buffer_, GL_RG32F);
         width_ = width;
         height_ = height;
     }
@@ -51,7 +60,7 @@ void CutDepthPyramid::build(const gl::Texture& cut_surface) {
         p.use();
         const glm::ivec2 size = sizes_[std::size_t(level)];
         glDispatchCompute(gl::group_count(size.x, group_x), gl::group_count(size.y, group_y), 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);  // the next level, then the culling
     }
 }
 
@@ -60,7 +69,8 @@ void CutDepthPyramid::bind_for(const gl::Program& program) const {
     if (levels() > 0) {
         glProgramUniform2iv(program.id(), program.uniform("pyramid_sizes"), levels(), &sizes_[0].x);
         glProgramUniform1iv(program.id(), program.uniform("pyramid_offsets"), levels(), offsets_.data());
-        buffer_.bind_base(GL_SHADER_STORAGE_BUFFER, cut_pyramid_binding);
+        gl::set_uniform(program, "pyramid_texels", int(cut_pyramid_texture_unit));
+        texels_.bind(cut_pyramid_texture_unit);
     }
 }
 

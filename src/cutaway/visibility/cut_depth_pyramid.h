@@ -12,8 +12,10 @@
 
 namespace cutaway::pipeline {
 
-/// Storage binding of the pyramid buffer (shaders/visibility/*.comp).
+/// Storage binding of the pyramid buffer (visibility/cut_pyramid.comp writes it).
 inline constexpr unsigned cut_pyramid_binding = 13;
+/// Texture unit of the pyramid as an RG32F buffer texture (visibility/classify.glsl reads it).
+inline constexpr unsigned cut_pyramid_texture_unit = 17;
 /// Enough levels for a 65536-pixel side.
 inline constexpr int max_pyramid_levels = 16;
 
@@ -22,7 +24,8 @@ public:
     explicit CutDepthPyramid(const gl::ShaderLibrary& shaders);
     /// Rebuilds every level from `cut_surface` (RGBA32F, A = cut depth, 0 = nothing cut).
     void build(const gl::Texture& cut_surface);
-    /// Binds the buffer and sets `program`'s pyramid_levels, pyramid_sizes and pyramid_offsets.
+    /// Binds the pyramid's buffer texture and sets `program`'s pyramid_texels, pyramid_levels,
+    /// pyramid_sizes and pyramid_offsets.
     void bind_for(const gl::Program& program) const;
     int levels() const { return int(sizes_.size()); }
     glm::ivec2 level_size(int level) const { return sizes_[std::size_t(level)]; }
@@ -33,6 +36,7 @@ public:
 private:
     gl::Program first_, next_;
     gl::Buffer buffer_;
+    gl::BufferTexture texels_;  ///< buffer_ as RG32F texels
     int width_ = 0, height_ = 0;
     std::vector<glm::ivec2> sizes_;
     std::vector<int> offsets_;
