@@ -11,6 +11,7 @@
 #include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
+#include "gl/gl_context.h"
 #include "gl/gl_error.h"
 #include "grid/cell_geometry.h"
 #include "grid/face_classification.h"
@@ -102,6 +103,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       selection_(shaders, layout_, grid),
       centroid_(shaders),
       colour_map_(make_colour_map_texture()),
+      auto_sweep_from_(auto_sweep_from_primaries(gl::gl_renderer())),
       cut_(width, height),
       filtered_cut_(cut_, ShareResolved{}),
       rear_shell_(shaders, width, height),

@@ -14,7 +14,6 @@
 #include "cutaway/cone_field/cone_image.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_resolve.h"
-#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "cutaway/exposed_surface.h"
 #include "cutaway/frame_settings.h"
@@ -29,7 +28,6 @@
 #include "cutaway/selection/primary_centroid.h"
 #include "cutaway/secondary_pass.h"
 #include "cutaway/visibility/visible_faces.h"
-#include "gl/gl_context.h"
 #include "gl/image.h"
 #include "gl/stage_timer.h"
 #include "grid/corner_point_grid.h"
@@ -253,7 +251,7 @@ private:
     std::vector<std::uint8_t> primary_flags_;
     glm::vec3 primary_centroid_{0};                 ///< render space, mean of the primary cells' centres
     std::uint64_t primaries_of_all_renderers_ = 0;  ///< summed by the hooks, with the centroid
-    std::uint64_t auto_sweep_from_ = auto_sweep_from_primaries(gl::gl_renderer());
+    const std::uint64_t auto_sweep_from_;            ///< auto_sweep_from_primaries of this context's GL_RENDERER
     bool selection_on_cpu_ = false;
     std::size_t cut_readback_bytes_ = 0;
     std::uint64_t selection_generation_ = 0;  ///< counts selection changes

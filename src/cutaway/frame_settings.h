@@ -23,9 +23,9 @@ enum class Stage2Passes { one, two };
 struct FrameSettings {
     /// Cut-surface strategy (cut_surface_registry.h), or "auto" (the default, cut_strategy_choice.h):
     /// one frustum per IJK box of adjacent primaries (`frustum-clusters`: the same exposure as the
-    /// paper's per-cell `frustum`, a fraction of its cost) below 10,000 primary cells on a GPU and 500
-    /// on a software rasteriser, the frustum union in O(pixels) (`frustum-sweep`) from there; `frustum` is the paper's one frustum per
-    /// primary cell (Table 1 uses it).
+    /// paper's per-cell `frustum`, a fraction of its cost) below 10,000 primary cells on a GPU and
+    /// 500 on a software rasteriser, the frustum union in O(pixels) (`frustum-sweep`) from there;
+    /// `frustum` is the paper's one frustum per primary cell (Table 1 uses it).
     std::string strategy = "auto";
     DrawMode draw = DrawMode::visible;
     Stage2Passes stage2_passes = Stage2Passes::one;
