@@ -3,12 +3,24 @@
 // keep the one whose cone is highest here; on a tie the one it holds, then the first tap.
 // Texels: x = 1 + (qx | qy << 16), 0 = no owner; y = the owner's stored depth t as float bits.
 
-// Height at pixel p of an owner texel's cone (meaningless for no owner): t(q) - slope |q - p|,
-// the distance computed as the CPU reference does (sqrt(dx^2 + dy^2)).
-float owner_height(uvec2 owner, ivec2 p, float slope) {
-    uint q = owner.x - 1u;
-    vec2 d = vec2(ivec2(int(q & 0xffffu), int(q >> 16)) - p);
-    return uintBitsToFloat(owner.y) - slope * sqrt(d.x * d.x + d.y * d.y);
+// A texel with its owner decoded once (a pass evaluates each loaded texel at up to 4 pixels):
+// the owner's pixel and stored depth t as floats (integers below 2^24: exact).
+struct FloodOwner {
+    uvec2 texel;
+    vec2 at;
+    float depth;
+};
+
+FloodOwner flood_owner(uvec2 texel) {
+    uint q = texel.x - 1u;
+    return FloodOwner(texel, vec2(float(q & 0xffffu), float(q >> 16)), uintBitsToFloat(texel.y));
+}
+
+// Height at pixel p of an owner's cone (for no owner, see flood_take): t(q) - slope |q - p|, the
+// distance computed as the CPU reference does (sqrt(dx^2 + dy^2)).
+float owner_height(FloodOwner owner, vec2 p, float slope) {
+    vec2 d = owner.at - p;
+    return owner.depth - slope * sqrt(d.x * d.x + d.y * d.y);
 }
 
 // The reference's taps in its order, its own (0, 0) left out (it is already best). Its rows run
@@ -21,11 +33,16 @@ struct FloodBest {
     float height;
 };
 
-FloodBest flood_start(uvec2 own, ivec2 p, float slope) { return FloodBest(own, owner_height(own, p, slope)); }
+FloodBest flood_start(FloodOwner own, vec2 p, float slope) { return FloodBest(own.texel, owner_height(own, p, slope)); }
 
-// Selects, not branches: SIMD lanes on a CPU rasteriser stay together.
-FloodBest flood_take(FloodBest best, uvec2 owner, ivec2 p, float slope) {
+// No owner (x = 0, also what a tap outside the image reads) decodes as a seed at (65535, 65535) of
+// depth 0, whose height is below every owner's anywhere in an image of at most 32768 pixels a side
+// (slope > 0: t - slope |q - p| >= -slope |q - p| > -slope |(65535, 65535) - p|), so "higher"
+// alone keeps the reference's rule: an owner replaces no owner, no owner never replaces one, and
+// the same owner, or a different one of equal height, never replaces the one held. One compare
+// per tap, and selects, not branches: SIMD lanes on a CPU rasteriser stay together.
+FloodBest flood_take(FloodBest best, FloodOwner owner, vec2 p, float slope) {
     float candidate = owner_height(owner, p, slope);
-    bool take = owner.x != 0u && owner.x != best.owner.x && (best.owner.x == 0u || candidate > best.height);
-    return FloodBest(take ? owner : best.owner, take ? candidate : best.height);
+    bool take = candidate > best.height;
+    return FloodBest(take ? owner.texel : best.owner, take ? candidate : best.height);
 }

@@ -1,5 +1,6 @@
-// Jump flooding on the GPU: one compute pass per step (jfa_steps), ping-ponging two RG32UI
-// images of owners (seed position and stored depth per pixel, shaders/cut_surface/jump_flood.comp);
+// Jump flooding on the GPU: one compute pass per step (jfa_steps), ping-ponging two RGBA32UI
+// images of owners (seed position and stored depth per pixel, 2 pixels per texel,
+// shaders/cut_surface/jump_flood.comp);
 // the last pass stores each owner cone's height into a buffer copied into the cut depth (a fragment
 // pass writing it took 9-17 ms, the copy 2.7). On llvmpipe, image
 // loads with "0 = no owner" (out-of-image loads read 0: no bounds tests) and selects instead of
@@ -11,15 +12,23 @@
 // took 300 ms for sapphire's 11 passes against the compute passes' 135 ms; 128 x 8, 32 x 32 and
 // 8 x 8 groups were within noise of 64 x 4 (1920x1080, LP_NUM_THREADS=2).
 //
-// Each invocation floods a 2 x 2 block of pixels one step apart, so the block's 36 taps are 16
-// loads, and a quarter of the invocations store four pixels each: a pass of a small step took
-// 7.2-7.5 ms instead of 11.1-11.4 (sapphire, 1920x1080, LP_NUM_THREADS=2, alternating runs).
-// Where an axis has no partner a step further (its last partial span), a dispatch of its own
-// floods those pixels one per invocation along that axis, so no invocation is wasted. 4 x 2
-// blocks were slower (24 ms: more live registers than a SIMD lane set keeps), and so were several
-// small steps fused in shared memory (3 steps in 95 ms against 33), and so was a first pass
-// reading the seed image instead of an init pass's owners (20-35 ms against 9 + 9: texelFetch of
-// the depth texture with bounds tests costs more than the image loads).
+// Each invocation floods a texel of 2 horizontally adjacent pixels in 2 rows a step apart: their
+// 36 taps are 12 loads of 2 pixels and the 4 pixels are 2 stores. A step of 2k keeps a pixel's
+// taps in the same half of texels k apart, so the packing holds for every step (a step of 1
+// reads the texels beside). Where a row has no partner a step further (the last partial span),
+// a dispatch of its own floods it alone, so no invocation is wasted.
+// On llvmpipe a pass is bound by its image loads and stores, not by the cone arithmetic (passes
+// without the square root or without any height took as long), and a store costs several times
+// a load whatever its size (4 stores to one pixel took as long as to 4 pixels). Against the
+// layout before, one RG32UI texel per pixel and 2 x 2 blocks of pixels a step apart (16 loads
+// and 4 stores per 4 pixels): GPU jfa 165 -> 136 ms, jfa2 309-318 -> 257-262 ms (BM_cpu_path,
+// opharine 0.1%, 1920x1080, alternating processes, LP_NUM_THREADS=2). The 2 x 2 blocks had made
+// a small step's pass 7.2-7.5 ms instead of 11.1-11.4 for one pixel per invocation. Slower: one
+// row per invocation (4.5 loads per pixel: jfa2's stage 1 262 against 232 ms), 4 rows (646-825
+// against 253-320 ms: more live values than registers), 4 x 2 pixel blocks in the one-pixel
+// layout (24 ms a pass), several small steps fused in shared memory (3 steps in 95 ms against
+// 33), and a first pass reading the seed image instead of an init pass's owners (20-35 ms
+// against 9 + 9: texelFetch of the depth texture with bounds tests costs more than image loads).
 //
 // Against the CPU reference (cone_field/jump_flooding.h): the same steps, taps, comparisons and
 // tie-breaking, in float (stored depth units) where the reference uses double (depth units).
@@ -43,30 +52,32 @@ constexpr int group_x = 64, group_y = 4;  // jump_flood.comp's local size (GROUP
 
 gl::ShaderDefines group_defines() { return {{"GROUP_X", std::to_string(group_x)}, {"GROUP_Y", std::to_string(group_y)}}; }
 
-/// A flooding pass's programs by block: 1 or 2 pixels along x and along y. `last`: the last
-/// pass's, storing the cut instead of owners (CUT_OUT).
+/// A flooding pass's programs by block: 1 or 2 rows. `last`: the last pass's, storing the cut
+/// instead of owners (CUT_OUT).
 class BlockPrograms {
 public:
-    BlockPrograms(const gl::ShaderLibrary& shaders, bool last)
-        : programs_{build(shaders, last, 1, 1), build(shaders, last, 2, 1), build(shaders, last, 1, 2), build(shaders, last, 2, 2)} {}
-    const gl::Program& of(bool paired_x, bool paired_y) const { return programs_[std::size_t(paired_x) + 2 * std::size_t(paired_y)]; }
+    BlockPrograms(const gl::ShaderLibrary& shaders, bool last) : programs_{build(shaders, last, 1), build(shaders, last, 2)} {}
+    const gl::Program& of(bool paired_y) const { return programs_[std::size_t(paired_y)]; }
 
 private:
-    static gl::Program build(const gl::ShaderLibrary& shaders, bool last, int block_x, int block_y) {
+    static gl::Program build(const gl::ShaderLibrary& shaders, bool last, int block_y) {
         gl::ShaderDefines defines = group_defines();
-        defines.push_back({"BLOCK_X", std::to_string(block_x)});
         defines.push_back({"BLOCK_Y", std::to_string(block_y)});
         if (last) defines.push_back({"CUT_OUT", ""});
         return shaders.build({{GL_COMPUTE_SHADER, "cut_surface/jump_flood.comp"}}, defines);
     }
-    std::array<gl::Program, 4> programs_;
+    std::array<gl::Program, 2> programs_;
 };
+
+/// Texels of the owners image per row: 2 pixels each.
+int owner_columns(int width) { return (width + 1) / 2; }
 
 /// One flooding pass of `step`: a dispatch per region of jump_flood_regions.
 void flood(const BlockPrograms& programs, int step, float slope, int width, int height) {
-    for (const JumpFloodRegion& region : jump_flood_regions(width, height, step)) {
-        const gl::Program& program = programs.of(region.paired_x, region.paired_y);
+    for (const JumpFloodRegion& region : jump_flood_regions(owner_columns(width), height, step)) {
+        const gl::Program& program = programs.of(region.paired_y);
         gl::set_uniform(program, "slope", slope);
+        gl::set_uniform(program, "width", width);
         gl::set_uniform(program, "step_log2", std::countr_zero(unsigned(step)));
         gl::set_uniform(program, "origin", region.origin);
         gl::set_uniform(program, "invocations", region.invocations);
@@ -85,27 +96,27 @@ public:
 
     void run(const GpuConeInput& in, const CutTargets& targets) override {
         const int width = targets.depth.width(), height = targets.depth.height();
-        if (owners_[0].width() != width || owners_[0].height() != height)
-        {
-            for (gl::Texture& owners : owners_) owners = gl::Texture(GL_TEXTURE_2D, GL_RG32UI, width, height);
+        if (owners_[0].width() != owner_columns(width) || owners_[0].height() != height) {
+            for (gl::Texture& owners : owners_) owners = gl::Texture(GL_TEXTURE_2D, GL_RGBA32UI, owner_columns(width), height);
             cut_.resize(width, height);
         }
 
         const gl::Program& init = init_.prepare(in);
-        glBindImageTexture(0, owners_[0].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
+        gl::set_uniform(init, "width", width);
+        glBindImageTexture(0, owners_[0].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
         init.use();
-        glDispatchCompute(group_count(width, group_x), group_count(height, group_y), 1);
+        glDispatchCompute(group_count(owner_columns(width), group_x), group_count(height, group_y), 1);
 
         const std::vector<int> steps = cone_field::jfa_steps(variant_, width, height);
         int current = 0;
         for (std::size_t i = 0; i < steps.size(); ++i) {
             const bool last = i + 1 == steps.size();
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-            glBindImageTexture(1, owners_[std::size_t(current)].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+            glBindImageTexture(1, owners_[std::size_t(current)].id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32UI);
             if (last)
                 cut_.bind_image(0, GL_WRITE_ONLY);
             else
-                glBindImageTexture(0, owners_[std::size_t(1 - current)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
+                glBindImageTexture(0, owners_[std::size_t(1 - current)].id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
             flood(last ? last_passes_ : passes_, steps[i], in.slope, width, height);
             current = 1 - current;
         }

@@ -5,9 +5,9 @@
 namespace cutaway::pipeline {
 namespace {
 
-/// One axis of `extent` pixels: `pairs` pair starts (from 0) and the pixels [single_begin,
+/// One axis of `extent` rows: `pairs` pair starts (from 0) and the rows [single_begin,
 /// single_end) whose partner a step further lies outside the image. Whole spans of 2 x step pair
-/// all their pixels; in the last, partial span the first pixels pair as far as partners exist.
+/// all their rows; in the last, partial span the first rows pair as far as partners exist.
 struct AxisSplit {
     int pairs, single_begin, single_end;
 };
@@ -20,16 +20,12 @@ AxisSplit split_axis(int extent, int step) {
 
 }  // namespace
 
-std::vector<JumpFloodRegion> jump_flood_regions(int width, int height, int step) {
-    const AxisSplit x = split_axis(width, step), y = split_axis(height, step);
+std::vector<JumpFloodRegion> jump_flood_regions(int columns, int rows, int step) {
+    const AxisSplit y = split_axis(rows, step);
     std::vector<JumpFloodRegion> regions;
-    for (const bool paired_y : {true, false})
-        for (const bool paired_x : {true, false}) {
-            const glm::ivec2 invocations(paired_x ? x.pairs : x.single_end - x.single_begin,
-                                         paired_y ? y.pairs : y.single_end - y.single_begin);
-            if (invocations.x <= 0 || invocations.y <= 0) continue;
-            regions.push_back({paired_x, paired_y, {paired_x ? 0 : x.single_begin, paired_y ? 0 : y.single_begin}, invocations});
-        }
+    if (columns <= 0) return regions;
+    if (y.pairs > 0) regions.push_back({true, {0, 0}, {columns, y.pairs}});
+    if (y.single_end > y.single_begin) regions.push_back({false, {0, y.single_begin}, {columns, y.single_end - y.single_begin}});
     return regions;
 }
 
