@@ -51,8 +51,8 @@ uniform ivec2 invocations;  // the region's invocations (the last work groups' o
 // invocation i covers row i + (i / step) * step and that plus the step.
 int block_start(int id, int block) { return id + (block - 1) * ((id >> step_log2) << step_log2); }
 
-// The owner of the tap tx (-1, 0, 1) of the pixel `half` (0: left, 1: right) of the middle texel
-// of `row` (texels -m, 0, +m with m = max(1, step / 2)).
+// The owner at tap tx (-1, 0, 1) of pixel `half_index` (0: left, 1: right) of the middle texel of
+// `row`, which holds the texels -m, 0 and +m away, m = max(1, step / 2).
 FloodOwner tap_owner(FloodOwner row[3][2], int half_index, int tx) {
     int pixel = half_index + tx;  // for a step of 1: the pixel, counted from the middle texel's left one
     return step_log2 == 0 ? row[(pixel >> 1) + 1][pixel & 1] : row[tx + 1][half_index];
