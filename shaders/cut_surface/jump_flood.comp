@@ -25,11 +25,11 @@ layout(r32f, binding = 0) uniform writeonly imageBuffer cut_out;  // gl/float_im
 layout(rgba32ui, binding = 0) uniform writeonly uimage2D owners_out;
 #endif
 
-// A pixel's owner texel for the seed `seed` at pixel p (0: none).
-uvec2 seed_owner(ivec2 p, float seed) { return seed > 0.0 ? uvec2(1u + (uint(p.x) | uint(p.y) << 16), floatBitsToUint(seed)) : uvec2(0u); }
-
 #ifdef INIT
 #include "cut_surface/cone_seed.glsl"
+
+// A pixel's owner for the seed `seed` at pixel p (0: none).
+uvec2 seed_owner(ivec2 p, float seed) { return seed > 0.0 ? uvec2(1u + (uint(p.x) | uint(p.y) << 16), floatBitsToUint(seed)) : uvec2(0u); }
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);

@@ -1,9 +1,10 @@
 // The jump flooding rule at one pixel (jump_flood.comp; cone_field/jump_flooding.h, the CPU
 // reference): among the pixel's own owner and the 8 tapped ones, in the reference's tap order,
 // keep the one whose cone is highest here; on a tie the one it holds, then the first tap.
-// Texels: x = 1 + (qx | qy << 16), 0 = no owner; y = the owner's stored depth t as float bits.
+// A pixel's owner (its half of an owners texel, jump_flood.comp): x = 1 + (qx | qy << 16), 0 = no
+// owner; y = the owner's stored depth t as float bits.
 
-// A texel with its owner decoded once (a pass evaluates each loaded texel at up to 4 pixels):
+// A pixel's owner decoded once (a pass evaluates each loaded owner at up to 4 pixels):
 // the owner's pixel and stored depth t as floats (integers below 2^24: exact).
 struct FloodOwner {
     uvec2 texel;
@@ -11,9 +12,9 @@ struct FloodOwner {
     float depth;
 };
 
-FloodOwner flood_owner(uvec2 texel) {
-    uint q = texel.x - 1u;
-    return FloodOwner(texel, vec2(float(q & 0xffffu), float(q >> 16)), uintBitsToFloat(texel.y));
+FloodOwner flood_owner(uvec2 owner) {
+    uint q = owner.x - 1u;
+    return FloodOwner(owner, vec2(float(q & 0xffffu), float(q >> 16)), uintBitsToFloat(owner.y));
 }
 
 // Height at pixel p of an owner's cone (for no owner, see flood_take): t(q) - slope |q - p|, the

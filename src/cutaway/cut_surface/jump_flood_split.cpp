@@ -5,14 +5,14 @@
 namespace cutaway::pipeline {
 namespace {
 
-/// One axis of `extent` rows: `pairs` pair starts (from 0) and the rows [single_begin,
+/// `extent` rows: `pairs` pair starts (from 0) and the rows [single_begin,
 /// single_end) whose partner a step further lies outside the image. Whole spans of 2 x step pair
 /// all their rows; in the last, partial span the first rows pair as far as partners exist.
-struct AxisSplit {
+struct RowSplit {
     int pairs, single_begin, single_end;
 };
 
-AxisSplit split_axis(int extent, int step) {
+RowSplit split_rows(int extent, int step) {
     const int whole_spans = extent / (2 * step) * (2 * step);
     return {whole_spans / 2 + std::max(0, extent - step - whole_spans), std::max(whole_spans, extent - step),
             std::min(whole_spans + step, extent)};
@@ -21,7 +21,7 @@ AxisSplit split_axis(int extent, int step) {
 }  // namespace
 
 std::vector<JumpFloodRegion> jump_flood_regions(int columns, int rows, int step) {
-    const AxisSplit y = split_axis(rows, step);
+    const RowSplit y = split_rows(rows, step);
     std::vector<JumpFloodRegion> regions;
     if (columns <= 0) return regions;
     if (y.pairs > 0) regions.push_back({true, {0, 0}, {columns, y.pairs}});
