@@ -4,11 +4,7 @@ layout(location = 1) out vec4 out_normal_depth;  // model camera eye-space norma
 layout(location = 2) out uvec2 out_id;           // compact cell + 1, pixel flags
 layout(location = 3) out vec4 out_face_plane;    // world face normal, w = 1 + face class (secondaries, 0 elsewhere)
 
-const uint flag_primary = 1u;
-const uint flag_cut_fill = 2u;     // a cell's inside seen through the cut
-const uint flag_border = 4u;       // border line where a face meets the cut
-const uint flag_edge = 8u;         // cell edge line
-const uint flag_shell_cut = 16u;   // border line on a shell face
+#include "common/pixel_flags.glsl"
 
 uniform mat4 model_view;  // the model camera's view matrix
 

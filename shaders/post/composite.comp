@@ -18,7 +18,7 @@ uniform vec3 contour_colour;
 uniform float contour_jump;          // relative depth jump that makes a fold contour
 uniform vec3 background;
 
-const uint flag_primary = 1u;
+#include "common/pixel_flags.glsl"
 
 vec3 rgb_to_hsv(vec3 c) {
     vec4 K = vec4(0.0, -1.0 / 3.0, 2.0 / 3.0, -1.0);

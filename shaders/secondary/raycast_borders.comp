@@ -5,21 +5,17 @@
 // pass: on llvmpipe a full-screen triangle into a framebuffer without attachments cost 60 ms at
 // 1080p before its shader did anything.
 layout(local_size_x = 64, local_size_y = 4) in;
+#include "common/grid.glsl"
+#include "common/shading.glsl"
 #include "common/cut_lookup.glsl"
-#include "common/border_test.glsl"
-#include "common/line_style.glsl"
+#include "common/pixel_flags.glsl"
+#include "common/secondary_shading.glsl"
 
 layout(rgba32f, binding = 2) uniform readonly image2D face_plane;    // world face normal, w = 1 + face class (0: a primary; not cleared where id is 0)
 layout(rgba32f, binding = 3) uniform readonly image2D normal_depth;  // w: linear depth in the model camera
-uniform vec3 shell_cut_colour;
 uniform bool hide_internal_lines;  // no border lines on the cut fill (shell-cut lines stay)
 layout(rgba8, binding = 0) uniform image2D scene_colour;
 layout(rg32ui, binding = 1) uniform uimage2D scene_id;
-
-const uint face_class_shell = 3u;
-const uint flag_cut_fill = 2u;
-const uint flag_border = 4u;
-const uint flag_shell_cut = 16u;
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
@@ -32,11 +28,11 @@ void main() {
     float depth = imageLoad(normal_depth, texel).a;
     vec2 ndc = window / viewport_size * 2.0 - 1.0;
     vec3 world = (inverse_view * vec4(ndc / projection_scale * depth, -depth, 1.0)).xyz;
-    if (at_view_rear_shell(world, texel) || !raycast_border(window, world, plane.xyz)) return;  // secondary.frag
-    bool shell = uint(plane.w + 0.5) - 1u == face_class_shell;
-    if (!shell && hide_internal_lines && (id.y & flag_cut_fill) != 0u) return;
-    vec3 colour = shell ? shell_cut_colour : line_colour_on(imageLoad(scene_colour, texel).rgb);
+    if (!raycast_border_at(window, texel, world, plane.xyz)) return;
+    vec3 colour = imageLoad(scene_colour, texel).rgb;
+    uint flags = id.y;
+    colour_border(colour, flags, uint(plane.w + 0.5) - 1u, hide_internal_lines);
+    if (flags == id.y) return;
     imageStore(scene_colour, texel, vec4(colour, 1.0));
-    id.y |= shell ? (flag_border | flag_shell_cut) : flag_border;
-    imageStore(scene_id, texel, uvec4(id, 0u, 0u));
+    imageStore(scene_id, texel, uvec4(id.x, flags, 0u, 0u));
 }

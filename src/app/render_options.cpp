@@ -65,7 +65,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
                                                       {"secondaries", OnlyLayer::secondaries}});
     s.draw = parse_choice<DrawMode>("--draw", draw, {{"visible", DrawMode::visible}, {"all-faces", DrawMode::all_faces}});
     s.stage2_passes = parse_choice<Stage2Passes>("--stage2-passes", stage2_passes,
-                                                 {{"1", Stage2Passes::one}, {"2", Stage2Passes::two}});
+                                                 {{"1", Stage2Passes::one}, {"2", Stage2Passes::two}, {"deferred", Stage2Passes::deferred}});
     s.seeds = parse_choice<SeedSource>("--seeds", seeds, {{"boxes", SeedSource::boxes}, {"geometry", SeedSource::geometry}});
     for (float a : aperture)
         if (!(a >= 0 && a <= 180))
@@ -113,7 +113,7 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--draw", o.draw,
                  "stage 2 faces: visible (GPU culling against the frustum and the cut) | all-faces (the paper's path)");
     c.add_option("--stage2-passes", o.stage2_passes,
-                 "visible path: 1 (every fragment shaded, the default) | 2 (cut test and depth first, then shading once per pixel)");
+                 "visible path: deferred (the draw makes the cut test only, a compute pass shades each pixel once; the default) | 1 (every fragment shaded) | 2 (cut test and depth first, then the faces drawn again, shading once per pixel)");
     c.add_option("--seeds", o.seeds, "seeds of the distance-transform strategies: boxes|geometry");
     c.add_option("--border", o.border, "border lines: raycast|threshold");
     c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels")

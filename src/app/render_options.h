@@ -40,7 +40,7 @@ struct RenderOptions {
     std::string only = "both";
     std::string seeds = "boxes";
     std::string draw = "visible";
-    std::string stage2_passes = "1";
+    std::string stage2_passes = "deferred";
     std::vector<float> aperture{60, 60};  ///< full opening angles, degrees
     bool aperture_180 = false;
     std::vector<float> camera{35, 30, 0};

@@ -105,7 +105,6 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       colour_map_(make_colour_map_texture()),
       auto_sweep_from_(auto_sweep_from_primaries(gl::gl_renderer())),
       cut_(width, height),
-      filtered_cut_(cut_, ShareResolved{}),
       rear_shell_(shaders, width, height),
       scene_(width, height),
       post_(width, height),
@@ -219,8 +218,10 @@ float CutawayRenderer::rear_margin(const Camera& camera) const {
     return 1e-4f * float(frame_.radius()) + 4e-6f * (camera.far_plane - camera.near_plane);
 }
 
-void CutawayRenderer::resolve_cut(const CutTargets& targets, const FrameSettings& s, const Camera& cut_camera) {
-    cut_resolve_.apply(targets, cut_camera, s.see_through ? nullptr : &rear_shell_.depth(), rear_margin(cut_camera));
+void CutawayRenderer::resolve_cut(const gl::FloatImageBuffer* filtered, const FrameSettings& s, const Camera& cut_camera) {
+    const gl::Texture* rear_shell = s.see_through ? nullptr : &rear_shell_.depth();
+    if (filtered) cut_resolve_.apply(*filtered, cut_, cut_camera, rear_shell, rear_margin(cut_camera));
+    else cut_resolve_.apply(cut_, cut_camera, rear_shell, rear_margin(cut_camera));
 }
 
 const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera) {
@@ -231,7 +232,6 @@ const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera)
     return rear_shell_.depth();
 }
 
-const CutTargets& CutawayRenderer::active_cut() const { return last_filtered_ ? filtered_cut_ : cut_; }
 
 FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
     FrameTimes times = render_once(s, camera);
@@ -274,7 +274,7 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
             cut_strategy.render(inputs, cut_);
             cut_readback_bytes_ = cut_strategy.readback_bytes();
             if (!s.see_through) rear_shell_.render(buffers_, cut_camera);
-            if (!combined && !last_filtered_) resolve_cut(cut_, s, cut_camera);
+            if (!combined && !last_filtered_) resolve_cut(nullptr, s, cut_camera);
         });
         if (combined)
             gl::timed_stage(timer_, "cut_combine", [&] {
@@ -282,13 +282,13 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
                 if (!seeds_combined) images.push_back(&cut_.depth);
                 if (!s.see_through) images.push_back(&rear_shell_.depth());
                 if (!images.empty()) hooks_.combine_max(images);
-                if (!last_filtered_) resolve_cut(cut_, s, cut_camera);
+                if (!last_filtered_) resolve_cut(nullptr, s, cut_camera);
             });
         if (last_filtered_)
             gl::timed_stage(timer_, "mean_filter", [&] {
-                mean_filter_.apply(cut_, filtered_cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera,
-                                   mean_filter_reference_depth(frame_, cut_camera));
-                resolve_cut(filtered_cut_, s, cut_camera);
+                resolve_cut(&mean_filter_.filter(cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera,
+                                                 mean_filter_reference_depth(frame_, cut_camera)),
+                            s, cut_camera);
             });
         frozen_valid_ = frozen_camera_.has_value();
     }
@@ -296,12 +296,12 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
     const bool keep_view_rear = cut_drawn && frozen_camera_ && !s.see_through;
     if (cut_needed && s.draw == DrawMode::visible)
         gl::timed_stage(timer_, "culling", [&] {
-            visible_.select(buffers_, camera, cut_drawn ? &active_cut() : nullptr, cut_camera, keep_view_rear);
+            visible_.select(buffers_, camera, cut_drawn ? &cut_ : nullptr, cut_camera, keep_view_rear);
         });
     if (cut_needed && s.draw == DrawMode::all_faces) secondary_face_list();  // built on first use, untimed
     const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
     gl::timed_stage(timer_, "secondary", [&] {
-        const CutClip clip{active_cut(), cut_camera, keep_view_rear ? &render_view_rear_shell(camera) : nullptr,
+        const CutClip clip{cut_, cut_camera, keep_view_rear ? &render_view_rear_shell(camera) : nullptr,
                            rear_margin(camera)};
         scene_.clear();
         scene_.framebuffer.bind();
@@ -309,7 +309,6 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
         glDepthFunc(s.depth_ties_to_last ? GL_LEQUAL : GL_LESS);
         if (!cut_needed) return;
         secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, clip, scene_, s.draw);
-        if (s.border == BorderMode::raycast) secondary_.apply_raycast_borders(camera, scene_, s, clip);
     });
     gl::timed_stage(timer_, "primary", [&] {
         scene_.framebuffer.bind();
@@ -444,8 +443,7 @@ std::vector<float> CutawayRenderer::read_window_depth() const {
 }
 
 FloatImage CutawayRenderer::read_cut_depth() const {
-    const CutTargets& cut = active_cut();
-    return read_alpha(cut.surface, cut.surface.width(), cut.surface.height());
+    return read_alpha(cut_.surface, cut_.surface.width(), cut_.surface.height());
 }
 
 cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) const {

@@ -212,11 +212,11 @@ private:
     FrameTimes render_once(const FrameSettings& settings, const Camera& camera);
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
-    const CutTargets& active_cut() const;
     /// Render units the rear-shell clamp keeps in front of the rear shell seen from `camera`.
     float rear_margin(const Camera& camera) const;
-    /// Normals and rear-shell clamp of `targets`' cut, clamped in front of the rear shell (unless see_through).
-    void resolve_cut(const CutTargets& targets, const FrameSettings& settings, const Camera& cut_camera);
+    /// Normals and rear-shell clamp of the cut, clamped in front of the rear shell (unless
+    /// see_through), into cut_: from `filtered` (the mean filter's output) or, if null, cut_.depth.
+    void resolve_cut(const gl::FloatImageBuffer* filtered, const FrameSettings& settings, const Camera& cut_camera);
     /// Freeze view: the rear shell seen from the model `camera`, which stage 2 keeps (CutClip).
     /// Reuses rear_shell_ (only needed while the cut is made).
     const gl::Texture& render_view_rear_shell(const Camera& camera);
@@ -255,7 +255,7 @@ private:
     bool selection_on_cpu_ = false;
     std::size_t cut_readback_bytes_ = 0;
     std::uint64_t selection_generation_ = 0;  ///< counts selection changes
-    CutTargets cut_, filtered_cut_;
+    CutTargets cut_;  ///< the strategy's depth; the surface stage 2 reads, resolved from it or from its mean-filtered copy
     RearShellDepth rear_shell_;
     SceneTargets scene_;
     PostTargets post_;

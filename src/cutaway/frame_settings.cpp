@@ -13,7 +13,7 @@ const char* to_string(MeanFilterKernel kernel) {
 const char* to_string(SeedSource seeds) { return seeds == SeedSource::boxes ? "boxes" : "geometry"; }
 const char* to_string(DrawMode draw) { return draw == DrawMode::visible ? "visible" : "all-faces"; }
 const char* to_string(Stage2Passes passes) {
-    return passes == Stage2Passes::two ? "2" : "1";
+    return passes == Stage2Passes::deferred ? "deferred" : passes == Stage2Passes::two ? "2" : "1";
 }
 const char* to_string(OnlyLayer only) {
     switch (only) {

@@ -14,11 +14,13 @@ enum class SeedSource { boxes, geometry };
 /// Stage 2's faces: `visible` (a GPU culling pass picks the faces that can reach a pixel, SPEC.md
 /// section 6) or `all_faces` (every face of every secondary cell, the paper's path).
 enum class DrawMode { visible, all_faces };
-/// Stage 2's passes on the visible path: `one` = every fragment shaded, as all-faces draws; `two`
-/// = the cut test and depth first, then shading once per pixel (secondary/nearest_face.frag).
-/// One is the default: on llvmpipe, once the culling drops the faces entirely in front of the cut,
-/// the second pass's triangle set-up costs about what it saves (README, issue 14).
-enum class Stage2Passes { one, two };
+/// Stage 2's passes on the visible path: `deferred` (the default) = the draw makes the cut test
+/// only and leaves the nearest kept fragment's cell, face and edge line, then a compute pass shades
+/// each visible pixel once (secondary/deferred_shading.comp); `one` = every fragment shaded, as
+/// all-faces draws; `two` = the cut test and depth first (secondary/nearest_face.frag), then the
+/// faces drawn again, shading once per pixel (on llvmpipe the second draw's triangle set-up costs
+/// about what it saves; README, issue 14).
+enum class Stage2Passes { one, two, deferred };
 
 struct FrameSettings {
     /// Cut-surface strategy (cut_surface_registry.h), or "auto" (the default, cut_strategy_choice.h):
@@ -28,7 +30,7 @@ struct FrameSettings {
     /// `frustum` is the paper's one frustum per primary cell (Table 1 uses it).
     std::string strategy = "auto";
     DrawMode draw = DrawMode::visible;
-    Stage2Passes stage2_passes = Stage2Passes::one;
+    Stage2Passes stage2_passes = Stage2Passes::deferred;
     SeedSource seeds = SeedSource::boxes;  ///< seeds of the distance-transform strategies
     /// Full opening angles (the paper's aperture), degrees 0..180: each wall leans out by half of
     /// it from the view ray (shaders/cut_surface/frustum.geom); 180: flat walls.

@@ -8,30 +8,17 @@ namespace {
 const float zero[4] = {0, 0, 0, 0};
 const GLuint zero_id[4] = {0, 0, 0, 0};
 const float far_depth = 1.0f;
-
-void attach_cut(CutTargets& targets) {
-    targets.framebuffer.attach(GL_COLOR_ATTACHMENT0, targets.surface);
-    targets.framebuffer.attach(GL_COLOR_ATTACHMENT1, targets.rear_clamp);
-    targets.framebuffer.attach(GL_DEPTH_ATTACHMENT, targets.depth);
-    const std::array<GLenum, 2> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    targets.framebuffer.finish(buffers, "cut surface");
-}
 }  // namespace
 
 CutTargets::CutTargets(int width, int height)
-    : own_surface_(GL_TEXTURE_2D, GL_RGBA32F, width, height),
-      own_rear_clamp_(GL_TEXTURE_2D, GL_R8, width, height),
-      surface(own_surface_),
-      rear_clamp(own_rear_clamp_),
+    : surface(GL_TEXTURE_2D, GL_RGBA32F, width, height),
+      rear_clamp(GL_TEXTURE_2D, GL_R8, width, height),
       depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
-    attach_cut(*this);
-}
-
-CutTargets::CutTargets(const CutTargets& resolved, ShareResolved)
-    : surface(resolved.surface),
-      rear_clamp(resolved.rear_clamp),
-      depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, resolved.depth.width(), resolved.depth.height()) {
-    attach_cut(*this);
+    framebuffer.attach(GL_COLOR_ATTACHMENT0, surface);
+    framebuffer.attach(GL_COLOR_ATTACHMENT1, rear_clamp);
+    framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+    const std::array<GLenum, 2> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    framebuffer.finish(buffers, "cut surface");
 }
 
 void CutTargets::clear() const {
@@ -56,6 +43,11 @@ SceneTargets::SceneTargets(int width, int height)
     const std::array<GLenum, 4> buffers{GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2,
                                         GL_COLOR_ATTACHMENT3};
     framebuffer.finish(buffers, "scene");
+    deferred_framebuffer.attach(GL_COLOR_ATTACHMENT2, id);
+    deferred_framebuffer.attach(GL_COLOR_ATTACHMENT3, face_plane);
+    deferred_framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
+    const std::array<GLenum, 4> deferred_buffers{GL_NONE, GL_NONE, GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+    deferred_framebuffer.finish(deferred_buffers, "deferred scene");
     plain_framebuffer.attach(GL_COLOR_ATTACHMENT0, colour);
     plain_framebuffer.attach(GL_COLOR_ATTACHMENT2, id);
     plain_framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);

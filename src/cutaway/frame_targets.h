@@ -6,30 +6,19 @@
 
 namespace cutaway::pipeline {
 
-/// Tag of CutTargets' constructor that shares the resolved textures.
-struct ShareResolved {};
-
 /// Stage 1 output: RGBA32F normal (world) + depth along the cut camera's axis, an R8 flag where
 /// the cut is clamped at the rear shell, and the depth buffer of the union (cleared to 0,
 /// GL_GREATER). SPEC.md's texture of cut positions is not kept: nothing reads positions but the
 /// resolve's normals, which rebuild them from the depth (as SSAO does from the scene's depth),
-/// and it cost 16 bytes per pixel, twice (the cut and its filtered copy).
+/// and it cost 16 bytes per pixel.
 ///
-/// The strategy's cut and its mean-filtered copy each have their own depth, and share one
-/// resolved surface and rear-clamp flag: a frame resolves only the cut it uses (the filtered one
-/// when the filter is on), so a second pair would only hold what nothing reads (17 bytes per
-/// pixel, 35 MB at 1080p).
+/// The mean-filtered cut has no targets of its own: the resolve reads the filter's output buffer
+/// (MeanFilter::filter) and writes this surface and flag, which stage 2 reads either way (a
+/// filtered copy of the targets cost 4 bytes per pixel and two copies of the depth image).
 struct CutTargets {
     CutTargets(int width, int height);
-    /// The same size as `resolved`, a depth of its own, `resolved`'s surface and rear_clamp.
-    CutTargets(const CutTargets& resolved, ShareResolved);
-
-private:
-    gl::Texture own_surface_, own_rear_clamp_;  ///< empty when shared
-
-public:
-    const gl::Texture& surface;
-    const gl::Texture& rear_clamp;  ///< R8: 1 where the cut is the clamp in front of the rear shell
+    gl::Texture surface;
+    gl::Texture rear_clamp;  ///< R8: 1 where the cut is the clamp in front of the rear shell
     gl::Texture depth;
     gl::Framebuffer framebuffer;
     /// Clears to "nothing cut" (depth 0 everywhere).
@@ -52,12 +41,15 @@ struct SceneTargets {
     gl::Texture colour;        ///< RGBA8, where id is not 0
     gl::Texture normal_depth;  ///< RGBA32F (0 = background)
     gl::Texture id;            ///< RG32UI: compact cell + 1 (0 = background), flags
-    gl::Texture face_plane;    ///< RGBA32F where id is not 0: world normal of the visible secondary face, w = 1 + face class (0 on primaries)
+    gl::Texture face_plane;    ///< RGBA32F where id is not 0: world normal of the visible secondary face, w = 1 + face class (0 on primaries); deferred: w = linear depth
     gl::Texture depth;         ///< DEPTH32F
     gl::Framebuffer framebuffer;
     /// Stage 2's first pass on the visible path with --stage2-passes 2 (allocated at its first
     /// use: 4 bytes per pixel a one-pass frame does not need).
     const NearestFaceTarget& nearest_face() const;
+    /// Stage 2's draw with --stage2-passes deferred (secondary.frag, DEFERRED): id and
+    /// face_plane only (12 of the G-buffer's 24 bytes per pixel written per fragment), depth.
+    gl::Framebuffer deferred_framebuffer;
     /// The plain frame's (`--baseline`): colour, id and depth only (secondary/plain.frag), so a
     /// frame without a cut writes 12 bytes per pixel instead of the G-buffer's 48.
     gl::Framebuffer plain_framebuffer;

@@ -9,7 +9,8 @@ SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
     : programs_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/secondary.frag"}}),
       nearest_face_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/nearest_face.frag"}}),
       plain_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/plain.frag"}}),
-      borders_(shaders, {{GL_COMPUTE_SHADER, "secondary/raycast_borders.comp"}}) {}
+      borders_(shaders, {{GL_COMPUTE_SHADER, "secondary/raycast_borders.comp"}}),
+      deferred_(shaders, {{GL_COMPUTE_SHADER, "secondary/deferred_shading.comp"}}) {}
 
 namespace {
 /// The uniforms of shaders/common/cut_lookup.glsl; `camera`: the model camera.
@@ -37,21 +38,38 @@ gl::ShaderDefines view_rear_shell_define(const CutClip& clip) {
 }
 }  // namespace
 
-void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
-                                          const CutClip& clip) {
+namespace {
+/// Whether the cut was made from the model camera itself (the view is not frozen).
+bool cut_camera_is_view(const Camera& camera, const CutClip& clip) {
     const Camera& cut_camera = clip.cut_camera;
-    const bool cut_camera_is_view = cut_camera.view == camera.view && cut_camera.projection == camera.projection &&
-                                    cut_camera.width == camera.width && cut_camera.height == camera.height;
-    gl::ShaderDefines defines = view_rear_shell_define(clip);
-    if (cut_camera_is_view) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
-    const gl::Program& p = borders_.get(defines);
-    set_cut_lookup(p, clip, camera);
+    return cut_camera.view == camera.view && cut_camera.projection == camera.projection &&
+           cut_camera.width == camera.width && cut_camera.height == camera.height;
+}
+
+/// The uniforms of shaders/common/secondary_shading.glsl's ray-cast border test.
+void set_border_uniforms(const gl::Program& p, const Camera& camera, const FrameSettings& settings) {
     gl::set_uniform(p, "inverse_view_projection", glm::inverse(camera.view_projection()));
     gl::set_uniform(p, "inverse_view", glm::inverse(camera.view));
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
+}
+
+/// One invocation per pixel of `camera`'s image (raycast_borders.comp's and deferred_shading.comp's 64 x 4).
+void dispatch_per_pixel(const Camera& camera) {
+    glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+}
+}  // namespace
+
+void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
+                                          const CutClip& clip) {
+    gl::ShaderDefines defines = view_rear_shell_define(clip);
+    if (cut_camera_is_view(camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    const gl::Program& p = borders_.get(defines);
+    set_cut_lookup(p, clip, camera);
+    set_border_uniforms(p, camera, settings);
     gl::set_uniform(p, "hide_internal_lines", settings.hide_internal_lines);
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
@@ -59,8 +77,27 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     gl::wait_for_draws_before_image_loads();
     p.use();
-    glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);  // raycast_borders.comp's 64 x 4
-    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    dispatch_per_pixel(camera);
+}
+
+void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSettings& settings, const CutClip& clip,
+                                   const SceneTargets& scene) {
+    const Camera& camera = context.camera;
+    gl::ShaderDefines defines = view_rear_shell_define(clip);
+    defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
+    if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
+    if (cut_camera_is_view(camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    const gl::Program& p = deferred_.get(defines);
+    prepare_face_program(p, context);
+    set_cut_lookup(p, clip, camera);
+    set_border_uniforms(p, camera, settings);
+    gl::set_uniform(p, "focal_px", camera.focal_px());
+    glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
+    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::wait_for_draws_before_image_loads();
+    dispatch_per_pixel(camera);
 }
 
 void SecondaryPass::draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
@@ -70,6 +107,17 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     const gl::ShaderDefines nearest_defines = defines;
     defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
     if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
+    if (draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::deferred) {
+        defines.emplace_back("DEFERRED", "");
+        const gl::Program& p = programs_.get(defines);
+        prepare_face_program(p, context);
+        set_cut_lookup(p, clip, context.camera);
+        gl::set_uniform(p, "line_width", settings.line_width_px);
+        scene.deferred_framebuffer.bind();
+        submit();
+        shade_deferred(context, settings, clip, scene);
+        return;
+    }
     const bool two_passes = draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::two;
     GLint depth_function = GL_LESS;
     if (two_passes) {
@@ -95,9 +143,11 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
     submit();
-    if (!two_passes) return;
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GLenum(depth_function));
+    if (two_passes) {
+        glDepthMask(GL_TRUE);
+        glDepthFunc(GLenum(depth_function));
+    }
+    if (settings.border == BorderMode::raycast) apply_raycast_borders(context.camera, scene, settings, clip);
 }
 
 void SecondaryPass::draw_plain(const FaceDrawContext& context, const std::function<void()>& submit,

@@ -23,11 +23,13 @@ class SecondaryPass {
 public:
     explicit SecondaryPass(const gl::ShaderLibrary& shaders);
     /// Sets up the secondary program, then `submit` issues the face draw (a face list or the
-    /// culling pass's indirect draw) into `scene`'s framebuffer, clipped by `clip`, under the
-    /// depth function the caller set. `draw` visible with settings.stage2_passes two: the cut test
-    /// and depth first (SceneTargets::nearest_face), then shading
-    /// once per pixel (GL_EQUAL, the first pass's face only); otherwise, and always for
-    /// all_faces, one pass with every fragment shaded, as the paper drew it.
+    /// culling pass's indirect draw) into `scene`, clipped by `clip`, under the depth function the
+    /// caller set, and draws the border lines. `draw` visible with settings.stage2_passes:
+    /// deferred: the cut test only, into SceneTargets::deferred_framebuffer, then each visible
+    /// pixel shaded once by a compute pass (ray-cast borders included); two: the cut test and
+    /// depth first (SceneTargets::nearest_face), then shading once per pixel (GL_EQUAL, the first
+    /// pass's face only); one, and always for all_faces: one pass with every fragment shaded, as
+    /// the paper drew it.
     void draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
               const CutClip& clip, const SceneTargets& scene, DrawMode draw);
     /// The plain frame (no cut): `submit`'s faces shaded with their edges into the bound plain
@@ -35,15 +37,20 @@ public:
     /// visible = ExposedSurface's faces with stored corners, all_faces = every face's records.
     void draw_plain(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
                     DrawMode draw);
-    /// Ray-cast borders over the visible secondary pixels of `scene` (after draw, ray-cast mode).
-    void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
-                               const CutClip& clip);
 
 private:
+    /// Ray-cast borders over the visible secondary pixels of `scene` (after a shaded draw).
+    void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
+                               const CutClip& clip);
+    /// Stage 2's deferred shading (secondary/deferred_shading.comp) after the DEFERRED draw.
+    void shade_deferred(const FaceDrawContext& context, const FrameSettings& settings, const CutClip& clip,
+                        const SceneTargets& scene);
+
     gl::ProgramCache programs_;
     gl::ProgramCache nearest_face_;
     gl::ProgramCache plain_;
     gl::ProgramCache borders_;
+    gl::ProgramCache deferred_;
 };
 
 }  // namespace cutaway::pipeline

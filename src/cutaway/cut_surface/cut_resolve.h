@@ -17,6 +17,10 @@ public:
     /// render units in front of it wherever both exist.
     void apply(const CutTargets& targets, const Camera& cut_camera, const gl::Texture* rear_shell = nullptr,
                float rear_margin = 0);
+    /// The same from a depth image already in an image buffer (stored depth, as MeanFilter::filter
+    /// returns it) instead of targets.depth: no copy.
+    void apply(const gl::FloatImageBuffer& depth, const CutTargets& targets, const Camera& cut_camera,
+               const gl::Texture* rear_shell = nullptr, float rear_margin = 0);
 
 private:
     gl::Program program_;

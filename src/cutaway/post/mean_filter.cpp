@@ -11,7 +11,8 @@ namespace cutaway::pipeline {
 // texture: the 9x9 kernel's two passes with their copies take 17-18 ms and the compute resolve
 // after them 26-29 ms, where the fragment passes and resolve took 93-98 ms together (the
 // mean_filter stage: 45-54 ms now; sapphire and petra at 1920x1080, LP_NUM_THREADS=2,
-// alternating runs). The frame is byte-identical (the same taps, sums in the same order;
+// alternating runs). The frame's resolve reads the filter's output buffer as it is (filter()),
+// without copying it into a depth texture and back. The frame is byte-identical (the same taps, sums in the same order;
 // MeanFilter.EqualsTheBoxMeanOnRandomDepthImages checks the mean itself).
 MeanFilter::MeanFilter(const gl::ShaderLibrary& shaders) : programs_(shaders, {{GL_COMPUTE_SHADER, "post/mean_filter.comp"}}) {}
 
@@ -34,8 +35,8 @@ const gl::Program& MeanFilter::program(int size, MeanFilterKernel kernel, int ax
     return p;
 }
 
-void MeanFilter::apply(const CutTargets& input, const CutTargets& output, int size, MeanFilterKernel kernel,
-                       const Camera& cut_camera, float reference_depth) {
+const gl::FloatImageBuffer& MeanFilter::filter(const CutTargets& input, int size, MeanFilterKernel kernel,
+                                               const Camera& cut_camera, float reference_depth) {
     const int width = cut_camera.width, height = cut_camera.height;
     const bool reads_unfiltered = kernel == MeanFilterKernel::distance_scaled;  // in both passes (radius_at)
     unfiltered_.resize(width, height);
@@ -57,7 +58,8 @@ void MeanFilter::apply(const CutTargets& input, const CutTargets& output, int si
     columns_out.bind_image(1, GL_WRITE_ONLY);
     program(size, kernel, 1, cut_camera, reference_depth).use();
     glDispatchCompute(groups_x, groups_y, 1);
-    columns_out.write_depth(output.depth);
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    return columns_out;
 }
 
 }  // namespace cutaway::pipeline

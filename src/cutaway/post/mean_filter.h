@@ -29,10 +29,16 @@ float mean_filter_reference_depth(const ModelFrame& frame, const Camera& cut_cam
 class MeanFilter {
 public:
     explicit MeanFilter(const gl::ShaderLibrary& shaders);
-    /// Filters input.depth into output.depth (same size) with an odd kernel `size` >= 3;
-    /// `reference_depth`: d_ref of the distance-scaled kernel (unused by the others).
+    /// Filters input.depth with an odd kernel `size` >= 3 into the returned image buffer (stored
+    /// depth, valid until the next call); `reference_depth`: d_ref of the distance-scaled kernel
+    /// (unused by the others). CutResolve reads the buffer as it is.
+    const gl::FloatImageBuffer& filter(const CutTargets& input, int size, MeanFilterKernel kernel, const Camera& cut_camera,
+                                       float reference_depth);
+    /// The same, copied into output.depth (same size).
     void apply(const CutTargets& input, const CutTargets& output, int size, MeanFilterKernel kernel,
-               const Camera& cut_camera, float reference_depth);
+               const Camera& cut_camera, float reference_depth) {
+        filter(input, size, kernel, cut_camera, reference_depth).write_depth(output.depth);
+    }
 
 private:
     const gl::Program& program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera, float reference_depth);
