@@ -17,11 +17,13 @@ void check_size(const Texture& texture, int width, int height, const char* what)
 
 void FloatImageBuffer::resize(int width, int height) {
     if (width == width_ && height == height_) return;
-    view_ = BufferTexture();  // before the storage it views
+    view_ = BufferTexture();  // before the storage they view
+    quad_view_ = BufferTexture();
     buffer_ = Buffer(std::size_t(width) * std::size_t(height) * sizeof(float), nullptr);
     view_ = BufferTexture(buffer_, GL_R32F);
     width_ = width;
     height_ = height;
+    if (has_quad_view()) quad_view_ = BufferTexture(buffer_, GL_RGBA32F);
 }
 
 void FloatImageBuffer::read_depth(const Texture& depth) const {
@@ -41,6 +43,12 @@ void FloatImageBuffer::write_depth(const Texture& depth) const {
 
 void FloatImageBuffer::bind_image(GLuint unit, GLenum access) const {
     glBindImageTexture(unit, view_.id(), 0, GL_FALSE, 0, access, GL_R32F);
+}
+
+void FloatImageBuffer::bind_quad_image(GLuint unit, GLenum access) const {
+    if (!has_quad_view())
+        throw std::logic_error("FloatImageBuffer::bind_quad_image: width " + std::to_string(width_) + " is not a multiple of 4");
+    glBindImageTexture(unit, quad_view_.id(), 0, GL_FALSE, 0, access, GL_RGBA32F);
 }
 
 }  // namespace cutaway::gl

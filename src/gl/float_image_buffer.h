@@ -22,11 +22,18 @@ public:
     void write_depth(const Texture& depth) const;
     /// Binds the image as image unit `unit` (format r32f) with `access` (GL_READ_ONLY, ...).
     void bind_image(GLuint unit, GLenum access) const;
+    /// Whether a row is a whole number of 4-pixel texels (the width is a multiple of 4).
+    bool has_quad_view() const { return width_ % 4 == 0; }
+    /// Binds the same image as rgba32f texels of 4 horizontally adjacent pixels (width / 4 per
+    /// row; only if has_quad_view()): on llvmpipe an image load or store costs about the same
+    /// whatever its size, so a pass that reads or writes 4 pixels at once makes a quarter of the calls.
+    void bind_quad_image(GLuint unit, GLenum access) const;
 
 private:
     int width_ = 0, height_ = 0;
     Buffer buffer_;
-    BufferTexture view_;  ///< R32F texels of buffer_
+    BufferTexture view_;       ///< R32F texels of buffer_
+    BufferTexture quad_view_;  ///< RGBA32F texels of buffer_, when has_quad_view()
 };
 
 }  // namespace cutaway::gl

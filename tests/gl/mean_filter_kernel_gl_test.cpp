@@ -53,14 +53,14 @@ cone_field::FloatImage box_mean(const cone_field::FloatImage& image, int size, i
     return out;
 }
 
-TEST(MeanFilter, EqualsTheBoxMeanOnRandomDepthImages) {
+void check_box_mean(int image_width) {
     // Odd sizes (edges clamped on every side), a quarter of the pixels with nothing cut (0, which
     // the filter averages like any depth). The camera has near = 0, so stored depth s / far is
     // linear in s and the stored mean is the mean of the depths. Tolerance: the GPU sums k floats
     // per pass in float, the CPU in double: k + 2 roundings of values <= 1 (2^-24 each) per pass,
     // times far for depth units.
     pipeline::Camera camera;
-    camera.width = 97;
+    camera.width = image_width;
     camera.height = 61;
     camera.near_plane = 0.0f;
     camera.far_plane = 100.0f;
@@ -91,6 +91,10 @@ TEST(MeanFilter, EqualsTheBoxMeanOnRandomDepthImages) {
         EXPECT_LE(largest, tolerance);
     }
 }
+
+TEST(MeanFilter, EqualsTheBoxMeanOnRandomDepthImages) { check_box_mean(97); }
+// A width of whole 4-pixel texels: the full kernel takes 4 pixels per invocation (QUADS).
+TEST(MeanFilter, EqualsTheBoxMeanFourPixelsAtATime) { check_box_mean(96); }
 
 TEST(MeanFilterKernel, DistanceScaledIsTheFullKernelNearAndSharperOnFarWalls) {
     auto renderer = make_renderer(petra(), width, height);

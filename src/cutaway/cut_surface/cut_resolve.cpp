@@ -5,7 +5,7 @@
 
 namespace cutaway::pipeline {
 
-CutResolve::CutResolve(const gl::ShaderLibrary& shaders) : program_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/resolve.comp"}})) {}
+CutResolve::CutResolve(const gl::ShaderLibrary& shaders) : programs_(shaders, {{GL_COMPUTE_SHADER, "cut_surface/resolve.comp"}}) {}
 
 void CutResolve::apply(const CutTargets& targets, const Camera& cut_camera, const gl::Texture* rear_shell,
                        float rear_margin) {
@@ -17,27 +17,34 @@ void CutResolve::apply(const CutTargets& targets, const Camera& cut_camera, cons
 void CutResolve::apply(const gl::FloatImageBuffer& depth, const CutTargets& targets, const Camera& cut_camera,
                        const gl::Texture* rear_shell, float rear_margin) {
     const int width = cut_camera.width, height = cut_camera.height;
+    // 4 pixels per invocation where a row is whole 4-pixel texels (resolve.comp QUADS).
+    const bool quads = depth.has_quad_view();
+    const gl::Program& program = programs_.get(quads ? gl::ShaderDefines{{"QUADS", ""}} : gl::ShaderDefines{});
     const glm::mat4 inverse_view = glm::inverse(cut_camera.view);
-    gl::set_uniform(program_, "inverse_cut_view", inverse_view);
-    gl::set_uniform(program_, "cut_camera_position", glm::vec3(inverse_view[3]));
-    gl::set_uniform(program_, "projection_scale", glm::vec2(cut_camera.projection[0][0], cut_camera.projection[1][1]));
-    gl::set_uniform(program_, "cut_size", glm::ivec2(width, height));
-    gl::set_uniform(program_, "cut_near", cut_camera.near_plane);
-    gl::set_uniform(program_, "cut_far", cut_camera.far_plane);
-    gl::set_uniform(program_, "clamp_to_rear_shell", rear_shell != nullptr);
-    gl::set_uniform(program_, "rear_margin", rear_margin);
-    depth.bind_image(0, GL_READ_ONLY);
+    gl::set_uniform(program, "inverse_cut_view", inverse_view);
+    gl::set_uniform(program, "cut_camera_position", glm::vec3(inverse_view[3]));
+    gl::set_uniform(program, "projection_scale", glm::vec2(cut_camera.projection[0][0], cut_camera.projection[1][1]));
+    gl::set_uniform(program, "cut_size", glm::ivec2(width, height));
+    gl::set_uniform(program, "cut_near", cut_camera.near_plane);
+    gl::set_uniform(program, "cut_far", cut_camera.far_plane);
+    gl::set_uniform(program, "clamp_to_rear_shell", rear_shell != nullptr);
+    gl::set_uniform(program, "rear_margin", rear_margin);
     if (rear_shell) {
         rear_shell_.resize(width, height);
         rear_shell_.read_depth(*rear_shell);
-        rear_shell_.bind_image(1, GL_READ_ONLY);
+    }
+    const gl::FloatImageBuffer& rear = rear_shell ? rear_shell_ : depth;  // not read without a rear shell, but bound
+    if (quads) {
+        depth.bind_quad_image(4, GL_READ_ONLY);
+        rear.bind_quad_image(5, GL_READ_ONLY);
     } else {
-        depth.bind_image(1, GL_READ_ONLY);  // not read (clamp_to_rear_shell false), but bound
+        depth.bind_image(0, GL_READ_ONLY);
+        rear.bind_image(1, GL_READ_ONLY);
     }
     glBindImageTexture(2, targets.surface.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(3, targets.rear_clamp.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
-    program_.use();
-    glDispatchCompute(gl::group_count(width, 64), gl::group_count(height, 4), 1);  // resolve.comp's 64 x 4
+    program.use();
+    glDispatchCompute(gl::group_count(quads ? width / 4 : width, 64), gl::group_count(height, 4), 1);  // resolve.comp's 64 x 4
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 

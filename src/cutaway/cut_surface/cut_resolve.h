@@ -5,7 +5,7 @@
 #include "cutaway/camera.h"
 #include "cutaway/frame_targets.h"
 #include "gl/float_image_buffer.h"
-#include "gl/shader_library.h"
+#include "gl/program_cache.h"
 
 namespace cutaway::pipeline {
 
@@ -23,7 +23,7 @@ public:
                const gl::Texture* rear_shell = nullptr, float rear_margin = 0);
 
 private:
-    gl::Program program_;
+    gl::ProgramCache programs_;  ///< resolve.comp, one pixel or 4 (QUADS) per invocation
     gl::FloatImageBuffer depth_, rear_shell_;  ///< the depth images as the pass reads them
 };
 

@@ -22,8 +22,9 @@ float mean_filter_reference_depth(const ModelFrame& frame, const Camera& cut_cam
 }
 
 const gl::Program& MeanFilter::program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera,
-                                       float reference_depth) {
+                                       float reference_depth, bool quads) {
     gl::ShaderDefines defines{{"KERNEL", std::to_string(size)}, {"AXIS", std::to_string(axis)}};
+    if (quads) defines.emplace_back("QUADS", "");
     if (kernel == MeanFilterKernel::sampled) defines.emplace_back("SAMPLED", "");
     if (kernel == MeanFilterKernel::distance_scaled) defines.emplace_back("DISTANCE_SCALED", "");
     const gl::Program& p = programs_.get(defines);
@@ -43,20 +44,26 @@ const gl::FloatImageBuffer& MeanFilter::filter(const CutTargets& input, int size
     rows_.resize(width, height);
     if (reads_unfiltered) filtered_.resize(width, height);
     const gl::FloatImageBuffer& columns_out = reads_unfiltered ? filtered_ : unfiltered_;
-    const unsigned groups_x = gl::group_count(width, 64), groups_y = gl::group_count(height, 4);  // mean_filter.comp's 64 x 4
+    // The full kernel takes 4 pixels per invocation where a row is whole 4-pixel texels.
+    const bool quads = kernel == MeanFilterKernel::full && unfiltered_.has_quad_view();
+    const unsigned groups_x = gl::group_count(quads ? width / 4 : width, 64), groups_y = gl::group_count(height, 4);  // mean_filter.comp's 64 x 4
+    const auto bind = [quads](const gl::FloatImageBuffer& image, GLuint unit, GLenum access) {
+        if (quads) image.bind_quad_image(unit, access);
+        else image.bind_image(unit, access);
+    };
 
     unfiltered_.read_depth(input.depth);
     unfiltered_.bind_image(2, GL_READ_ONLY);  // the distance-scaled kernel's radius, in both passes
     // Pass 1: along x into rows_.
-    unfiltered_.bind_image(0, GL_READ_ONLY);
-    rows_.bind_image(1, GL_WRITE_ONLY);
-    program(size, kernel, 0, cut_camera, reference_depth).use();
+    bind(unfiltered_, 0, GL_READ_ONLY);
+    bind(rows_, 1, GL_WRITE_ONLY);
+    program(size, kernel, 0, cut_camera, reference_depth, quads).use();
     glDispatchCompute(groups_x, groups_y, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    // Pass 2: along y, then into output.depth.
-    rows_.bind_image(0, GL_READ_ONLY);
-    columns_out.bind_image(1, GL_WRITE_ONLY);
-    program(size, kernel, 1, cut_camera, reference_depth).use();
+    // Pass 2: along y.
+    bind(rows_, 0, GL_READ_ONLY);
+    bind(columns_out, 1, GL_WRITE_ONLY);
+    program(size, kernel, 1, cut_camera, reference_depth, quads).use();
     glDispatchCompute(groups_x, groups_y, 1);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     return columns_out;

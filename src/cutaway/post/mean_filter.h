@@ -41,7 +41,9 @@ public:
     }
 
 private:
-    const gl::Program& program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera, float reference_depth);
+    /// `quads`: the full kernel over 4 pixels per invocation (mean_filter.comp QUADS).
+    const gl::Program& program(int size, MeanFilterKernel kernel, int axis, const Camera& cut_camera, float reference_depth,
+                               bool quads);
     gl::ProgramCache programs_;
     gl::FloatImageBuffer unfiltered_;  ///< input.depth; the second pass's output where the kernel does not read it then
     gl::FloatImageBuffer rows_;        ///< the first (row) pass
