@@ -232,7 +232,6 @@ const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera)
     return rear_shell_.depth();
 }
 
-
 FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
     FrameTimes times = render_once(s, camera);
     // After the frame's fence: the culling's 4-byte face count says whether its buffer was too
@@ -260,7 +259,7 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
     const bool cut_drawn = cut_needed && s.cut_enabled;
     const bool keep_frozen_cut = frozen_camera_ && frozen_valid_;
     if (!keep_frozen_cut) {
-        last_filtered_ = cut_drawn && s.mean_filter >= 3;
+        const bool filtered = cut_drawn && s.mean_filter >= 3;
         const bool combined = cut_drawn && hooks_.combine_max;
         // Cone-field strategies combine their seeds; the others their cut (a max either way).
         const std::string cut_name = cut_strategy(s);
@@ -274,7 +273,7 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
             cut_strategy.render(inputs, cut_);
             cut_readback_bytes_ = cut_strategy.readback_bytes();
             if (!s.see_through) rear_shell_.render(buffers_, cut_camera);
-            if (!combined && !last_filtered_) resolve_cut(nullptr, s, cut_camera);
+            if (!combined && !filtered) resolve_cut(nullptr, s, cut_camera);
         });
         if (combined)
             gl::timed_stage(timer_, "cut_combine", [&] {
@@ -282,9 +281,9 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
                 if (!seeds_combined) images.push_back(&cut_.depth);
                 if (!s.see_through) images.push_back(&rear_shell_.depth());
                 if (!images.empty()) hooks_.combine_max(images);
-                if (!last_filtered_) resolve_cut(nullptr, s, cut_camera);
+                if (!filtered) resolve_cut(nullptr, s, cut_camera);
             });
-        if (last_filtered_)
+        if (filtered)
             gl::timed_stage(timer_, "mean_filter", [&] {
                 resolve_cut(&mean_filter_.filter(cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera,
                                                  mean_filter_reference_depth(frame_, cut_camera)),

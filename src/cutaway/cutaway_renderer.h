@@ -270,7 +270,6 @@ private:
     std::vector<std::pair<std::string, std::unique_ptr<CutSurfaceStrategy>>> strategies_;
     std::optional<Camera> frozen_camera_;
     bool frozen_valid_ = false;
-    bool last_filtered_ = false;
     gl::StageTimer timer_;
     FrameHooks hooks_;
 };

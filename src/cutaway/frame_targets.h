@@ -48,7 +48,7 @@ struct SceneTargets {
     /// use: 4 bytes per pixel a one-pass frame does not need).
     const NearestFaceTarget& nearest_face() const;
     /// Stage 2's draw with --stage2-passes deferred (secondary.frag, DEFERRED): id and
-    /// face_plane only (12 of the G-buffer's 24 bytes per pixel written per fragment), depth.
+    /// face_plane only (24 of the 44 bytes per pixel the shaded draw writes per fragment), depth.
     gl::Framebuffer deferred_framebuffer;
     /// The plain frame's (`--baseline`): colour, id and depth only (secondary/plain.frag), so a
     /// frame without a cut writes 12 bytes per pixel instead of the G-buffer's 48.

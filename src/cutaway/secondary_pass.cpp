@@ -56,6 +56,12 @@ void set_border_uniforms(const gl::Program& p, const Camera& camera, const Frame
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
 }
 
+/// The shading variants of common/secondary_shading.glsl that `settings` asks for.
+void add_shading_defines(gl::ShaderDefines& defines, const FrameSettings& settings) {
+    defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
+    if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
+}
+
 /// One invocation per pixel of `camera`'s image (raycast_borders.comp's and deferred_shading.comp's 64 x 4).
 void dispatch_per_pixel(const Camera& camera) {
     glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);
@@ -84,8 +90,7 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
                                    const SceneTargets& scene) {
     const Camera& camera = context.camera;
     gl::ShaderDefines defines = view_rear_shell_define(clip);
-    defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
-    if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
+    add_shading_defines(defines, settings);
     if (cut_camera_is_view(camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
     const gl::Program& p = deferred_.get(defines);
     prepare_face_program(p, context);
@@ -104,10 +109,8 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
                          const CutClip& clip, const SceneTargets& scene, DrawMode draw) {
     gl::ShaderDefines defines = view_rear_shell_define(clip);
     defines.emplace_back("CULL_FRONT_INTERIOR", "");
-    const gl::ShaderDefines nearest_defines = defines;
-    defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
-    if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
     if (draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::deferred) {
+        // The cut test only: the borders and hidden lines are shade_deferred's.
         defines.emplace_back("DEFERRED", "");
         const gl::Program& p = programs_.get(defines);
         prepare_face_program(p, context);
@@ -118,6 +121,8 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
         shade_deferred(context, settings, clip, scene);
         return;
     }
+    const gl::ShaderDefines nearest_defines = defines;
+    add_shading_defines(defines, settings);
     const bool two_passes = draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::two;
     GLint depth_function = GL_LESS;
     if (two_passes) {

@@ -11,9 +11,10 @@ namespace cutaway::pipeline {
 // texture: the 9x9 kernel's two passes with their copies take 17-18 ms and the compute resolve
 // after them 26-29 ms, where the fragment passes and resolve took 93-98 ms together (the
 // mean_filter stage: 45-54 ms now; sapphire and petra at 1920x1080, LP_NUM_THREADS=2,
-// alternating runs). The frame's resolve reads the filter's output buffer as it is (filter()),
-// without copying it into a depth texture and back. The frame is byte-identical (the same taps, sums in the same order;
-// MeanFilter.EqualsTheBoxMeanOnRandomDepthImages checks the mean itself).
+// alternating runs). The frame is byte-identical (the same taps, sums in the same order;
+// MeanFilter.EqualsTheBoxMeanOnRandomDepthImages checks the mean itself). The frame's resolve
+// reads the filter's output buffer as it is (filter()), without copying it into a depth texture
+// and back.
 MeanFilter::MeanFilter(const gl::ShaderLibrary& shaders) : programs_(shaders, {{GL_COMPUTE_SHADER, "post/mean_filter.comp"}}) {}
 
 float mean_filter_reference_depth(const ModelFrame& frame, const Camera& cut_camera) {
