@@ -56,15 +56,23 @@ void set_border_uniforms(const gl::Program& p, const Camera& camera, const Frame
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
 }
 
+/// The compute passes read the cut surface and its rear-clamp mask as images (common/cut_lookup.glsl
+/// CUT_IMAGES): image units 4 and 5.
+void bind_cut_images(gl::ShaderDefines& defines, const CutClip& clip) {
+    defines.emplace_back("CUT_IMAGES", "");
+    glBindImageTexture(4, clip.cut.surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(5, clip.cut.rear_clamp.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
+}
+
 /// The shading variants of common/secondary_shading.glsl that `settings` asks for.
 void add_shading_defines(gl::ShaderDefines& defines, const FrameSettings& settings) {
     defines.emplace_back(settings.border == BorderMode::raycast ? "BORDER_RAYCAST" : "BORDER_THRESHOLD", "");
     if (settings.hide_internal_lines) defines.emplace_back("HIDE_INTERNAL_LINES", "");
 }
 
-/// One invocation per pixel of `camera`'s image (raycast_borders.comp's and deferred_shading.comp's 64 x 4).
-void dispatch_per_pixel(const Camera& camera) {
-    glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);
+/// One invocation of `program` per pixel of `camera`'s image.
+void dispatch_per_pixel(const gl::Program& program, const Camera& camera) {
+    gl::dispatch_over(program, camera.width, camera.height);
     glMemoryBarrier(GL_ALL_BARRIER_BITS);
 }
 }  // namespace
@@ -73,6 +81,7 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
                                           const CutClip& clip) {
     gl::ShaderDefines defines = view_rear_shell_define(clip);
     if (cut_camera_is_view(camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    bind_cut_images(defines, clip);
     const gl::Program& p = borders_.get(defines);
     set_cut_lookup(p, clip, camera);
     set_border_uniforms(p, camera, settings);
@@ -83,7 +92,7 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     gl::wait_for_draws_before_image_loads();
     p.use();
-    dispatch_per_pixel(camera);
+    dispatch_per_pixel(p, camera);
 }
 
 void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSettings& settings, const CutClip& clip,
@@ -92,6 +101,7 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
     gl::ShaderDefines defines = view_rear_shell_define(clip);
     add_shading_defines(defines, settings);
     if (cut_camera_is_view(camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    bind_cut_images(defines, clip);
     const gl::Program& p = deferred_.get(defines);
     prepare_face_program(p, context);
     set_cut_lookup(p, clip, camera);
@@ -102,7 +112,7 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
     glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gl::wait_for_draws_before_image_loads();
-    dispatch_per_pixel(camera);
+    dispatch_per_pixel(p, camera);
 }
 
 void SecondaryPass::draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,

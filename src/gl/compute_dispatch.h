@@ -25,4 +25,14 @@ inline void wait_for_draws_before_image_loads() { glMemoryBarrier(GL_ALL_BARRIER
 /// Groups of `group` invocations covering `count`.
 inline unsigned group_count(int count, int group) { return unsigned((count + group - 1) / group); }
 
+/// Dispatches the bound compute `program` with one invocation per cell of a `width` x `height`
+/// grid, in workgroups of the size its shader declares, so each pass keeps the size that measured
+/// best for it on llvmpipe (1920x1080, sapphire, alternating runs): SSAO about 10% faster in
+/// 64 x 16 groups than in 64 x 4 (a workgroup has a fixed cost), the composite 50% slower so.
+inline void dispatch_over(const Program& program, int width, int height) {
+    GLint size[3] = {1, 1, 1};
+    glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+    glDispatchCompute(group_count(width, size[0]), group_count(height, size[1]), 1);
+}
+
 }  // namespace cutaway::gl

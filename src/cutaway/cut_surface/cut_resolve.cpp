@@ -44,7 +44,7 @@ void CutResolve::apply(const gl::FloatImageBuffer& depth, const CutTargets& targ
     glBindImageTexture(2, targets.surface.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     glBindImageTexture(3, targets.rear_clamp.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
     program.use();
-    glDispatchCompute(gl::group_count(quads ? width / 4 : width, 64), gl::group_count(height, 4), 1);  // resolve.comp's 64 x 4
+    gl::dispatch_over(program, quads ? width / 4 : width, height);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 

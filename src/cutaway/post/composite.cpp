@@ -37,7 +37,7 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
     gl::set_uniform(p, "background", glm::vec3(1.0f, 1.0f, 1.0f));
     gl::wait_for_draws_before_image_loads();
     p.use();
-    glDispatchCompute(gl::group_count(width, 64), gl::group_count(height, 4), 1);  // composite.comp's 64 x 4
+    gl::dispatch_over(p, width, height);
     // Then drawn over (colour bar), read back or blitted.
     glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                     GL_PIXEL_BUFFER_BARRIER_BIT);

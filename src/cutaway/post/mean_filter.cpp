@@ -47,7 +47,7 @@ const gl::FloatImageBuffer& MeanFilter::filter(const CutTargets& input, int size
     const gl::FloatImageBuffer& columns_out = reads_unfiltered ? filtered_ : unfiltered_;
     // The full kernel takes 4 pixels per invocation where a row is whole 4-pixel texels.
     const bool quads = kernel == MeanFilterKernel::full && unfiltered_.has_quad_view();
-    const unsigned groups_x = gl::group_count(quads ? width / 4 : width, 64), groups_y = gl::group_count(height, 4);  // mean_filter.comp's 64 x 4
+    const int invocations_x = quads ? width / 4 : width;
     const auto bind = [quads](const gl::FloatImageBuffer& image, GLuint unit, GLenum access) {
         if (quads) image.bind_quad_image(unit, access);
         else image.bind_image(unit, access);
@@ -58,14 +58,16 @@ const gl::FloatImageBuffer& MeanFilter::filter(const CutTargets& input, int size
     // Pass 1: along x into rows_.
     bind(unfiltered_, 0, GL_READ_ONLY);
     bind(rows_, 1, GL_WRITE_ONLY);
-    program(size, kernel, 0, cut_camera, reference_depth, quads).use();
-    glDispatchCompute(groups_x, groups_y, 1);
+    const gl::Program& along_x = program(size, kernel, 0, cut_camera, reference_depth, quads);
+    along_x.use();
+    gl::dispatch_over(along_x, invocations_x, height);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     // Pass 2: along y.
     bind(rows_, 0, GL_READ_ONLY);
     bind(columns_out, 1, GL_WRITE_ONLY);
-    program(size, kernel, 1, cut_camera, reference_depth, quads).use();
-    glDispatchCompute(groups_x, groups_y, 1);
+    const gl::Program& along_y = program(size, kernel, 1, cut_camera, reference_depth, quads);
+    along_y.use();
+    gl::dispatch_over(along_y, invocations_x, height);
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     return columns_out;
 }

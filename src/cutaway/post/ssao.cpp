@@ -18,7 +18,7 @@ void Ssao::apply(const SceneTargets& scene, const PostTargets& post, const Camer
     glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
     gl::wait_for_draws_before_image_loads();
     p.use();
-    glDispatchCompute(gl::group_count(camera.width, 64), gl::group_count(camera.height, 4), 1);  // ssao.comp's 64 x 4
+    gl::dispatch_over(p, camera.width, camera.height);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
