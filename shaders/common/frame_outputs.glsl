@@ -8,9 +8,14 @@ layout(location = 3) out vec4 out_face_plane;    // world face normal, w = 1 + f
 
 uniform mat4 model_view;  // the model camera's view matrix
 
-void write_frame(vec3 colour, vec3 normal, vec3 world, uint compact_cell, uint flags) {
+// `linear_depth`: along the model camera's axis.
+void write_frame_at_depth(vec3 colour, vec3 normal, float linear_depth, uint compact_cell, uint flags) {
     out_face_plane = vec4(0.0);
     out_colour = vec4(colour, 1.0);
-    out_normal_depth = vec4(normalize(mat3(model_view) * normal), -(model_view * vec4(world, 1.0)).z);
+    out_normal_depth = vec4(normalize(mat3(model_view) * normal), linear_depth);
     out_id = uvec2(compact_cell + 1u, flags);
+}
+
+void write_frame(vec3 colour, vec3 normal, vec3 world, uint compact_cell, uint flags) {
+    write_frame_at_depth(colour, normal, -(model_view * vec4(world, 1.0)).z, compact_cell, flags);
 }

@@ -5,6 +5,7 @@
 // then runs its lighting and G-buffer writes once per pixel instead of once per fragment drawn:
 // at petra's default camera, 21M fragments cover 2M pixels.
 #include "common/cut_lookup.glsl"
+#include "common/fragment_cut.glsl"
 
 in FaceVaryings {
 #include "common/face_varyings.glsl"
@@ -13,7 +14,7 @@ in FaceVaryings {
 layout(location = 0) out uint out_face;
 
 void main() {
-    CutSample here = cut_from_clip(v_in.cut_clip, v_in.cut_eye_depth);
+    CutSample here = fragment_cut(v_in.cut_clip, v_in.cut_eye_depth);
     if (clipped(here, v_in.world_position, ivec2(gl_FragCoord.xy))) discard;
     out_face = v_in.face_index;
 }

@@ -119,6 +119,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
                          const CutClip& clip, const SceneTargets& scene, DrawMode draw) {
     gl::ShaderDefines defines = view_rear_shell_define(clip);
     defines.emplace_back("CULL_FRONT_INTERIOR", "");
+    if (cut_camera_is_view(context.camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
     if (draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::deferred) {
         // The cut test only: the borders and hidden lines are shade_deferred's.
         defines.emplace_back("DEFERRED", "");
