@@ -65,10 +65,17 @@ int classify_first(vec3 p[8], int n) {
         uint outside = (c.x < -c.w - s ? 1u : 0u) | (c.x > c.w + s ? 2u : 0u) | (c.y < -c.w - s ? 4u : 0u) |
                        (c.y > c.w + s ? 8u : 0u) | (c.z < -c.w - s ? 16u : 0u) | (c.z > c.w + s ? 32u : 0u);
         outside_all &= outside;
+#ifdef CUT_CAMERA_IS_VIEW
+        // The cut camera is the model camera (a perspective one): its clip position is c and the
+        // depth along its axis c.w, one matrix product per corner instead of three.
+        float depth = c.w;
+        vec4 cc = c;
+#else
         float depth = -(cut_view * vec4(p[k], 1.0)).z;
+        vec4 cc = cut_view_projection * vec4(p[k], 1.0);
+#endif
         near_depth = min(near_depth, depth);
         far_depth = max(far_depth, depth);
-        vec4 cc = cut_view_projection * vec4(p[k], 1.0);
         if (cc.w <= 1e-6) {
             behind_cut_eye = true;
         } else {

@@ -28,6 +28,13 @@ struct Camera {
     float focal_px() const;
 };
 
+/// Whether `a` and `b` see the same image (the cut was made from the model camera, the view not
+/// frozen): the shaders' CUT_CAMERA_IS_VIEW variants then take a point's cut texel and depth
+/// from its own projection.
+inline bool same_view(const Camera& a, const Camera& b) {
+    return a.view == b.view && a.projection == b.projection && a.width == b.width && a.height == b.height;
+}
+
 /// Vertical field of view of every frame (degrees).
 inline constexpr float default_fovy_deg = 30.0f;
 

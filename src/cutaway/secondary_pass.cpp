@@ -39,12 +39,6 @@ gl::ShaderDefines view_rear_shell_define(const CutClip& clip) {
 }  // namespace
 
 namespace {
-/// Whether the cut was made from the model camera itself (the view is not frozen).
-bool cut_camera_is_view(const Camera& camera, const CutClip& clip) {
-    const Camera& cut_camera = clip.cut_camera;
-    return cut_camera.view == camera.view && cut_camera.projection == camera.projection &&
-           cut_camera.width == camera.width && cut_camera.height == camera.height;
-}
 
 /// The uniforms of shaders/common/secondary_shading.glsl's ray-cast border test.
 void set_border_uniforms(const gl::Program& p, const Camera& camera, const FrameSettings& settings) {
@@ -80,7 +74,7 @@ void dispatch_per_pixel(const gl::Program& program, const Camera& camera) {
 void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
                                           const CutClip& clip) {
     gl::ShaderDefines defines = view_rear_shell_define(clip);
-    if (cut_camera_is_view(camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    if (same_view(camera, clip.cut_camera)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
     bind_cut_images(defines, clip);
     const gl::Program& p = borders_.get(defines);
     set_cut_lookup(p, clip, camera);
@@ -100,7 +94,7 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
     const Camera& camera = context.camera;
     gl::ShaderDefines defines = view_rear_shell_define(clip);
     add_shading_defines(defines, settings);
-    if (cut_camera_is_view(camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    if (same_view(camera, clip.cut_camera)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
     bind_cut_images(defines, clip);
     const gl::Program& p = deferred_.get(defines);
     prepare_face_program(p, context);
@@ -119,7 +113,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
                          const CutClip& clip, const SceneTargets& scene, DrawMode draw) {
     gl::ShaderDefines defines = view_rear_shell_define(clip);
     defines.emplace_back("CULL_FRONT_INTERIOR", "");
-    if (cut_camera_is_view(context.camera, clip)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    if (same_view(context.camera, clip.cut_camera)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
     if (draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::deferred) {
         // The cut test only: the borders and hidden lines are shade_deferred's.
         defines.emplace_back("DEFERRED", "");

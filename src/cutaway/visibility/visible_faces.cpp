@@ -59,8 +59,8 @@ constexpr std::size_t draw_command_bytes = 5 * sizeof(std::uint32_t);
 
 VisibleFaces::VisibleFaces(const gl::ShaderLibrary& shaders, const CellBricks& bricks, std::size_t face_limit,
                            std::size_t initial_capacity)
-    : classify_(shaders.build({{GL_COMPUTE_SHADER, "visibility/classify_bricks.comp"}})),
-      cull_(shaders.build({{GL_COMPUTE_SHADER, "visibility/cull_cells.comp"}})),
+    : classify_(shaders, {{GL_COMPUTE_SHADER, "visibility/classify_bricks.comp"}}),
+      cull_(shaders, {{GL_COMPUTE_SHADER, "visibility/cull_cells.comp"}}),
       finish_(shaders.build({{GL_COMPUTE_SHADER, "visibility/finish_culling.comp"}})),
       scan_bricks_(shaders.build({{GL_COMPUTE_SHADER, "visibility/scan_bricks.comp"}})),
       scan_blocks_(shaders.build({{GL_COMPUTE_SHADER, "visibility/scan_bricks.comp"}}, {{"BLOCKS", ""}})),
@@ -112,12 +112,15 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
     brick_classes_.bind_base(GL_SHADER_STORAGE_BUFFER, brick_classes_binding);
     counters_.bind_base(GL_SHADER_STORAGE_BUFFER, culling_binding);
 
-    set_classification_uniforms(classify_, camera, cut, cut_camera, keep_rear_faces);
-    gl::set_uniform(classify_, "brick_count", unsigned(brick_count_));
-    pyramid_.bind_for(classify_);
-    dispatch_invocations(classify_, brick_count_, GL_TEXTURE_FETCH_BARRIER_BIT);
+    const gl::ShaderDefines defines =
+        same_view(camera, cut_camera) ? gl::ShaderDefines{{"CUT_CAMERA_IS_VIEW", ""}} : gl::ShaderDefines{};
+    const gl::Program& classify = classify_.get(defines);
+    set_classification_uniforms(classify, camera, cut, cut_camera, keep_rear_faces);
+    gl::set_uniform(classify, "brick_count", unsigned(brick_count_));
+    pyramid_.bind_for(classify);
+    dispatch_invocations(classify, brick_count_, GL_TEXTURE_FETCH_BARRIER_BIT);
 
-    const gl::Program& p = cull_;
+    const gl::Program& p = cull_.get(defines);
     set_classification_uniforms(p, camera, cut, cut_camera, keep_rear_faces);
     gl::set_uniform(p, "grid_size", grid.grid_size());
     gl::set_uniform(p, "up_sign", float(grid.frame().up_sign));

@@ -10,6 +10,7 @@
 #include "cutaway/grid_buffers.h"
 #include "cutaway/visibility/cell_bricks.h"
 #include "cutaway/visibility/cut_depth_pyramid.h"
+#include "gl/program_cache.h"
 #include "gl/shader_library.h"
 
 namespace cutaway::pipeline {
@@ -66,7 +67,8 @@ private:
     /// culling's invocations ran in, so coincident faces tie the same way on any GPU.
     void write_in_brick_order(const GridBuffers& grid);
 
-    gl::Program classify_, cull_, finish_, scan_bricks_, scan_blocks_, write_faces_;
+    gl::ProgramCache classify_, cull_;  ///< variant CUT_CAMERA_IS_VIEW (visibility/classify.glsl)
+    gl::Program finish_, scan_bricks_, scan_blocks_, write_faces_;
     CutDepthPyramid pyramid_;
     gl::Buffer brick_cells_, brick_begin_, brick_boxes_;
     gl::Buffer brick_classes_;  ///< class of each brick this frame (classify_bricks.comp)
