@@ -1,5 +1,7 @@
 #include "cutaway/cut_surface/cut_resolve.h"
 
+#include <array>
+
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
@@ -21,9 +23,15 @@ void CutResolve::apply(const gl::FloatImageBuffer& depth, const CutTargets& targ
     const bool quads = depth.has_quad_view();
     const gl::Program& program = programs_.get(quads ? gl::ShaderDefines{{"QUADS", ""}} : gl::ShaderDefines{});
     const glm::mat4 inverse_view = glm::inverse(cut_camera.view);
-    gl::set_uniform(program, "inverse_cut_view", inverse_view);
-    gl::set_uniform(program, "cut_camera_position", glm::vec3(inverse_view[3]));
-    gl::set_uniform(program, "projection_scale", glm::vec2(cut_camera.projection[0][0], cut_camera.projection[1][1]));
+    // resolve.comp's cut_ray: the eye-space ray (ndc / projection scale, -1), ndc = 2 w / size - 1,
+    // turned into world space.
+    const glm::mat3 to_world(inverse_view);
+    const glm::vec2 projection_scale(cut_camera.projection[0][0], cut_camera.projection[1][1]);
+    const glm::vec2 ndc_per_px = 2.0f / (glm::vec2(float(width), float(height)) * projection_scale);
+    gl::set_uniform(program, "ray_origin", to_world * glm::vec3(-1.0f / projection_scale, -1.0f));
+    const std::array<glm::vec3, 2> ray_per_px{to_world * glm::vec3(ndc_per_px.x, 0.0f, 0.0f),
+                                              to_world * glm::vec3(0.0f, ndc_per_px.y, 0.0f)};
+    glProgramUniform3fv(program.id(), program.uniform("ray_per_px"), 2, &ray_per_px[0].x);
     gl::set_uniform(program, "cut_size", glm::ivec2(width, height));
     gl::set_uniform(program, "cut_near", cut_camera.near_plane);
     gl::set_uniform(program, "cut_far", cut_camera.far_plane);

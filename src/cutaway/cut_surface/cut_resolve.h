@@ -12,7 +12,8 @@ namespace cutaway::pipeline {
 class CutResolve {
 public:
     explicit CutResolve(const gl::ShaderLibrary& shaders);
-    /// Reads targets.depth, writes targets.surface and targets.rear_clamp. `rear_shell` (null: no
+    /// Reads targets.depth, writes targets.surface and targets.rear_clamp where a cut is (the
+    /// targets must be cleared, CutTargets::clear, since the last apply). `rear_shell` (null: no
     /// clamp): the farthest shell depth (rear_shell_depth.h); the cut is kept `rear_margin`
     /// render units in front of it wherever both exist.
     void apply(const CutTargets& targets, const Camera& cut_camera, const gl::Texture* rear_shell = nullptr,
