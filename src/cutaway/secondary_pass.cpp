@@ -32,13 +32,15 @@ void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& cam
     gl::set_uniform(p, "view_rear_margin", clip.rear_margin);
 }
 const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
-/// VIEW_REAR_SHELL (common/cut_lookup.glsl) while the view is frozen, nothing otherwise.
-gl::ShaderDefines view_rear_shell_define(const CutClip& clip) {
-    return clip.view_rear_shell ? gl::ShaderDefines{{"VIEW_REAR_SHELL", ""}} : gl::ShaderDefines{};
+/// The variants every stage-2 program takes from where the cut was made: VIEW_REAR_SHELL
+/// (common/cut_lookup.glsl) while the view is frozen, CUT_CAMERA_IS_VIEW (the cut made from the
+/// model `camera` itself) otherwise.
+gl::ShaderDefines cut_view_defines(const Camera& camera, const CutClip& clip) {
+    gl::ShaderDefines defines;
+    if (clip.view_rear_shell) defines.emplace_back("VIEW_REAR_SHELL", "");
+    if (same_view(camera, clip.cut_camera)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    return defines;
 }
-}  // namespace
-
-namespace {
 
 /// The uniforms of shaders/common/secondary_shading.glsl's ray-cast border test.
 void set_border_uniforms(const gl::Program& p, const Camera& camera, const FrameSettings& settings) {
@@ -73,8 +75,7 @@ void dispatch_per_pixel(const gl::Program& program, const Camera& camera) {
 
 void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
                                           const CutClip& clip) {
-    gl::ShaderDefines defines = view_rear_shell_define(clip);
-    if (same_view(camera, clip.cut_camera)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
+    gl::ShaderDefines defines = cut_view_defines(camera, clip);
     bind_cut_images(defines, clip);
     const gl::Program& p = borders_.get(defines);
     set_cut_lookup(p, clip, camera);
@@ -92,9 +93,8 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
 void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSettings& settings, const CutClip& clip,
                                    const SceneTargets& scene) {
     const Camera& camera = context.camera;
-    gl::ShaderDefines defines = view_rear_shell_define(clip);
+    gl::ShaderDefines defines = cut_view_defines(camera, clip);
     add_shading_defines(defines, settings);
-    if (same_view(camera, clip.cut_camera)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
     bind_cut_images(defines, clip);
     const gl::Program& p = deferred_.get(defines);
     prepare_face_program(p, context);
@@ -111,9 +111,8 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
 
 void SecondaryPass::draw(const FaceDrawContext& context, const std::function<void()>& submit, const FrameSettings& settings,
                          const CutClip& clip, const SceneTargets& scene, DrawMode draw) {
-    gl::ShaderDefines defines = view_rear_shell_define(clip);
+    gl::ShaderDefines defines = cut_view_defines(context.camera, clip);
     defines.emplace_back("CULL_FRONT_INTERIOR", "");
-    if (same_view(context.camera, clip.cut_camera)) defines.emplace_back("CUT_CAMERA_IS_VIEW", "");
     if (draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::deferred) {
         // The cut test only: the borders and hidden lines are shade_deferred's.
         defines.emplace_back("DEFERRED", "");
