@@ -162,6 +162,8 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     settings.line_width_px = 1;
     settings.ssao = options.ssao;
     settings.draw = draw_mode(options.draws.at(std::size_t(state.range(6))));
+    // The paper's path keeps the paper's full-resolution SSAO; ours computes it for one pixel in four.
+    settings.ssao_half_resolution = settings.draw == pipeline::DrawMode::visible;
     const std::vector<bench::PathPose> path = poses_for(options, state.range(0), state.range(1));
     const std::vector<pipeline::Camera> cameras = path_cameras(renderer, path);
     auto frame = [&](std::size_t k) {

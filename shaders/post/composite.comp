@@ -5,10 +5,11 @@
 layout(local_size_x = 64, local_size_y = 4) in;
 
 layout(rgba8, binding = 0) uniform readonly image2D scene_colour;
-layout(r16f, binding = 1) uniform readonly image2D ambient;
+layout(rg32f, binding = 1) uniform readonly image2D ambient;      // factor, linear depth (post/ssao.comp)
 layout(rg32ui, binding = 2) uniform readonly uimage2D scene_id;  // compact cell + 1, flags
 layout(r32f, binding = 3) uniform readonly image2D shell_depth;  // linear depth of the uncut shell (0 = background)
 layout(rgba8, binding = 4) uniform writeonly image2D final_colour;
+layout(rgba32f, binding = 5) uniform readonly image2D normal_depth;  // A: linear depth (0 = background)
 uniform vec2 viewport_size;
 uniform float saturation_primary;    // factor on primaries' saturation
 uniform float saturation_secondary;  // factor on secondaries' saturation
@@ -33,6 +34,33 @@ vec3 hsv_to_rgb(vec3 c) {
     return c.z * mix(vec3(1.0), clamp(p - 1.0, 0.0, 1.0), c.y);
 }
 
+#ifdef SSAO
+#ifdef HALF_AMBIENT
+// Joint bilateral upsampling of the half-resolution factors (Kopf et al. 2007): ambient texel t
+// holds pixel 2t's factor, so a pixel lies on one sample (both coordinates even), midway between
+// two or in the middle of four; each sample's bilinear weight is divided by its depth difference
+// from the pixel, so that a factor does not bleed across a depth edge (a primary's outline, the
+// cut's rim). The 1e-3 relative floor keeps samples on the same smooth surface equal partners (and 1e-20 a zero
+// depth from dividing by zero).
+float ambient_at(ivec2 texel) {
+    float depth = imageLoad(normal_depth, texel).a;
+    ivec2 low = texel >> 1, odd = texel & 1;
+    ivec2 last = (ivec2(viewport_size) - 1) >> 1;
+    float weight_sum = 0.0, sum = 0.0;
+    for (int dy = 0; dy <= odd.y; ++dy)
+        for (int dx = 0; dx <= odd.x; ++dx) {
+            vec2 sample_ = imageLoad(ambient, min(low + ivec2(dx, dy), last)).rg;
+            float weight = 1.0 / (abs(sample_.g - depth) + 1e-3 * depth + 1e-20);
+            weight_sum += weight;
+            sum += weight * sample_.r;
+        }
+    return sum / weight_sum;
+}
+#else
+float ambient_at(ivec2 texel) { return imageLoad(ambient, texel).r; }
+#endif
+#endif
+
 bool is_primary(ivec2 texel) { return (imageLoad(scene_id, texel).g & flag_primary) != 0u; }
 
 void main() {
@@ -43,7 +71,7 @@ void main() {
     bool primary = (id.g & flag_primary) != 0u;
     vec3 colour = covered ? imageLoad(scene_colour, texel).rgb : background;
 #ifdef SSAO
-    if (covered) colour *= imageLoad(ambient, texel).r;
+    if (covered) colour *= ambient_at(texel);
 #endif
 #ifdef SATURATION
     if (covered) {

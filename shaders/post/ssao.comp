@@ -7,10 +7,13 @@
 // texelFetch (sapphire, alternating runs; the same image); 41-44 ms against 52-53 once the
 // spiral turned by a rotation instead of a sine and cosine per sample and the divisions per
 // sample became multiplies (the loads are about 18 ms of it).
+// HALF_RESOLUTION: one invocation per 2x2 block, shading the block's even pixel (2t) with the same
+// full-resolution samples, and storing that pixel's depth beside the factor for the composite's
+// depth-aware upsampling (post/composite.comp, ambient_at): a quarter of the work.
 layout(local_size_x = 64, local_size_y = 16) in;  // gl::dispatch_over says why
 
 layout(rgba32f, binding = 0) uniform readonly image2D normal_depth;  // eye-space normal, linear depth (0 = background)
-layout(r16f, binding = 1) uniform writeonly image2D ambient;
+layout(rg32f, binding = 1) uniform writeonly image2D ambient;        // factor, linear depth of its pixel
 uniform vec2 projection_scale;   // P[0][0], P[1][1]
 uniform vec2 viewport_size;
 uniform float radius;            // render units
@@ -24,12 +27,17 @@ vec3 eye_position(vec2 window, float depth, vec2 ndc_per_px, vec2 ndc_origin) {
 }
 
 void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    ivec2 target = ivec2(gl_GlobalInvocationID.xy);  // texel of `ambient`
+#ifdef HALF_RESOLUTION
+    ivec2 pixel = 2 * target;
+#else
+    ivec2 pixel = target;
+#endif
     if (any(greaterThanEqual(pixel, ivec2(viewport_size)))) return;
     vec2 window = vec2(pixel) + 0.5;  // the pixel's centre, as gl_FragCoord.xy
     vec4 here = imageLoad(normal_depth, pixel);
     if (here.a <= 0.0) {  // background: a branch, so that background-only SIMD lanes skip the samples
-        imageStore(ambient, pixel, vec4(1.0));
+        imageStore(ambient, target, vec4(1.0, 0.0, 0.0, 0.0));
         return;
     }
     vec2 ndc_per_px = 2.0 / (viewport_size * projection_scale);
@@ -58,5 +66,5 @@ void main() {
         float occludes = max(dot(normal, d) * inversesqrt(distance2 + 1e-12) - 0.05, 0.0) / (1.0 + distance2 * inverse_radius2);
         occlusion += depth > 0.0 ? occludes : 0.0;
     }
-    imageStore(ambient, pixel, vec4(clamp(1.0 - strength * occlusion / float(SAMPLES), 0.0, 1.0)));
+    imageStore(ambient, target, vec4(clamp(1.0 - strength * occlusion / float(SAMPLES), 0.0, 1.0), here.a, 0.0, 0.0));
 }

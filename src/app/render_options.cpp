@@ -60,6 +60,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
                                                            {"sampled", MeanFilterKernel::sampled},
                                                            {"distance-scaled", MeanFilterKernel::distance_scaled}});
     s.ssao = parse_choice<bool>("--ssao", ssao, {{"on", true}, {"off", false}});
+    s.ssao_half_resolution = parse_choice<bool>("--ssao-resolution", ssao_resolution, {{"half", true}, {"full", false}});
     s.contours = parse_choice<bool>("--contours", contours, {{"on", true}, {"off", false}});
     s.only = parse_choice<OnlyLayer>("--only", only, {{"both", OnlyLayer::both}, {"primaries", OnlyLayer::primaries},
                                                       {"secondaries", OnlyLayer::secondaries}});
@@ -89,7 +90,8 @@ nlohmann::json RenderOptions::describe() const {
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
             {"mean_filter_kernel", pipeline::to_string(s.mean_filter_kernel)}, {"ssao", s.ssao},
-            {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius}, {"saturation", s.saturation},
+            {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius},
+            {"ssao_resolution", s.ssao_half_resolution ? "half" : "full"}, {"saturation", s.saturation},
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
             {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
@@ -123,6 +125,8 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--mean-filter", o.settings.mean_filter, "mean filter size k (odd; 0 = off)")->check(finite_in(0, 65));
     c.add_option("--mean-filter-kernel", o.kernel, "full|sampled|distance-scaled (radius shrinking with distance to the camera)");
     c.add_option("--ssao", o.ssao, "on|off");
+    c.add_option("--ssao-resolution", o.ssao_resolution,
+                 "half (occlusion for one pixel in four, upsampled by depth; the default) | full (every pixel, as the paper)");
     c.add_option("--aperture", o.aperture,
                  "horizontal and vertical aperture H V: full opening angles, degrees 0..180 (each wall leans out by "
                  "half; 180: flat)")

@@ -36,6 +36,7 @@ struct RenderOptions {
     std::string border = "raycast";
     std::string kernel = "full";
     std::string ssao = "on";
+    std::string ssao_resolution = "half";
     std::string contours = "on";
     std::string only = "both";
     std::string seeds = "boxes";

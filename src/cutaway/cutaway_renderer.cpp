@@ -319,7 +319,7 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
     if (hooks_.combine_scene) gl::timed_stage(timer_, "composite", [&] { run_post = hooks_.combine_scene(scene_); });
     if (s.ssao && run_post)
         gl::timed_stage(timer_, "ssao", [&] {
-            ssao_.apply(scene_, post_, camera, s.ssao_samples, s.ssao_radius * frame_.radius());
+            ssao_.apply(scene_, post_, camera, s, s.ssao_radius * frame_.radius());
         });
     if (run_post)
         gl::timed_stage(timer_, "post", [&] {

@@ -45,6 +45,9 @@ struct FrameSettings {
     bool ssao = true;
     int ssao_samples = 16;
     float ssao_radius = 0.03f;             ///< fraction of the model radius
+    /// true: occlusion computed for one pixel in four and upsampled by depth (post/ssao.comp,
+    /// post/composite.comp); false: for every pixel, as the paper.
+    bool ssao_half_resolution = true;
     bool saturation = false;
     float saturation_primary = 1.5f;
     float saturation_secondary = 0.35f;

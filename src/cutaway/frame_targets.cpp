@@ -91,10 +91,8 @@ void SceneTargets::clear_plain() const {
 }
 
 PostTargets::PostTargets(int width, int height)
-    : ambient(GL_TEXTURE_2D, GL_R16F, width, height), final_colour(GL_TEXTURE_2D, GL_RGBA8, width, height) {
+    : ambient(GL_TEXTURE_2D, GL_RG32F, width, height), final_colour(GL_TEXTURE_2D, GL_RGBA8, width, height) {
     const std::array<GLenum, 1> buffers{GL_COLOR_ATTACHMENT0};
-    ambient_framebuffer.attach(GL_COLOR_ATTACHMENT0, ambient);
-    ambient_framebuffer.finish(buffers, "ambient occlusion");
     final_framebuffer.attach(GL_COLOR_ATTACHMENT0, final_colour);
     final_framebuffer.finish(buffers, "final image");
 }

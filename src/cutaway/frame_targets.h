@@ -66,8 +66,9 @@ private:
 /// Post-processing: ambient occlusion factor and the final RGBA8 image.
 struct PostTargets {
     PostTargets(int width, int height);
-    gl::Texture ambient;   ///< R16F
-    gl::Framebuffer ambient_framebuffer;
+    /// RG32F: factor and the linear depth of its pixel; at half resolution (FrameSettings::
+    /// ssao_half_resolution) only the top-left quarter is written (post/ssao.comp).
+    gl::Texture ambient;
     gl::Texture final_colour;  ///< RGBA8
     gl::Framebuffer final_framebuffer;
 };

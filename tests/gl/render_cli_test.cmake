@@ -60,6 +60,7 @@ expect_failure(bad_border 2 "--border 'wide': expected raycast\\|threshold" ${RE
 expect_failure(bad_kernel 2 "--mean-filter-kernel 'box': expected full\\|sampled\\|distance-scaled" ${REEK} --mean-filter-kernel box)
 expect_failure(bad_aperture 2 "--aperture: expected .*\\[0, 180\\] degrees" ${REEK} --aperture 181 30)
 expect_failure(bad_draw 2 "--draw 'some': expected visible\\|all-faces" ${REEK} --draw some)
+expect_failure(bad_ssao_resolution 2 "--ssao-resolution 'quarter': expected half\\|full" ${REEK} --ssao-resolution quarter)
 expect_failure(no_device 4 "OpenGL: EGL platform 'device': no hardware EGL device" ${REEK} --egl-platform device)
 file(WRITE ${OUT}/nan.grdecl "SPECGRID\n 1 1 1 1 F /\nCOORD\n 0 0 0 0 0 1  1 0 0 1 0 1  0 1 0 0 1 1  1 1 0 1 1 1 /\nZCORN\n 4*0 4*1 /\nPORO\n nan /\n")
 expect_failure(nan_property 2 "property PORO: NaN in active cell \\(i,j,k\\) = \\(0,0,0\\)" ${OUT}/nan.grdecl)

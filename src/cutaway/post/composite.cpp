@@ -18,15 +18,17 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
                       int height) {
     gl::ShaderDefines defines;
     if (settings.ssao) defines.emplace_back("SSAO", "");
+    if (settings.ssao && settings.ssao_half_resolution) defines.emplace_back("HALF_AMBIENT", "");
     if (settings.saturation) defines.emplace_back("SATURATION", "");
     if (settings.silhouette) defines.emplace_back("SILHOUETTE", "");
     if (settings.contours) defines.emplace_back("CONTOURS", "");
     const gl::Program& p = programs_.get(defines);
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
-    glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R16F);
+    glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
     glBindImageTexture(2, scene.id.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     glBindImageTexture(3, scene.shell_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(4, post.final_colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(5, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
     gl::set_uniform(p, "viewport_size", glm::vec2(float(width), float(height)));
     gl::set_uniform(p, "saturation_primary", settings.saturation_primary);
     gl::set_uniform(p, "saturation_secondary", settings.saturation_secondary);

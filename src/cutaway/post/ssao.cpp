@@ -8,17 +8,21 @@ namespace cutaway::pipeline {
 Ssao::Ssao(const gl::ShaderLibrary& shaders)
     : programs_(shaders, {{GL_COMPUTE_SHADER, "post/ssao.comp"}}) {}
 
-void Ssao::apply(const SceneTargets& scene, const PostTargets& post, const Camera& camera, int samples, float radius) {
-    const gl::Program& p = programs_.get({{"SAMPLES", std::to_string(samples)}});
+void Ssao::apply(const SceneTargets& scene, const PostTargets& post, const Camera& camera,
+                 const FrameSettings& settings, float radius) {
+    gl::ShaderDefines defines{{"SAMPLES", std::to_string(settings.ssao_samples)}};
+    if (settings.ssao_half_resolution) defines.emplace_back("HALF_RESOLUTION", "");
+    const gl::Program& p = programs_.get(defines);
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "radius", radius);
     gl::set_uniform(p, "strength", 1.6f);
     glBindImageTexture(0, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
+    glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     gl::wait_for_draws_before_image_loads();
     p.use();
-    gl::dispatch_over(p, camera.width, camera.height);
+    const int shrink = settings.ssao_half_resolution ? 2 : 1;
+    gl::dispatch_over(p, (camera.width + shrink - 1) / shrink, (camera.height + shrink - 1) / shrink);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 

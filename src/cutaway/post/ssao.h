@@ -10,8 +10,9 @@ namespace cutaway::pipeline {
 class Ssao {
 public:
     explicit Ssao(const gl::ShaderLibrary& shaders);
-    /// Writes post.ambient; `radius` in render units.
-    void apply(const SceneTargets& scene, const PostTargets& post, const Camera& camera, int samples, float radius);
+    /// Writes post.ambient with settings' samples and resolution; `radius` in render units.
+    void apply(const SceneTargets& scene, const PostTargets& post, const Camera& camera, const FrameSettings& settings,
+               float radius);
 
 private:
     gl::ProgramCache programs_;
