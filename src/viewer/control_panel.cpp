@@ -112,6 +112,7 @@ unsigned lines_and_post_section(ViewerState& state) {
     }
     changed |= choice_combo("kernel", o.kernel, {"full", "sampled", "distance-scaled"});
     changed |= on_off_checkbox("SSAO", o.ssao);
+    changed |= choice_combo("SSAO resolution", o.ssao_resolution, {"half", "full"});
     changed |= ImGui::Checkbox("saturation contrast", &s.saturation);
     changed |= choice_combo("show", o.only, {"both", "primaries", "secondaries"});
     changed |= ImGui::Checkbox("colour bar", &s.colour_bar);
