@@ -19,6 +19,14 @@ def _count(value):
     return str(value)
 
 
+def _ratio(ratios, name):
+    """The ratio of the medians, and the range of the rounds' own ratios where there are several."""
+    rounds = ratios.get(name + "_rounds", [])
+    if len(rounds) <= 1:
+        return f"{ratios[name]:.2f}"
+    return f"{ratios[name]:.2f} ({min(rounds):.2f}-{max(rounds):.2f})"
+
+
 def markdown(document):
     """The table: per model and our configuration, VTK's and our frame times and faces, and the ratios."""
     context, proto = document["context"], document["protocol"]
@@ -38,7 +46,9 @@ def markdown(document):
         "reports them (`baseline_faces_drawn`; `faces_drawn` per stage), n/a where it does not. Ours: `visible` = the "
         "default renderer (GPU-culled faces, the default cut strategy `auto`: one frustum per IJK box of adjacent "
         "primaries, or their union swept in O(pixels) from the device's threshold on; column `cut` names the one drawn); "
-        "`per-cell frustum` = the paper's one frustum per primary; `all-faces` = every face of every cell (the paper's path).", "",
+        "`per-cell frustum` = the paper's one frustum per primary; `all-faces` = every face of every cell (the paper's path). "
+        "Ratios: of the medians, and in brackets the range of the rounds' own ratios (each round's VTK and our frames "
+        "ran minutes apart).", "",
         "| model | active cells | ours | cut | VTK surface ms | VTK faces | VTK clip ms | VTK clip faces | ours plain ms | "
         "ours plain faces | ours cutaway ms | ours cutaway faces | plain / VTK surface | cutaway / VTK clip |",
         "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|"]
@@ -50,7 +60,7 @@ def markdown(document):
                 f"| {model['model'].split()[0]} | {model['active_cells']:,} | {draw} | {ours.get('cut_strategy', 'n/a')} | "
                 f"{_ms(vtk['surface'])} | {_count(vtk['surface']['faces_drawn'])} | {_ms(vtk['clip'])} | "
                 f"{_count(vtk['clip']['faces_drawn'])} | {_ms(ours['plain_ms'])} | {_count(ours['plain_faces_drawn'])} | "
-                f"{_ms(ours['cutaway_ms'])} | {_count(ours['cutaway_faces_drawn'])} | {ratio['plain_over_vtk_surface']:.2f} | {ratio['cutaway_over_vtk_clip']:.2f} |")
+                f"{_ms(ours['cutaway_ms'])} | {_count(ours['cutaway_faces_drawn'])} | {_ratio(ratio, 'plain_over_vtk_surface')} | {_ratio(ratio, 'cutaway_over_vtk_clip')} |")
     lines += ["", "Checks: the VTK grid has the same active cells as `cutaway inspect`; total volumes (relative "
               "difference to inspect): " + "; ".join(
                   f"{m['model'].split()[0]} " + ", ".join(f"{name} {v['relative_difference']:.1e}"
