@@ -41,10 +41,11 @@ vec3 hsv_to_rgb(vec3 c) {
 #ifdef HALF_AMBIENT
 // Joint bilateral upsampling of the half-resolution factors (Kopf et al. 2007): ambient texel t
 // holds pixel 2t's factor, so a pixel lies on one sample (both coordinates even), midway between
-// two or in the middle of four; each sample's bilinear weight is divided by its depth difference
-// from the pixel, so that a factor does not bleed across a depth edge (a primary's outline, the
-// cut's rim). The 1e-3 relative floor keeps samples on the same smooth surface equal partners (and 1e-20 a zero
-// depth from dividing by zero).
+// two or in the middle of four. Those 1, 2 or 4 samples are equally far (their bilinear weights are
+// equal), so each is weighted by the inverse of its depth difference from the pixel alone: a factor
+// does not bleed across a depth edge (a primary's outline, the cut's rim). The 1e-3 relative floor
+// keeps samples on the same smooth surface equal partners; 1e-20 keeps a zero depth from dividing
+// by zero.
 float ambient_at(ivec2 texel) {
     float depth = imageLoad(normal_depth, texel).a;
     ivec2 low = texel >> 1, odd = texel & 1;
