@@ -22,6 +22,7 @@
 // -1.61% .. +1.98% <5,7,11> of slope x distance.
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 #include <vector>
 
 #include "cutaway/cut_surface/gpu_cone_transform.h"
@@ -39,7 +40,8 @@ struct SweepDirection {
     double length;
 };
 
-/// The mask's directions (the forward half of the mask; any order, see above).
+/// The mask's directions (the forward half of the mask; any order, see above), the rows' (1, 0)
+/// first: chamfer_sweep.comp's INIT variant sweeps it straight from the seed image.
 std::vector<SweepDirection> sweep_directions(cone_field::ChamferMask mask) {
     std::vector<SweepDirection> directions;
     for (const cone_field::ChamferStep& s : cone_field::chamfer_forward_steps(mask)) {
@@ -47,6 +49,9 @@ std::vector<SweepDirection> sweep_directions(cone_field::ChamferMask mask) {
         if (step.x < 0 || (step.x == 0 && step.y < 0)) step = -step;
         directions.push_back({step, s.length});
     }
+    const auto rows = std::find_if(directions.begin(), directions.end(), [](const SweepDirection& d) { return d.step == glm::ivec2(1, 0); });
+    if (rows == directions.end()) throw std::logic_error("chamfer mask without the axial step (1, 0)");
+    std::rotate(directions.begin(), rows, rows + 1);
     return directions;
 }
 
@@ -63,17 +68,16 @@ public:
         if (heights_.width() != width || heights_.height() != height) heights_ = gl::Texture(GL_TEXTURE_2D, GL_R32F, width, height);
         glBindImageTexture(0, heights_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32F);
 
-        init_.prepare(in).use();
-        glDispatchCompute(group_count(width * height, group_size), 1, 1);
-
-        sweep_.use();
-        for (const SweepDirection& d : directions_) {
+        for (std::size_t k = 0; k < directions_.size(); ++k) {
+            const SweepDirection& d = directions_[k];
+            const gl::Program& p = k == 0 ? init_.prepare(in) : sweep_;  // the rows, from the seeds
             glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
             const int columns = std::min(d.step.x, width);
             const int lines = columns * height + std::min(std::abs(d.step.y), height) * (width - columns);
-            gl::set_uniform(sweep_, "direction", d.step);
-            gl::set_uniform(sweep_, "weight", float(double(in.slope) * d.length));
-            gl::set_uniform(sweep_, "line_count", lines);
+            if (k > 0) gl::set_uniform(p, "direction", d.step);
+            gl::set_uniform(p, "weight", float(double(in.slope) * d.length));
+            gl::set_uniform(p, "line_count", lines);
+            p.use();
             glDispatchCompute(group_count(lines, group_size), 1, 1);
         }
 
