@@ -13,8 +13,12 @@ filter, SSAO, 1% PORO primaries). A script turns the camera 15 degrees every fra
 re-renders the cutaway, as while dragging the mouse), changes the primary range (new selection),
 then leaves the camera still (frames that only redraw the panel over the last cutaway). Each
 render scale (the panel's "render scale": the cutaway is rendered smaller and scaled up) is one
-run; the runs go in 3 interleaved rounds (100%, 50%, 100%, ...; 1 with --quick), so a slow spell
-of this shared machine does not fall on one scale only. The viewer's --stats file holds every
+run with --interaction-fps 0 (every frame at that scale). A third run turns the camera with the
+mouse button held (the script's `drag on` ... `drag off`) and --interaction-fps 10: while the view
+moves the viewer draws smaller frames, sized to hold 10 per second from the frames it measures
+(src/viewer/interaction_resolution.h), and the full size once it stops. The runs go in 3
+interleaved rounds (100%, 50%, 100% while moving, 100%, ...; 1 with --quick), so a slow spell of
+this shared machine does not fall on one configuration only. The viewer's --stats file holds every
 frame's loop time (events, script, panel, render when something changed, blit, swap) and its
 fenced stage times; medians over the frames of all rounds are reported, with each round's median
 beside them.
@@ -29,9 +33,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 import cutaway_experiment as cx  # noqa: E402
 
 
-def script_text(turns, ranges, idle, screenshot):
+def script_text(turns, ranges, idle, screenshot, drag):
     lines = ["# written by experiments/viewer_responsiveness/run.py", "wait 3"]
+    lines += ["drag on"] if drag else []
     lines += ["orbit 15 0\nwait 1"] * turns
+    lines += ["drag off"] if drag else []
     lines += [f"set --range {0.30 + 0.005 * i:.3f} 0.40\nwait 1" for i in range(ranges)]
     lines += [f"wait {idle}", f"screenshot {screenshot}" if screenshot else "wait 1", "quit"]
     return "\n".join(lines) + "\n"
@@ -53,34 +59,50 @@ def main():
     size = (640, 360) if exp.quick else (1280, 720)
     turns, ranges, idle = (4, 2, 5) if exp.quick else (24, 6, 30)
     rounds = 1 if exp.quick else 3
-    runs = {1.0: [], 0.5: []}
+    # configuration -> (render scale, frames per second held while the view moves: 0 = off)
+    configurations = {"1.0": (1.0, 0), "0.5": (0.5, 0), "1.0-moving": (1.0, 10)}
+    runs = {name: [] for name in configurations}
     with tempfile.TemporaryDirectory(prefix="cutaway-viewer-") as scratch:
         for round_index in range(rounds):
-            for scale in runs:
-                script = os.path.join(scratch, f"script-{scale}-{round_index}.txt")
-                stats = os.path.join(scratch, f"stats-{scale}-{round_index}.json")
-                shot = scale == 1.0 and round_index == 0
+            for name, (scale, interaction_fps) in configurations.items():
+                script = os.path.join(scratch, f"script-{name}-{round_index}.txt")
+                stats = os.path.join(scratch, f"stats-{name}-{round_index}.json")
+                shot = name == "1.0" and round_index == 0
                 with open(script, "w") as f:
                     # The screenshot goes to scratch and is copied at the end: rewriting the tracked
                     # figure during the runs would make the viewer record a dirty revision.
-                    f.write(script_text(turns, ranges, idle, os.path.join(scratch, "viewer_petra.png") if shot else None))
+                    f.write(script_text(turns, ranges, idle, os.path.join(scratch, "viewer_petra.png") if shot else None,
+                                        drag=interaction_fps > 0))
                 command = [xvfb_run, "-a", "-s", "-screen 0 1920x1080x24", exp.cutaway, "view", "preset:petra",
-                           "--size", str(size[0]), str(size[1]), "--render-scale", str(scale), "--script", script,
-                           "--stats", stats]
+                           "--size", str(size[0]), str(size[1]), "--render-scale", str(scale),
+                           "--interaction-fps", str(interaction_fps), "--script", script, "--stats", stats]
                 subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
                 with open(stats) as f:
-                    runs[scale].append(cx.json.loads(f.read()))
+                    runs[name].append(cx.json.loads(f.read()))
         revision = exp.context()["git_revision"]  # before the copy changes a tracked file
         shutil.copyfile(os.path.join(scratch, "viewer_petra.png"), exp.path("viewer_petra.png"))
 
     summary = {}
-    for scale, scale_runs in runs.items():
+    for name, scale_runs in runs.items():
         stats = scale_runs[0]
         frames = [f for run in scale_runs for f in run["frames"][1:]]  # frame 0 compiles the programs
         rendering = [f["loop_ms"] for f in frames if f["rendered"]]
         idle_frames = [f["loop_ms"] for f in frames if not f["rendered"]]
         round_medians = [median([f["loop_ms"] for f in run["frames"][1:] if f["rendered"]]) for run in scale_runs]
-        summary[str(scale)] = {
+        # Frames drawn while the view moved (only the run with the mouse button held has them).
+        moving = [f for f in frames if f["rendered"] and f.get("view_moving")]
+        moving_round_medians = [median([f["loop_ms"] for f in run["frames"][1:] if f["rendered"] and f.get("view_moving")])
+                                for run in scale_runs]
+        still_full_size = [f["loop_ms"] for f in frames if f["rendered"] and not f.get("view_moving")]
+        summary[name] = {
+            "render_scale": configurations[name][0], "interaction_fps": configurations[name][1],
+            "moving_frames": len(moving),
+            "median_loop_ms_moving": median([f["loop_ms"] for f in moving]),
+            "median_loop_ms_moving_by_round": moving_round_medians if moving else [],
+            "frames_per_second_moving": 1000.0 / median([f["loop_ms"] for f in moving]) if moving else 0.0,
+            "moving_render_widths": sorted({f["render_size"][0] for f in moving}),
+            "median_moving_render_size": [median([f["render_size"][k] for f in moving]) for k in (0, 1)] if moving else [],
+            "median_loop_ms_not_moving": median(still_full_size),
             "render_size": stats["render_size"], "window_size": stats["window_size"], "rounds": len(scale_runs),
             "median_loop_ms_rendering_by_round": round_medians,
             "rendered_frames": len(rendering), "idle_frames": len(idle_frames),
@@ -90,7 +112,7 @@ def main():
             "median_stages_ms": {s: median([f["stages_ms"][s] for f in frames if f["rendered"] and s in f["stages_ms"]])
                                  for s in cx.STAGES + ("total",)},
         }
-    first = runs[1.0][0]
+    first = runs["1.0"][0]
     cx.write_json(exp.path("viewer_responsiveness.json"), {
         "experiment": "viewer_responsiveness", "quick": exp.quick, "model": first["model"],
         "primary_cells": first["primary_cells"], "configuration": first["configuration"],
@@ -98,25 +120,45 @@ def main():
                      "timing": first["timing"]},
         "context": {**exp.context(first), "git_revision": revision, "gl_version": first["gl_version"], "gl_platform": first["gl_platform"],
                     "git_revision_viewer": first["git_revision"]},
-        "by_render_scale": summary, "runs": {str(k): v for k, v in runs.items()}})
+        "by_configuration": summary, "runs": runs})
 
     rows = ["| render scale | render size | frame while the view changes (ms) | rounds' medians | fps "
             "| frame with a still view (ms) | fps | stage 1 | stage 2 | mean filter | SSAO | cutaway total |", "|" + "---|" * 12]
-    for scale, s in summary.items():
+    for name, s in summary.items():
+        if s["interaction_fps"] > 0:
+            continue  # its frames have two sizes: the table below
         st = s["median_stages_ms"]
         by_round = s["median_loop_ms_rendering_by_round"]
-        rows.append(f"| {float(scale):.0%} | {s['render_size'][0]}x{s['render_size'][1]} | "
+        rows.append(f"| {s['render_scale']:.0%} | {s['render_size'][0]}x{s['render_size'][1]} | "
                     f"{s['median_loop_ms_rendering']:.0f} | {min(by_round):.0f}-{max(by_round):.0f} | "
                     f"{s['frames_per_second_rendering']:.1f} | "
                     f"{s['median_loop_ms_idle']:.1f} | {s['frames_per_second_idle']:.0f} | {st['cut_surface']:.0f} | "
                     f"{st['secondary']:.0f} | {st['mean_filter']:.0f} | {st['ssao']:.0f} | {st['total']:.0f} |")
+    moving_rows = ["| configuration | frames drawn while turning | frame while turning (ms) | rounds' medians | fps "
+                   "| render widths while turning | median render size | full-size frames after the drag (ms) |",
+                   "|" + "---|" * 8]
+    for name, s in summary.items():
+        if s["interaction_fps"] <= 0:
+            continue
+        by_round = s["median_loop_ms_moving_by_round"]
+        width, height = s["median_moving_render_size"]
+        moving_rows.append(f"| {s['render_scale']:.0%}, --interaction-fps {s['interaction_fps']:g}, mouse button held "
+                           f"| {s['moving_frames']} | {s['median_loop_ms_moving']:.0f} | {min(by_round):.0f}-{max(by_round):.0f} "
+                           f"| {s['frames_per_second_moving']:.1f} | {min(s['moving_render_widths'])}-{max(s['moving_render_widths'])} "
+                           f"| {width:.0f}x{height:.0f} | {s['median_loop_ms_not_moving']:.0f} |")
     with open(exp.path("viewer_responsiveness.md"), "w") as f:
         f.write(f"# Viewer responsiveness: petra, {size[0]}x{size[1]} window, {first['gl_renderer']}\n\n"
                 f"Written by experiments/viewer_responsiveness/run.py (git {revision}, "
                 f"LP_NUM_THREADS={os.environ['LP_NUM_THREADS']}, {first['gl_platform']} under Xvfb). Medians over "
                 f"{turns + ranges} frames that re-render the cutaway (camera turns, primary-range changes) and {idle} "
                 f"frames with a still view (panel and overlay redrawn over the last cutaway) per run, pooled over "
-                f"{rounds} interleaved round(s) of the render scales.\n\n" + "\n".join(rows) + "\n")
+                f"{rounds} interleaved round(s) of the configurations.\n\n" + "\n".join(rows) + "\n\n"
+                f"Turning the camera with the mouse button held (script `drag on` ... `drag off`), the viewer draws "
+                f"smaller frames sized to hold {configurations['1.0-moving'][1]} frames per second "
+                f"(src/viewer/interaction_resolution.h: it starts at half the size, steps by the median of the frames "
+                f"it measures, never below a quarter) and the full size once the drag ends; the primary-range changes "
+                f"after it are drawn at the full size. The first frame of the run at each new size, which allocates "
+                f"its targets, is among the frames while turning.\n\n" + "\n".join(moving_rows) + "\n")
     print("wrote", os.path.relpath(exp.path("viewer_responsiveness.md"), cx.REPO))
 
 

@@ -122,6 +122,27 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
     set_colouring(std::vector<float>(grid.cell_count(), 0.0f), {"", 0, 1, ""});
 }
 
+namespace {
+/// Replaces per-pixel `targets` by a set of `width` x `height`, the old ones freed first (a 1 x 1
+/// set stands in between), so the two sizes never hold memory at once.
+template <class Targets>
+void reallocate(Targets& targets, int width, int height) {
+    targets = Targets(1, 1);
+    targets = Targets(width, height);
+}
+}  // namespace
+
+void CutawayRenderer::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = checked_side(width, "width");
+    height_ = checked_side(height, "height");
+    reallocate(cut_, width_, height_);
+    reallocate(scene_, width_, height_);
+    reallocate(post_, width_, height_);
+    rear_shell_.resize(width_, height_);
+    unfreeze();
+}
+
 void CutawayRenderer::set_colouring(const std::vector<float>& values, const ColourBarLabel& label) {
     if (values.size() != grid_.cell_count())
         throw std::invalid_argument("colour values: " + std::to_string(values.size()) + ", expected one per cell");

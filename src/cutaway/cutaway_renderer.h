@@ -118,6 +118,10 @@ public:
     }
 
     const ModelFrame& frame() const { return frame_; }
+    /// Renders frames of `width` x `height` from now on: the per-pixel targets are reallocated,
+    /// the model's buffers and programs stay (the viewer's render size while the view moves).
+    /// Freeze view ends: the caller freezes again with a camera of the new size.
+    void resize(int width, int height);
     int width() const { return width_; }
     int height() const { return height_; }
 

@@ -14,8 +14,18 @@ RearShellDepth::RearShellDepth(const gl::ShaderLibrary& shaders, int width, int 
     // faces rasterised and binned.
     : program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}},
                              {{"CULL_FRONT", ""}})),
-      primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})),
-      depth_(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
+      primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})) {
+    allocate(width, height);
+}
+
+void RearShellDepth::resize(int width, int height) {
+    if (width != depth_.width() || height != depth_.height()) allocate(width, height);
+}
+
+void RearShellDepth::allocate(int width, int height) {
+    framebuffer_ = {};
+    depth_ = {};  // the old image goes before the new one is allocated
+    depth_ = gl::Texture(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height);
     framebuffer_.attach(GL_DEPTH_ATTACHMENT, depth_);
     const std::array<GLenum, 1> none{GL_NONE};
     framebuffer_.finish(none, "rear shell depth");

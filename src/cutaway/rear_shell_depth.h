@@ -16,6 +16,8 @@ namespace cutaway::pipeline {
 class RearShellDepth {
 public:
     RearShellDepth(const gl::ShaderLibrary& shaders, int width, int height);
+    /// A depth image of the new size (the programs stay).
+    void resize(int width, int height);
     /// Draws the shell and fault faces (a fault face may be partly uncovered, so the model may end
     /// there) from `cut_camera` keeping the farthest: (s - near) / (far - near) of the cut camera
     /// in depth(), 0 where no such face covers the pixel, 1 (the far plane) where a primary does.
@@ -23,6 +25,8 @@ public:
     const gl::Texture& depth() const { return depth_; }
 
 private:
+    void allocate(int width, int height);
+
     gl::Program program_;
     gl::Program primaries_program_;  ///< primary faces at the far plane: no clamp there
     gl::Texture depth_;

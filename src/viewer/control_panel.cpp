@@ -128,6 +128,8 @@ unsigned view_section(ViewerState& state, const PanelInfo& info, PanelRequests& 
         state.render_scale = values[current];
         changes |= change_size;
     }
+    // While a drag turns the view, frames are drawn smaller to hold this rate (0: never smaller).
+    ImGui::SliderFloat("fps while moving", &state.interaction_fps, 0.0f, 30.0f, state.interaction_fps > 0 ? "%.0f" : "off");
     ImGui::Text("render %d x %d", info.render_width, info.render_height);
     if (state.pose.distance > 0)
         ImGui::Text("camera az %.1f el %.1f dist %.4g", state.pose.azimuth_deg, state.pose.elevation_deg, state.pose.distance);

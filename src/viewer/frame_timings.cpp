@@ -30,10 +30,10 @@ void FrameTimings::add_render(const pipeline::FrameTimes& times) {
     }
 }
 
-void FrameTimings::add_loop(double loop_ms, bool rendered) {
-    (rendered ? loop_rendering_ : loop_idle_).add(loop_ms);
-    last_loop_ms_ = loop_ms;
-    records_.push_back({rendered, loop_ms, rendered ? std::move(pending_) : std::map<std::string, double>{}});
+void FrameTimings::add_loop(const LoopPass& pass) {
+    (pass.rendered ? loop_rendering_ : loop_idle_).add(pass.loop_ms);
+    last_loop_ms_ = pass.loop_ms;
+    records_.push_back({pass, pass.rendered ? std::move(pending_) : std::map<std::string, double>{}});
     pending_.clear();
 }
 
@@ -55,8 +55,13 @@ nlohmann::json FrameTimings::to_json() const {
     std::map<std::string, std::vector<double>> stage_runs;
     for (std::size_t i = 0; i < records_.size(); ++i) {
         const Record& r = records_[i];
-        frames.push_back({{"frame", i}, {"rendered", r.rendered}, {"loop_ms", r.loop_ms}, {"stages_ms", r.stage_ms}});
-        (r.rendered ? loops_rendering : loops_idle).push_back(r.loop_ms);
+        nlohmann::json frame = {{"frame", i}, {"rendered", r.pass.rendered}, {"loop_ms", r.pass.loop_ms}, {"stages_ms", r.stage_ms}};
+        if (r.pass.rendered) {
+            frame["render_size"] = {r.pass.render_width, r.pass.render_height};
+            frame["view_moving"] = r.pass.view_moving;
+        }
+        frames.push_back(frame);
+        (r.pass.rendered ? loops_rendering : loops_idle).push_back(r.pass.loop_ms);
         for (const auto& [name, ms] : r.stage_ms) stage_runs[name].push_back(ms);
     }
     nlohmann::json stage_medians = nlohmann::json::object();

@@ -12,6 +12,15 @@
 
 namespace cutaway::viewer {
 
+/// One pass of the viewer loop as --stats records it.
+struct LoopPass {
+    double loop_ms = 0;        ///< wall clock: events, script, panel, render if needed, blit, swap
+    bool rendered = false;     ///< a cutaway frame was drawn in it
+    int render_width = 0;      ///< of the frame drawn (0 when none was)
+    int render_height = 0;
+    bool view_moving = false;  ///< drawn while the view moved (interaction_resolution.h)
+};
+
 struct StageMedian {
     double wall_ms = 0;       ///< rolling median of the fenced wall-clock time
     double gl_query_ms = 0;   ///< rolling median of GL_TIME_ELAPSED
@@ -24,8 +33,8 @@ public:
 
     /// A cutaway frame was rendered with these fenced stage times.
     void add_render(const pipeline::FrameTimes& times);
-    /// One pass of the viewer loop (events, render if needed, panel, swap), wall clock.
-    void add_loop(double loop_ms, bool rendered);
+    /// One pass of the viewer loop (events, render if needed, panel, swap).
+    void add_loop(const LoopPass& pass);
 
     /// Stage names in pipeline order, then "total".
     std::vector<std::string> stage_order() const;
@@ -46,8 +55,7 @@ private:
         bool valid = false;
     };
     struct Record {
-        bool rendered = false;
-        double loop_ms = 0;
+        LoopPass pass;
         std::map<std::string, double> stage_ms;
     };
     std::size_t window_;

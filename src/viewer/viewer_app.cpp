@@ -23,6 +23,10 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// The wheel counts as moving the view for this long after its last step: a flick of the wheel
+/// gives several steps a few frames apart.
+constexpr std::chrono::milliseconds wheel_moves_for(400);
+
 double milliseconds_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
@@ -79,6 +83,7 @@ ViewerApp::ViewerApp(ViewerOptions options)
     state_.frozen_pose = options_.render.freeze_pose;
     state_.ui_visible = !options_.no_ui;
     state_.render_scale = options_.render_scale;
+    state_.interaction_fps = options_.interaction_fps;
     settings_ = state_.options.frame_settings();
     info_.gl_renderer = gl::gl_renderer() + " (" + window_.platform() + ")";
     window_fb_width_ = window_.framebuffer_width();
@@ -89,8 +94,11 @@ ViewerApp::ViewerApp(ViewerOptions options)
         info_.message = "no cell lies in the primary range; showing the context only";
 }
 
-int ViewerApp::render_width() const { return std::max(1, int(std::lround(window_fb_width_ * state_.render_scale))); }
-int ViewerApp::render_height() const { return std::max(1, int(std::lround(window_fb_height_ * state_.render_scale))); }
+float ViewerApp::render_factor() const {
+    return state_.render_scale * (drawing_smaller() ? interaction_.factor() : 1.0f);
+}
+int ViewerApp::render_width() const { return std::max(1, int(std::lround(window_fb_width_ * render_factor()))); }
+int ViewerApp::render_height() const { return std::max(1, int(std::lround(window_fb_height_ * render_factor()))); }
 
 pipeline::Camera ViewerApp::camera_for(const pipeline::OrbitPose& pose) const {
     const pipeline::CutawayRenderer& renderer = scene_->renderer();
@@ -122,6 +130,7 @@ bool ViewerApp::frame(bool last_frame_due) {
         script_->run_frame([&](const ScriptStep& step) { return run_step(step, changes); });
     imgui_.begin_frame();
     changes |= handle_keys() | mouse_camera() | advance_play();
+    changes |= track_movement();
     PanelRequests requests;
     if (state_.ui_visible) {
         info_.render_width = render_width();
@@ -139,12 +148,16 @@ bool ViewerApp::frame(bool last_frame_due) {
     }
     apply(changes);
 
-    bool rendered = false;
+    LoopPass pass;
+    bool resized = false;
     if (needs_render_ && window_fb_width_ > 0 && window_fb_height_ > 0) {
+        // A new size reallocates only the per-pixel targets: the model's buffers and programs stay.
+        resized = render_width() != scene_->renderer().width() || render_height() != scene_->renderer().height();
+        scene_->renderer().resize(render_width(), render_height());
         sync_freeze();
         timings_.add_render(scene_->renderer().render(settings_, camera_for(state_.pose)));
         needs_render_ = false;
-        rendered = true;
+        pass = {0, true, render_width(), render_height(), drawing_smaller()};
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, window_fb_width_, window_fb_height_);
@@ -157,7 +170,11 @@ bool ViewerApp::frame(bool last_frame_due) {
     if (!screenshot_due_.empty()) write_screenshot(std::exchange(screenshot_due_, {}));
     if (stopping && !options_.screenshot.empty()) write_screenshot(options_.screenshot);
     window_.swap_buffers();
-    timings_.add_loop(milliseconds_since(started), rendered);
+    pass.loop_ms = milliseconds_since(started);
+    timings_.add_loop(pass);
+    // Frame 0 compiles the programs and the first frame of a size allocates its targets: their
+    // times say nothing about the size (the first 640 x 360 frame on petra took 287 ms, the next 138).
+    if (pass.view_moving && !resized && frame_index_ > 0) interaction_.frame_drawn(pass.loop_ms, state_.interaction_fps);
     if (frame_index_ == 0) std::cout << "cutaway view: ready (first frame drawn)\n" << std::flush;
     ++frame_index_;
     return !stopping;
@@ -191,9 +208,18 @@ unsigned ViewerApp::press_key(const std::string& name) {
     return change_none;
 }
 
+unsigned ViewerApp::track_movement() {
+    const bool was_moving = view_moving_;
+    view_moving_ = mouse_dragging_ || state_.script_drag || Clock::now() - last_wheel_ < wheel_moves_for;
+    return view_moving_ != was_moving && state_.interaction_fps > 0 ? change_frame : change_none;
+}
+
 unsigned ViewerApp::mouse_camera() {
     const ImGuiIO& io = ImGui::GetIO();
+    mouse_dragging_ = false;
     if (io.WantCaptureMouse || window_fb_height_ <= 0) return change_none;
+    mouse_dragging_ = ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) || ImGui::IsMouseDragging(ImGuiMouseButton_Right, 0) ||
+                      ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0);
     const float height = float(window_fb_height_);
     const pipeline::Camera camera = camera_for(state_.pose);
     unsigned changes = change_none;
@@ -207,6 +233,7 @@ unsigned ViewerApp::mouse_camera() {
         changes = change_frame;
     }
     if (io.MouseWheel != 0) {
+        last_wheel_ = Clock::now();
         zoom(state_.pose, camera, std::pow(0.9f, io.MouseWheel));
         changes = change_frame;
     }
@@ -223,6 +250,7 @@ bool ViewerApp::run_step(const ScriptStep& step, unsigned& changes) {
     else if (step.action == "camera") state_.pose = {number(0), number(1), number(2), glm::vec3(0)};
     else if (step.action == "set") changes |= apply_option_tokens(state_.options, step.args);
     else if (step.action == "key") changes |= press_key(step.args.at(0));
+    else if (step.action == "drag") state_.script_drag = on_off(step.args.at(0));
     else if (step.action == "freeze") {
         if (on_off(step.args.at(0)) != state_.frozen_pose.has_value()) changes |= press_key("F");
     } else if (step.action == "play") state_.playing = on_off(step.args.at(0));
@@ -260,13 +288,7 @@ void ViewerApp::apply(unsigned changes) {
             info_.message = error.what();  // the panel shows it; the previous selection stays
         }
     }
-    if (changes & change_size) rebuild_renderer();
-    needs_render_ = true;
-}
-
-void ViewerApp::rebuild_renderer() {
-    if (window_fb_width_ <= 0 || window_fb_height_ <= 0) return;  // minimised: keep the old one
-    scene_->rebuild_renderer(render_width(), render_height(), settings_);
+    needs_render_ = true;  // a new size (change_size) is taken before the frame is drawn
 }
 
 void ViewerApp::reload_shaders_if_edited() {
@@ -310,6 +332,7 @@ void ViewerApp::write_stats() const {
     stats["window_size"] = {window_fb_width_, window_fb_height_};
     stats["render_size"] = {render_width(), render_height()};
     stats["render_scale"] = state_.render_scale;
+    stats["interaction_fps"] = state_.interaction_fps;
     stats["model"] = scene_->description();
     stats["primary_cells"] = scene_->primary_count();
     stats["script"] = options_.script;

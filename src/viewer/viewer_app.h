@@ -13,6 +13,7 @@
 #include "viewer/control_panel.h"
 #include "viewer/frame_timings.h"
 #include "viewer/imgui_session.h"
+#include "viewer/interaction_resolution.h"
 #include "viewer/script_runner.h"
 #include "viewer/shader_watcher.h"
 #include "viewer/viewer_options.h"
@@ -38,15 +39,22 @@ private:
     bool run_step(const ScriptStep& step, unsigned& changes);
     unsigned advance_play();
     void apply(unsigned changes);
-    void rebuild_renderer();
+    /// Whether the view moves now (a drag, the wheel in the last moments, a script's drag); a
+    /// change of that re-renders (smaller as it starts, the full size as it stops).
+    unsigned track_movement();
+    /// Whether frames are drawn at the interaction resolution now.
+    bool drawing_smaller() const { return view_moving_ && state_.interaction_fps > 0; }
     void reload_shaders_if_edited();
     pipeline::Camera camera_for(const pipeline::OrbitPose& pose) const;
     void sync_freeze();
     void write_screenshot(const std::string& path) const;
     std::string next_screenshot_name();
     void write_stats() const;
+    /// The render size: the window's at the render scale, times the interaction factor while the
+    /// view moves.
     int render_width() const;
     int render_height() const;
+    float render_factor() const;
 
     ViewerOptions options_;
     ViewerState state_;
@@ -63,6 +71,10 @@ private:
     FrameTimings timings_;
     PanelInfo info_;
     bool needs_render_ = true;
+    InteractionResolution interaction_;
+    bool mouse_dragging_ = false;  ///< a button held and moved over the frame (not the panel)
+    std::chrono::steady_clock::time_point last_wheel_{};
+    bool view_moving_ = false;
     bool quit_ = false;
     std::string screenshot_due_;    ///< path to write once this frame is drawn
     int window_fb_width_ = 0, window_fb_height_ = 0;

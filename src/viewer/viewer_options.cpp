@@ -17,6 +17,10 @@ void add_viewer_options(CLI::App& c, ViewerOptions& o) {
         ->check(app::writable_output());
     c.add_option("--render-scale", o.render_scale, "render size as a fraction of the window (0.25..1)")
         ->check(app::finite_in(0.25, 1));
+    c.add_option("--interaction-fps", o.interaction_fps,
+                 "while the view moves (dragging, wheel, a script's drag on), draw smaller frames to hold this many "
+                 "per second, and the full size once it stops (0: always the full size)")
+        ->check(app::finite_in(0, 240));
     c.add_option("--timing-window", o.timing_window, "frames in the overlay's rolling medians")
         ->check(app::finite_in(1, 1000));
 }

@@ -16,6 +16,7 @@ struct ViewerOptions {
     bool no_ui = false;         ///< start with the panel and overlay hidden (H shows them)
     std::string stats;          ///< --stats FILE: per-frame loop and stage times, configuration, machine
     float render_scale = 1;     ///< render size / window size
+    float interaction_fps = 10; ///< frames per second held while the view moves (0: full size always)
     int timing_window = 31;     ///< frames in the rolling medians
 };
 

@@ -122,7 +122,7 @@ struct ActionRule {
     void (*check)(Args& args);  ///< throws LineProblem; may normalise args
 };
 
-constexpr std::array<ActionRule, 13> action_rules{{
+constexpr std::array<ActionRule, 14> action_rules{{
     {"wait", "wait N (whole number of frames, 0..100000)", "render N frames before the next action", check_wait},
     {"sleep", "sleep SECONDS (0..3600)", "keep drawing for SECONDS of wall clock before the next action", check_sleep},
     {"orbit", "orbit DAZ DEL (degrees)", "add DAZ to the azimuth and DEL to the elevation", check_orbit},
@@ -134,6 +134,8 @@ constexpr std::array<ActionRule, 13> action_rules{{
      check_set},
     {"key", "key NAME (F, H, R, SPACE, F12 or ESCAPE)",
      "press a key: F freeze, H panel, R reset camera, SPACE play, F12 screenshot, ESCAPE quit", check_key},
+    {"drag", "drag on|off", "hold or release the mouse button: while held the view is moving (--interaction-fps)",
+     check_on_off},
     {"freeze", "freeze on|off", "freeze or release the cut surface", check_on_off},
     {"play", "play on|off", "play or pause the time steps", check_on_off},
     {"ui", "ui on|off", "show or hide the panel", check_on_off},

@@ -16,6 +16,10 @@ struct ViewerState {
     int play_every_frames = 1;                     ///< frames per time step while playing
     bool ui_visible = true;                        ///< control panel and timing overlay
     float render_scale = 1;                        ///< render size / window framebuffer size
+    /// While the view moves, frames are drawn smaller to hold this many per second (interaction_
+    /// resolution.h); the full size once it stops. 0: always the full size.
+    float interaction_fps = 10;
+    bool script_drag = false;                      ///< a script's `drag on`: the view is moving
 };
 
 /// What a change to the state invalidates, from cheapest to dearest.
@@ -23,7 +27,7 @@ enum Change : unsigned {
     change_none = 0,
     change_frame = 1,      ///< re-render with the new settings or camera
     change_selection = 2,  ///< property, step or range: new colouring and primaries
-    change_size = 4,       ///< render size: a new renderer
+    change_size = 4,       ///< render size: the renderer's per-pixel targets are reallocated
 };
 
 }  // namespace cutaway::viewer

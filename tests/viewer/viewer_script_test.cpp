@@ -36,13 +36,14 @@ TEST(ViewerScript, FullScriptParsesToSteps) {
         "key space\n"
         "Key f12\n"
         "freeze on\n"
+        "drag on\n"
         "play off\n"
         "ui off\n"
         "   screenshot  out/frame.png\n"
         "quit\n";
     const ViewerScript script = parse_viewer_script_text(text, "tour.txt");
     EXPECT_EQ(script.path, "tour.txt");
-    ASSERT_EQ(script.steps.size(), 13u);
+    ASSERT_EQ(script.steps.size(), 14u);
     const auto expect_step = [&](std::size_t index, int line, const std::string& action, const Args& args) {
         SCOPED_TRACE(index);
         EXPECT_EQ(script.steps[index].line, line);
@@ -58,10 +59,11 @@ TEST(ViewerScript, FullScriptParsesToSteps) {
     expect_step(6, 9, "key", {"SPACE"});
     expect_step(7, 10, "key", {"F12"});
     expect_step(8, 11, "freeze", {"on"});
-    expect_step(9, 12, "play", {"off"});
-    expect_step(10, 13, "ui", {"off"});
-    expect_step(11, 14, "screenshot", {"out/frame.png"});
-    expect_step(12, 15, "quit", {});
+    expect_step(9, 12, "drag", {"on"});
+    expect_step(10, 13, "play", {"off"});
+    expect_step(11, 14, "ui", {"off"});
+    expect_step(12, 15, "screenshot", {"out/frame.png"});
+    expect_step(13, 16, "quit", {});
     EXPECT_EQ(describe(script, script.steps[5]), "tour.txt:8: set --border threshold --ssao off");
 }
 
@@ -133,7 +135,7 @@ TEST(ViewerScript, HelpListsEveryAction) {
     const std::string help = script_actions_help();
     for (const std::string& action : script_actions())
         EXPECT_NE(help.find("  " + action), std::string::npos) << action;
-    EXPECT_EQ(script_actions().size(), 13u);
+    EXPECT_EQ(script_actions().size(), 14u);
 }
 
 class ViewerScriptFileTest : public ::testing::Test {

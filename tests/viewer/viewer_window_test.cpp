@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "annotation/colour_bar_layout.h"
 #include "app/model_source.h"
@@ -101,6 +102,44 @@ TEST_F(ViewerWindowTest, ScreenshotEqualsRenderForTheSameCamera) {
     // Same renderer, shaders and driver: measured bit-identical. 0.1% of pixels may move by more
     // than 2 levels so a driver that schedules its rasteriser threads differently still passes.
     EXPECT_LE(differing_fraction(viewed, rendered, 2), 0.001);
+}
+
+TEST_F(ViewerWindowTest, FramesAreSmallerWhileTheViewMovesAndFullSizeOnceItStops) {
+    // --interaction-fps 240: no frame holds that rate, so every decision takes the next smaller
+    // size (interaction_resolution.h: starting at half the size, 2 frames measured per size after
+    // the first at a new size, which allocates its targets and is not counted).
+    std::ofstream script(path("drag.txt"));
+    script << "drag on\n";
+    for (int turn = 0; turn < 7; ++turn) script << "orbit 10 0\nwait 1\n";
+    script << "drag off\nwait 1\nscreenshot " << path("still.png") << "\nquit\n";
+    script.close();
+    const CommandResult view = run_command(
+        view_command("--no-ui --interaction-fps 240 --script " + path("drag.txt") + " --stats " + path("stats.json")));
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    std::ifstream stats_file(path("stats.json"));
+    const nlohmann::json stats = nlohmann::json::parse(stats_file);
+    std::vector<int> moving_widths;
+    nlohmann::json last_drawn;
+    for (const nlohmann::json& frame : stats["frames"]) {
+        if (!frame["rendered"].get<bool>()) continue;
+        last_drawn = frame;
+        if (frame["view_moving"].get<bool>()) {
+            moving_widths.push_back(frame["render_size"][0].get<int>());
+            EXPECT_LE(std::abs(frame["render_size"][0].get<int>() * 180 - frame["render_size"][1].get<int>() * 320), 320)
+                << "the window's aspect ratio, to a pixel of rounding: " << frame.dump();
+        }
+    }
+    EXPECT_EQ(moving_widths, (std::vector<int>{160, 160, 160, 134, 134, 134, 112})) << "one frame per turn, at 0.5, 0.42, 0.35";
+    EXPECT_FALSE(last_drawn["view_moving"].get<bool>());
+    EXPECT_EQ(last_drawn["render_size"], nlohmann::json::array({320, 180})) << "the full size once the drag ends";
+    EXPECT_EQ(stats["interaction_fps"].get<double>(), 240.0);
+
+    // The still frame after the smaller ones is render's frame of the same camera: the resized
+    // targets leave nothing behind (7 turns of 10 degrees from azimuth 35).
+    const CommandResult render = run_command(cutaway_binary + " render preset:petra --size 320 180 --camera 105 30 0 "
+                                             "--no-colour-bar --no-metrics --warmup 0 --repeat 1 --out " + path("render.png"));
+    ASSERT_EQ(render.exit_code, 0) << render.output;
+    EXPECT_LE(differing_fraction(gl::read_png(path("still.png")), gl::read_png(path("render.png")), 2), 0.001);
 }
 
 TEST_F(ViewerWindowTest, PrimariesAppearWhereRenderPutsThem) {
