@@ -14,9 +14,11 @@ re-renders the cutaway, as while dragging the mouse), changes the primary range 
 then leaves the camera still (frames that only redraw the panel over the last cutaway). Each
 render scale (the panel's "render scale": the cutaway is rendered smaller and scaled up) is one
 run with --interaction-fps 0 (every frame at that scale). A third run turns the camera with the
-mouse button held (the script's `drag on` ... `drag off`) and --interaction-fps 10: while the view
-moves the viewer draws smaller frames, sized to hold 10 per second from the frames it measures
-(src/viewer/interaction_resolution.h), and the full size once it stops. The runs go in 3
+mouse button held (the script's `drag on` ... `drag off`, twice, as a user orbits again and again)
+and --interaction-fps 10: while the view moves the viewer draws smaller frames, sized to hold 10
+per second from the frames it measures (src/viewer/interaction_resolution.h), and the full size
+once it stops. The first drag starts at half the size; the second where the first ended. Each
+drag is reported on its own. The runs go in 3
 interleaved rounds (100%, 50%, 100% while moving, 100%, ...; 1 with --quick), so a slow spell of
 this shared machine does not fall on one configuration only. The viewer's --stats file holds every
 frame's loop time (events, script, panel, render when something changed, blit, swap) and its
@@ -35,12 +37,27 @@ import cutaway_experiment as cx  # noqa: E402
 
 def script_text(turns, ranges, idle, screenshot, drag):
     lines = ["# written by experiments/viewer_responsiveness/run.py", "wait 3"]
-    lines += ["drag on"] if drag else []
-    lines += ["orbit 15 0\nwait 1"] * turns
-    lines += ["drag off"] if drag else []
+    if drag:  # two drags, the full size drawn between them
+        lines += (["drag on"] + ["orbit 15 0\nwait 1"] * turns + ["drag off", "wait 2"]) * 2
+    else:
+        lines += ["orbit 15 0\nwait 1"] * turns
     lines += [f"set --range {0.30 + 0.005 * i:.3f} 0.40\nwait 1" for i in range(ranges)]
     lines += [f"wait {idle}", f"screenshot {screenshot}" if screenshot else "wait 1", "quit"]
     return "\n".join(lines) + "\n"
+
+
+def drags(frames):
+    """The frames drawn while the view moved, split into drags (a full-size frame ends one)."""
+    groups, current = [], []
+    for f in frames:
+        if not f["rendered"]:
+            continue
+        if f.get("view_moving"):
+            current.append(f)
+        elif current:
+            groups.append(current)
+            current = []
+    return groups + ([current] if current else [])
 
 
 def median(values):
@@ -89,19 +106,25 @@ def main():
         rendering = [f["loop_ms"] for f in frames if f["rendered"]]
         idle_frames = [f["loop_ms"] for f in frames if not f["rendered"]]
         round_medians = [median([f["loop_ms"] for f in run["frames"][1:] if f["rendered"]]) for run in scale_runs]
-        # Frames drawn while the view moved (only the run with the mouse button held has them).
-        moving = [f for f in frames if f["rendered"] and f.get("view_moving")]
-        moving_round_medians = [median([f["loop_ms"] for f in run["frames"][1:] if f["rendered"] and f.get("view_moving")])
-                                for run in scale_runs]
+        # Frames drawn while the view moved (only the run with the mouse button held has them), by
+        # drag: the first starts at half the size, the second where the first ended.
+        by_drag = [drags(run["frames"][1:]) for run in scale_runs]
+        moving = {}
+        for index, label in enumerate(("first_drag", "second_drag")):
+            drag_frames = [f for run in by_drag if len(run) > index for f in run[index]]
+            if not drag_frames:
+                continue
+            loop = median([f["loop_ms"] for f in drag_frames])
+            moving[label] = {
+                "frames": len(drag_frames), "median_loop_ms": loop, "frames_per_second": 1000.0 / loop,
+                "median_loop_ms_by_round": [median([f["loop_ms"] for f in run[index]]) for run in by_drag if len(run) > index],
+                "render_widths": sorted({f["render_size"][0] for f in drag_frames}),
+                "median_render_size": [median([f["render_size"][k] for f in drag_frames]) for k in (0, 1)],
+                "median_stages_ms": {s: median([f["stages_ms"].get(s, 0.0) for f in drag_frames]) for s in cx.STAGES + ("total",)}}
         still_full_size = [f["loop_ms"] for f in frames if f["rendered"] and not f.get("view_moving")]
         summary[name] = {
             "render_scale": configurations[name][0], "interaction_fps": configurations[name][1],
-            "moving_frames": len(moving),
-            "median_loop_ms_moving": median([f["loop_ms"] for f in moving]),
-            "median_loop_ms_moving_by_round": moving_round_medians if moving else [],
-            "frames_per_second_moving": 1000.0 / median([f["loop_ms"] for f in moving]) if moving else 0.0,
-            "moving_render_widths": sorted({f["render_size"][0] for f in moving}),
-            "median_moving_render_size": [median([f["render_size"][k] for f in moving]) for k in (0, 1)] if moving else [],
+            "while_moving": moving,
             "median_loop_ms_not_moving": median(still_full_size),
             "render_size": stats["render_size"], "window_size": stats["window_size"], "rounds": len(scale_runs),
             "median_loop_ms_rendering_by_round": round_medians,
@@ -134,18 +157,18 @@ def main():
                     f"{s['frames_per_second_rendering']:.1f} | "
                     f"{s['median_loop_ms_idle']:.1f} | {s['frames_per_second_idle']:.0f} | {st['cut_surface']:.0f} | "
                     f"{st['secondary']:.0f} | {st['mean_filter']:.0f} | {st['ssao']:.0f} | {st['total']:.0f} |")
-    moving_rows = ["| configuration | frames drawn while turning | frame while turning (ms) | rounds' medians | fps "
-                   "| render widths while turning | median render size | full-size frames after the drag (ms) |",
-                   "|" + "---|" * 8]
+    moving_rows = ["| configuration | drag | frames drawn while turning | frame while turning (ms) | rounds' medians | fps "
+                   "| render widths | median render size | cutaway total (ms) | full-size frames (ms) |",
+                   "|" + "---|" * 10]
     for name, s in summary.items():
-        if s["interaction_fps"] <= 0:
-            continue
-        by_round = s["median_loop_ms_moving_by_round"]
-        width, height = s["median_moving_render_size"]
-        moving_rows.append(f"| {s['render_scale']:.0%}, --interaction-fps {s['interaction_fps']:g}, mouse button held "
-                           f"| {s['moving_frames']} | {s['median_loop_ms_moving']:.0f} | {min(by_round):.0f}-{max(by_round):.0f} "
-                           f"| {s['frames_per_second_moving']:.1f} | {min(s['moving_render_widths'])}-{max(s['moving_render_widths'])} "
-                           f"| {width:.0f}x{height:.0f} | {s['median_loop_ms_not_moving']:.0f} |")
+        for label, m in s["while_moving"].items():
+            by_round = m["median_loop_ms_by_round"]
+            width, height = m["median_render_size"]
+            moving_rows.append(f"| {s['render_scale']:.0%}, --interaction-fps {s['interaction_fps']:g}, mouse button held "
+                               f"| {label.replace('_', ' ')} | {m['frames']} | {m['median_loop_ms']:.0f} "
+                               f"| {min(by_round):.0f}-{max(by_round):.0f} | {m['frames_per_second']:.1f} "
+                               f"| {min(m['render_widths'])}-{max(m['render_widths'])} | {width:.0f}x{height:.0f} "
+                               f"| {m['median_stages_ms']['total']:.0f} | {s['median_loop_ms_not_moving']:.0f} |")
     with open(exp.path("viewer_responsiveness.md"), "w") as f:
         f.write(f"# Viewer responsiveness: petra, {size[0]}x{size[1]} window, {first['gl_renderer']}\n\n"
                 f"Written by experiments/viewer_responsiveness/run.py (git {revision}, "
@@ -157,8 +180,9 @@ def main():
                 f"smaller frames sized to hold {configurations['1.0-moving'][1]} frames per second "
                 f"(src/viewer/interaction_resolution.h: it starts at half the size, steps by the median of the frames "
                 f"it measures, never below a quarter) and the full size once the drag ends; the primary-range changes "
-                f"after it are drawn at the full size. The first frame of the run at each new size, which allocates "
-                f"its targets, is among the frames while turning.\n\n" + "\n".join(moving_rows) + "\n")
+                f"after the drags are drawn at the full size. The first drag starts at half the size, the second where "
+                f"the first ended; the first frame at each new size, which allocates its targets, is among the frames "
+                f"while turning.\n\n" + "\n".join(moving_rows) + "\n")
     print("wrote", os.path.relpath(exp.path("viewer_responsiveness.md"), cx.REPO))
 
 
