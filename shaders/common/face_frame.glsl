@@ -8,6 +8,7 @@ struct FaceFrame {
     bool back_facing;  // the eye is on the inner side: the face is seen from inside its cell
     bool collapsed;    // zero area (pinch-out): never drawn
     bool any_triangle_front_facing;  // either drawn triangle (0,1,2), (0,2,3) faces the eye (or is edge-on)
+    bool any_triangle_back_facing;   // either faces away from it (or is edge-on)
 };
 
 // The frame of the quad q (a face's 4 corners in face_corners order) of `cell`.
@@ -24,6 +25,7 @@ FaceFrame face_frame_of_quad(vec3 q[4], uint cell, vec3 eye) {
     vec3 first = cross(f.q[1] - f.q[0], f.q[2] - f.q[0]), second = cross(f.q[2] - f.q[0], f.q[3] - f.q[0]);
     float sign = cell_normals_flipped(cell) ? -1.0 : 1.0;
     f.any_triangle_front_facing = sign * dot(first, eye - f.q[0]) >= 0.0 || sign * dot(second, eye - f.q[0]) >= 0.0;
+    f.any_triangle_back_facing = sign * dot(first, eye - f.q[0]) <= 0.0 || sign * dot(second, eye - f.q[0]) <= 0.0;
     return f;
 }
 

@@ -101,7 +101,7 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
       primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
                     GL_DYNAMIC_STORAGE_BIT),
       shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
-      outer_(FaceBuffer::from(pipeline::outer_faces(layout))),
+      outer_(FaceBuffer::from(pipeline::outer_faces(layout, zcorn))),
       pillar_texels_(pillars_, GL_RGBA32F),
       corner_plane_texels_(corner_planes_, GL_RGBA32F),
       cell_texels_(cells_, GL_RG32UI),

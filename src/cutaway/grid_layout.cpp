@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "grid/cell_geometry.h"
+#include "grid/fault_cover.h"
 
 namespace cutaway::pipeline {
 namespace {
@@ -130,8 +131,24 @@ std::vector<std::uint32_t> shell_faces(const GridLayout& layout) {
     return faces_where(layout, [](grid::FaceClass c) { return c == grid::FaceClass::shell; });
 }
 
-std::vector<std::uint32_t> outer_faces(const GridLayout& layout) {
-    return faces_where(layout, [](grid::FaceClass c) { return c == grid::FaceClass::shell || c == grid::FaceClass::fault; });
+std::vector<std::uint32_t> outer_faces(const GridLayout& layout, const grid::ZcornStore& zcorn) {
+    const grid::GridDims& d = zcorn.dims();
+    std::vector<bool> active(d.cell_count(), false);
+    for (const std::uint32_t cell : layout.cells) active[cell & 0x7fffffffu] = true;
+    std::vector<std::uint32_t> faces;
+    for (std::uint32_t compact = 0; compact < layout.cells.size(); ++compact) {
+        const std::size_t cell = layout.cells[compact] & 0x7fffffffu;
+        const int i = int(cell % std::size_t(d.nx)), j = int(cell / std::size_t(d.nx) % std::size_t(d.ny)),
+                  k = int(cell / (std::size_t(d.nx) * std::size_t(d.ny)));
+        for (int s = 0; s < 6; ++s) {
+            const grid::FaceSide side(static_cast<grid::FaceSide>(s));
+            const grid::FaceClass face_class = layout.face_class(compact, side);
+            const bool outer = face_class == grid::FaceClass::shell ||
+                               (face_class == grid::FaceClass::fault && !grid::face_covered_across(zcorn, active, i, j, k, side));
+            if (outer) faces.push_back(pack_face(compact, side, face_class));
+        }
+    }
+    return faces;
 }
 
 std::vector<std::uint32_t> exposed_faces(const GridLayout& layout) {

@@ -11,7 +11,9 @@ RearShellDepth::RearShellDepth(const gl::ShaderLibrary& shaders, int width, int 
     // The seed shader writes exactly this: the cut camera's depth encoding, depth only.
     // Only back faces: where a ray leaves the closed outer surface it crosses a face whose cell lies
     // in front of it, so the farthest hit is always back-facing; culling the front half halves the
-    // faces rasterised and binned.
+    // faces rasterised and binned. A face is culled only when both its triangles face the eye
+    // (common/face.vert CULL_FRONT): its centre alone misjudges a warped face seen edge-on, which
+    // then left a covered fault face (grid/fault_cover.h) farthest at a few pixels.
     : program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}},
                              {{"CULL_FRONT", ""}})),
       primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})) {

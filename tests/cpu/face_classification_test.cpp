@@ -2,6 +2,7 @@
 
 #include "grid/box_grid.h"
 #include "grid/face_classification.h"
+#include "grid/fault_cover.h"
 #include "grid/grdecl_reader.h"
 #include "test_files.h"
 
@@ -63,4 +64,34 @@ TEST(FaceClassification, ReekHasFaultFacesOnlyBetweenActiveCells) {
             const int ni = ijk.i + (axis == 0) * step, nj = ijk.j + (axis == 1) * step, nk = ijk.k + (axis == 2) * step;
             ASSERT_TRUE(d.contains(ni, nj, nk) && grid.active(d.cell_index(ni, nj, nk)));
         }
+}
+
+TEST(FaultCover, OnlyTheFaultFacesTheThrowLeavesPartlyOpenBoundTheModel) {
+    // 3 layers of 10 m; cells with i >= 2 thrown down 4 m. The up-thrown side's top layer sticks out
+    // 4 m above the other side's top, the down-thrown side's bottom layer 4 m below the other's
+    // bottom: those two faces are partly open; the 4 others of each row lie against the stack across.
+    BoxGridSpec spec;
+    spec.dims = {4, 2, 3};
+    spec.fault_i = 2;
+    spec.fault_throw = 4;
+    const CornerPointGrid grid = make_box_grid(spec);
+    const std::vector<bool> active(grid.cell_count(), true);
+    const GridDims& d = grid.dims();
+    for (int j = 0; j < d.ny; ++j)
+        for (int k = 0; k < d.nz; ++k) {
+            EXPECT_EQ(face_covered_across(grid.zcorn(), active, 1, j, k, FaceSide::i_plus), k > 0) << j << ',' << k;
+            EXPECT_EQ(face_covered_across(grid.zcorn(), active, 2, j, k, FaceSide::i_minus), k < 2) << j << ',' << k;
+            // Interior faces against an unfaulted neighbour are covered by it alone; K faces never count.
+            EXPECT_TRUE(face_covered_across(grid.zcorn(), active, 0, j, k, FaceSide::i_plus));
+            EXPECT_FALSE(face_covered_across(grid.zcorn(), active, 1, j, k, FaceSide::k_plus));
+        }
+    EXPECT_FALSE(face_covered_across(grid.zcorn(), active, 3, 0, 1, FaceSide::i_plus)) << "the grid's edge";
+
+    // An inactive cell in the stack across breaks it: (1, 0, 1) spans 1010-1020 m, its neighbour
+    // (2, 0, 1) 1014-1024 m, and the 4 m above it needs (2, 0, 0).
+    std::vector<bool> holed = active;
+    holed[d.cell_index(2, 0, 0)] = false;
+    EXPECT_FALSE(face_covered_across(grid.zcorn(), holed, 1, 0, 1, FaceSide::i_plus));
+    EXPECT_TRUE(face_covered_across(grid.zcorn(), holed, 1, 0, 2, FaceSide::i_plus)) << "1020-1030 lies within 1014-1034";
+    EXPECT_TRUE(face_covered_across(grid.zcorn(), holed, 1, 1, 1, FaceSide::i_plus)) << "the other row is whole";
 }
