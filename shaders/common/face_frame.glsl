@@ -24,8 +24,9 @@ FaceFrame face_frame_of_quad(vec3 q[4], uint cell, vec3 eye) {
     // inside": a closed cell hides a face only when both of its triangles face away.
     vec3 first = cross(f.q[1] - f.q[0], f.q[2] - f.q[0]), second = cross(f.q[2] - f.q[0], f.q[3] - f.q[0]);
     float sign = cell_normals_flipped(cell) ? -1.0 : 1.0;
-    f.any_triangle_front_facing = sign * dot(first, eye - f.q[0]) >= 0.0 || sign * dot(second, eye - f.q[0]) >= 0.0;
-    f.any_triangle_back_facing = sign * dot(first, eye - f.q[0]) <= 0.0 || sign * dot(second, eye - f.q[0]) <= 0.0;
+    float towards_first = sign * dot(first, eye - f.q[0]), towards_second = sign * dot(second, eye - f.q[0]);
+    f.any_triangle_front_facing = towards_first >= 0.0 || towards_second >= 0.0;
+    f.any_triangle_back_facing = towards_first <= 0.0 || towards_second <= 0.0;
     return f;
 }
 

@@ -137,14 +137,12 @@ std::vector<std::uint32_t> outer_faces(const GridLayout& layout, const grid::Zco
     for (const std::uint32_t cell : layout.cells) active[cell & 0x7fffffffu] = true;
     std::vector<std::uint32_t> faces;
     for (std::uint32_t compact = 0; compact < layout.cells.size(); ++compact) {
-        const std::size_t cell = layout.cells[compact] & 0x7fffffffu;
-        const int i = int(cell % std::size_t(d.nx)), j = int(cell / std::size_t(d.nx) % std::size_t(d.ny)),
-                  k = int(cell / (std::size_t(d.nx) * std::size_t(d.ny)));
+        const grid::CellIjk at = grid::cell_ijk(d, layout.cells[compact] & 0x7fffffffu);
         for (int s = 0; s < 6; ++s) {
             const grid::FaceSide side(static_cast<grid::FaceSide>(s));
             const grid::FaceClass face_class = layout.face_class(compact, side);
             const bool outer = face_class == grid::FaceClass::shell ||
-                               (face_class == grid::FaceClass::fault && !grid::face_covered_across(zcorn, active, i, j, k, side));
+                               (face_class == grid::FaceClass::fault && !grid::face_covered_across(zcorn, active, at.i, at.j, at.k, side));
             if (outer) faces.push_back(pack_face(compact, side, face_class));
         }
     }

@@ -1,18 +1,13 @@
 #include "viewer/interaction_resolution.h"
 
-#include <algorithm>
 #include <iterator>
 
 namespace cutaway::viewer {
 
 void InteractionResolution::frame_drawn(double frame_ms, double target_fps) {
-    recent_ms_.push_back(frame_ms);
-    if (recent_ms_.size() > frames_kept) recent_ms_.erase(recent_ms_.begin());
+    recent_ms_.add(frame_ms);
     if (recent_ms_.size() < frames_to_decide) return;
-    std::vector<double> sorted = recent_ms_;
-    std::sort(sorted.begin(), sorted.end());
-    const std::size_t n = sorted.size();
-    const double median = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
+    const double median = recent_ms_.median();
     const double budget_ms = 1000.0 / target_fps;
     if (median > budget_ms) {
         if (level_ + 1 < std::size(factors)) step_to(level_ + 1);

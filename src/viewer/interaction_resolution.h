@@ -7,7 +7,8 @@
 // the larger size is predicted (at the pixel ratio, which over-predicts: part of a frame does not
 // scale with pixels) to stay within it.
 #include <cstddef>
-#include <vector>
+
+#include "viewer/rolling_median.h"
 
 namespace cutaway::viewer {
 
@@ -29,7 +30,7 @@ private:
     void step_to(std::size_t level);
 
     std::size_t level_ = start_level;
-    std::vector<double> recent_ms_;  ///< the last frames at this level, oldest first
+    RollingMedian recent_ms_{frames_kept};  ///< the last frames at this level
 };
 
 }  // namespace cutaway::viewer

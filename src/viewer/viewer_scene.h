@@ -1,6 +1,7 @@
 #pragma once
 // The model on screen: grid, chosen property, primary cells and the cutaway renderer drawing
-// them. The renderer is rebuilt for a new size or edited shaders; the selection survives.
+// them. The renderer is rebuilt for edited shaders (a new size only resizes its targets,
+// CutawayRenderer::resize); the selection survives.
 #include <memory>
 #include <optional>
 
