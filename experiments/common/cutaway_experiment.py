@@ -86,8 +86,20 @@ class Experiment:
         """Where and how the run was measured (from a render's stats or a benchmark's context)."""
         stats = stats or {}
         return {"gl_renderer": stats.get("gl_renderer"), "lp_num_threads": os.environ.get("LP_NUM_THREADS", "unset"),
-                "git_revision": vx.git_revision(), "cpu_count": os.cpu_count(), "uname": " ".join(os.uname()),
-                "quick": self.quick}
+                "git_revision": vx.git_revision(), "cpu_count": os.cpu_count(), "cpu_model": cpu_model(),
+                "uname": " ".join(os.uname()), "quick": self.quick}
+
+
+def cpu_model():
+    """The processor's name as /proc/cpuinfo gives it (llvmpipe's speed depends on it), or "unknown"."""
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return "unknown"
 
 
 def benchmark_context(document):

@@ -172,7 +172,8 @@ def main():
     with open(exp.path("viewer_responsiveness.md"), "w") as f:
         f.write(f"# Viewer responsiveness: petra, {size[0]}x{size[1]} window, {first['gl_renderer']}\n\n"
                 f"Written by experiments/viewer_responsiveness/run.py (git {revision}, "
-                f"LP_NUM_THREADS={os.environ['LP_NUM_THREADS']}, {first['gl_platform']} under Xvfb). Medians over "
+                f"LP_NUM_THREADS={os.environ['LP_NUM_THREADS']}, {os.cpu_count()} x {cx.cpu_model()}, {first['gl_platform']} under Xvfb). "
+                f"Medians over "
                 f"{turns + ranges} frames that re-render the cutaway (camera turns, primary-range changes) and {idle} "
                 f"frames with a still view (panel and overlay redrawn over the last cutaway) per run, pooled over "
                 f"{rounds} interleaved round(s) of the configurations.\n\n" + "\n".join(rows) + "\n\n"
