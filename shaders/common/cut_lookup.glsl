@@ -1,15 +1,17 @@
-// The cut surface as stage 2 reads it: texture RGB = world-space normal, A = depth along the
-// cut camera's view axis (0 = nothing cut). The cut camera is the model camera unless the view
-// is frozen, so every fragment is projected into the cut camera's image (as in shadow mapping).
+// The cut surface as stage 2 reads it: R32F depth along the cut camera's view axis (0 = nothing
+// cut), src/cutaway/frame_targets.h CutTargets::surface. The cut camera is the model camera
+// unless the view is frozen, so every fragment is projected into the cut camera's image (as in
+// shadow mapping). The cut's normal is rebuilt from the depths where a pixel shows cut fill
+// (cut_normal_at), not stored: stage 2's per-fragment test reads a 4-byte texel instead of 16.
 // Variant CUT_IMAGES (compute passes): the cut surface and its rear-clamp mask read as images,
 // whose loads cost less than texel fetches on llvmpipe (deferred shading with ray-cast borders,
 // sapphire at 1920x1080: 33-42 ms against 46-56, alternating runs, the same image).
 #ifdef CUT_IMAGES
-layout(rgba32f, binding = 4) uniform readonly image2D cut_surface_image;
-vec4 cut_surface_texel(ivec2 texel) { return imageLoad(cut_surface_image, texel); }
+layout(r32f, binding = 4) uniform readonly image2D cut_surface_image;
+float cut_surface_depth(ivec2 texel) { return imageLoad(cut_surface_image, texel).r; }
 #else
-uniform sampler2D cut_surface;   // RGBA32F, cut camera's image
-vec4 cut_surface_texel(ivec2 texel) { return texelFetch(cut_surface, texel, 0); }
+uniform sampler2D cut_surface;   // R32F, cut camera's image
+float cut_surface_depth(ivec2 texel) { return texelFetch(cut_surface, texel, 0).r; }
 #endif
 uniform mat4 cut_view;
 uniform mat4 cut_projection;
@@ -28,7 +30,7 @@ CutSample cut_at_texel(ivec2 texel, float eye_depth, bool in_front) {
     s.fragment_depth = eye_depth;
     s.texel = texel;
     bool inside = in_front && all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, ivec2(cut_size)));
-    s.cut_depth = inside ? cut_surface_texel(texel).a : 0.0;
+    s.cut_depth = inside ? cut_surface_depth(texel) : 0.0;
     return s;
 }
 
@@ -42,7 +44,37 @@ CutSample cut_at(vec3 world) {
     return cut_from_clip(cut_projection * eye, -eye.z);
 }
 
-vec3 cut_normal_at(ivec2 texel) { return cut_surface_texel(texel).rgb; }
+// The cut camera's ray through window position w, scaled to unit depth along its axis, in world
+// space: cut_ray_origin + w.x * cut_ray_per_px[0] + w.y * cut_ray_per_px[1] (affine in w); a point at
+// depth s on it lies at the camera's position + s * ray (src/cutaway/secondary_pass.cpp sets them).
+uniform vec3 cut_ray_origin;
+uniform vec3 cut_ray_per_px[2];
+
+float cut_depth_or_none(ivec2 texel) {
+    return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, ivec2(cut_size))) ? cut_surface_depth(texel) : 0.0;
+}
+
+// The cut's world normal at a cut pixel, facing the cut camera: from the neighbours' points on the
+// smoother side of each axis, so a wall's edge does not bend it (the points rebuilt from the
+// depths along the pixels' rays).
+vec3 cut_normal_at(ivec2 texel) {
+    float s = cut_depth_or_none(texel);
+    vec3 ray = cut_ray_origin + (float(texel.x) + 0.5) * cut_ray_per_px[0] + (float(texel.y) + 0.5) * cut_ray_per_px[1];
+    vec3 tangent[2];
+    for (int axis = 0; axis < 2; ++axis) {
+        ivec2 step = axis == 0 ? ivec2(1, 0) : ivec2(0, 1);
+        float ahead = cut_depth_or_none(texel + step), behind = cut_depth_or_none(texel - step);
+        bool use_ahead = ahead > 0.0 && (behind <= 0.0 || abs(ahead - s) <= abs(behind - s));
+        float other = use_ahead ? ahead : behind;
+        float direction = use_ahead ? 1.0 : -1.0;
+        // The neighbour's point minus this one (the camera position cancels), towards +axis.
+        vec3 other_ray = ray + direction * cut_ray_per_px[axis];
+        tangent[axis] = other > 0.0 ? (other * other_ray - s * ray) * direction : vec3(0.0);
+    }
+    vec3 normal = cross(tangent[0], tangent[1]);
+    normal = dot(normal, normal) > 0.0 ? normalize(normal) : normalize(-ray);  // towards the camera
+    return dot(normal, ray) > 0.0 ? -normal : normal;  // facing the camera
+}
 
 // Whether the cut at `texel` is the clamp just in front of the rear shell (the strategy's cut
 // went past the model there, cut_surface/resolve.frag): the shell behind it shows as cut fill,

@@ -24,7 +24,8 @@ SecondaryShade shade_secondary(CutSample here, vec3 world, ivec2 pixel, uint com
                                vec3 face_normal, float edge_opacity, bool edge_line) {
     bool inside_view = (face_info & 4u) != 0u;
     SecondaryShade s;
-    s.normal = inside_view ? cut_normal_at(here.texel) : face_normal;
+    s.normal = face_normal;
+    if (inside_view) s.normal = cut_normal_at(here.texel);  // a branch: only cut fill rebuilds it
     if (inside_view && here.cut_depth == 0.0) s.normal = -face_normal;
     s.colour = lit(cell_colour(compact_cell), s.normal, world);
     s.flags = inside_view ? flag_cut_fill : 0u;

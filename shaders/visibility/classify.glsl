@@ -17,7 +17,7 @@ const int max_pyramid_levels = 16;
 uniform int pyramid_levels;     // levels of the pyramid (its level 0 is half the cut image)
 uniform ivec2 pyramid_sizes[max_pyramid_levels];
 uniform int pyramid_offsets[max_pyramid_levels];
-uniform sampler2D cut_surface;  // A = cut depth along the cut camera's axis, 0 = nothing cut
+uniform sampler2D cut_surface;  // R32F: cut depth along the cut camera's axis, 0 = nothing cut
 
 // Freeze view: stage 2 keeps the model camera's rear shell in front of the cut too
 // (common/cut_lookup.glsl), so a cell in front of the cut still gives its exposed faces seen from
@@ -36,7 +36,7 @@ vec2 cut_range(ivec2 lo, ivec2 hi) {
     if (level == 0) {
         for (int y = lo.y; y <= hi.y; ++y)
             for (int x = lo.x; x <= hi.x; ++x) {
-                float depth = texelFetch(cut_surface, ivec2(x, y), 0).a;
+                float depth = texelFetch(cut_surface, ivec2(x, y), 0).r;
                 range = vec2(min(range.x, depth), max(range.y, depth));
             }
         return range;

@@ -3,7 +3,7 @@
 // section 6), kept in one buffer of (min, max) pairs, level after level, rows bottom to top.
 // Texel t of a level covers texels 2t and 2t+1 of the level below along each axis; the last
 // texel also takes the odd leftover, so every level covers the whole image.
-// Variant FIRST_LEVEL: the level below is the cut surface itself (A = depth, 0 = nothing cut),
+// Variant FIRST_LEVEL: the level below is the cut surface itself (R32F depth, 0 = nothing cut),
 // read by image loads (on llvmpipe cheaper than texelFetch). Each texel takes its 2 x 2 texels
 // with 4 fixed loads; only the last row and column loop over the odd leftover (a loop whose
 // bounds vary across SIMD lanes runs as long as its longest lane): the pyramid took 9-11 ms at
@@ -15,7 +15,7 @@ layout(std430, binding = 13) buffer CutPyramid { vec2 pyramid[]; };
 uniform ivec2 level_size;
 uniform int level_offset;
 #ifdef FIRST_LEVEL
-layout(rgba32f, binding = 0) uniform readonly image2D cut_surface;
+layout(r32f, binding = 0) uniform readonly image2D cut_surface;
 #else
 uniform ivec2 below_size;
 uniform int below_offset;
@@ -23,7 +23,7 @@ uniform int below_offset;
 
 vec2 below_range(ivec2 texel) {
 #ifdef FIRST_LEVEL
-    return vec2(imageLoad(cut_surface, texel).a);
+    return vec2(imageLoad(cut_surface, texel).r);
 #else
     return pyramid[below_offset + texel.y * below_size.x + texel.x];
 #endif

@@ -463,7 +463,10 @@ std::vector<float> CutawayRenderer::read_window_depth() const {
 }
 
 FloatImage CutawayRenderer::read_cut_depth() const {
-    return read_alpha(cut_.surface, cut_.surface.width(), cut_.surface.height());
+    FloatImage image{cut_.surface.width(), cut_.surface.height(), {}};
+    image.values.resize(std::size_t(image.width) * std::size_t(image.height));
+    glGetTextureImage(cut_.surface.id(), 0, GL_RED, GL_FLOAT, GLsizei(image.values.size() * sizeof(float)), image.values.data());
+    return image;
 }
 
 cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) const {

@@ -11,7 +11,7 @@ const float far_depth = 1.0f;
 }  // namespace
 
 CutTargets::CutTargets(int width, int height)
-    : surface(GL_TEXTURE_2D, GL_RGBA32F, width, height),
+    : surface(GL_TEXTURE_2D, GL_R32F, width, height),
       rear_clamp(GL_TEXTURE_2D, GL_R8, width, height),
       depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height) {
     framebuffer.attach(GL_COLOR_ATTACHMENT0, surface);

@@ -6,11 +6,12 @@
 
 namespace cutaway::pipeline {
 
-/// Stage 1 output: RGBA32F normal (world) + depth along the cut camera's axis, an R8 flag where
-/// the cut is clamped at the rear shell, and the depth buffer of the union (cleared to 0,
-/// GL_GREATER). SPEC.md's texture of cut positions is not kept: nothing reads positions but the
-/// resolve's normals, which rebuild them from the depth (as SSAO does from the scene's depth),
-/// and it cost 16 bytes per pixel.
+/// Stage 1 output: R32F depth along the cut camera's axis (clamped at the rear shell; 0 = nothing
+/// cut), an R8 flag where the cut is clamped at the rear shell, and the depth buffer of the union
+/// (cleared to 0, GL_GREATER). SPEC.md's textures of cut positions and normals are not kept: the
+/// passes that shade cut fill rebuild a pixel's normal from its depth and its 4 neighbours'
+/// (common/cut_lookup.glsl cut_normal_at). The positions cost 16 bytes per pixel, the normals 12
+/// more, and with them stage 2's cut test read a 16-byte texel per fragment instead of 4.
 ///
 /// The mean-filtered cut has no targets of its own: the resolve reads the filter's output buffer
 /// (MeanFilter::filter) and writes this surface and flag, which stage 2 reads either way (a

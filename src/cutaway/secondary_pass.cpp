@@ -1,5 +1,7 @@
 #include "cutaway/secondary_pass.h"
 
+#include <array>
+
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
@@ -13,6 +15,18 @@ SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
       deferred_(shaders, {{GL_COMPUTE_SHADER, "secondary/deferred_shading.comp"}}) {}
 
 namespace {
+/// cut_lookup.glsl's cut_ray_origin and cut_ray_per_px: the eye-space ray (ndc / projection scale,
+/// -1) through window position w, ndc = 2 w / size - 1, turned into world space (affine in w).
+void set_cut_rays(const gl::Program& p, const Camera& cut_camera) {
+    const glm::mat3 to_world(glm::inverse(cut_camera.view));
+    const glm::vec2 projection_scale(cut_camera.projection[0][0], cut_camera.projection[1][1]);
+    const glm::vec2 ndc_per_px = 2.0f / (glm::vec2(float(cut_camera.width), float(cut_camera.height)) * projection_scale);
+    gl::set_uniform(p, "cut_ray_origin", to_world * glm::vec3(-1.0f / projection_scale, -1.0f));
+    const std::array<glm::vec3, 2> ray_per_px{to_world * glm::vec3(ndc_per_px.x, 0.0f, 0.0f),
+                                              to_world * glm::vec3(0.0f, ndc_per_px.y, 0.0f)};
+    glProgramUniform3fv(p.id(), p.uniform("cut_ray_per_px"), 2, &ray_per_px[0].x);
+}
+
 /// The uniforms of shaders/common/cut_lookup.glsl; `camera`: the model camera.
 void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& camera) {
     const Camera& cut_camera = clip.cut_camera;
@@ -24,6 +38,7 @@ void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& cam
     gl::set_uniform(p, "cut_projection", cut_camera.projection);
     gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
     gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
+    set_cut_rays(p, cut_camera);
     if (!clip.view_rear_shell) return;  // the programs are built without VIEW_REAR_SHELL then
     gl::set_uniform(p, "view_rear_shell", 6);
     clip.view_rear_shell->bind(6);
@@ -56,7 +71,7 @@ void set_border_uniforms(const gl::Program& p, const Camera& camera, const Frame
 /// CUT_IMAGES): image units 4 and 5.
 void bind_cut_images(gl::ShaderDefines& defines, const CutClip& clip) {
     defines.emplace_back("CUT_IMAGES", "");
-    glBindImageTexture(4, clip.cut.surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(4, clip.cut.surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(5, clip.cut.rear_clamp.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
 }
 

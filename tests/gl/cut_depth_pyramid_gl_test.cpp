@@ -22,10 +22,10 @@ std::pair<int, int> covered(int t, int level, int level_size, int cut_size) {
 void check_pyramid(int width, int height, unsigned seed) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> depth(1.0f, 100.0f);
-    std::vector<float> rgba(std::size_t(width) * std::size_t(height) * 4, 0.0f);
-    for (std::size_t i = 0; i < rgba.size() / 4; ++i) rgba[4 * i + 3] = random() % 5 == 0 ? 0.0f : depth(random);
-    gl::Texture surface(GL_TEXTURE_2D, GL_RGBA32F, width, height);
-    glTextureSubImage2D(surface.id(), 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, rgba.data());
+    std::vector<float> cut(std::size_t(width) * std::size_t(height), 0.0f);
+    for (float& d : cut) d = random() % 5 == 0 ? 0.0f : depth(random);
+    gl::Texture surface(GL_TEXTURE_2D, GL_R32F, width, height);  // as CutTargets::surface
+    glTextureSubImage2D(surface.id(), 0, 0, 0, width, height, GL_RED, GL_FLOAT, cut.data());
 
     pipeline::CutDepthPyramid pyramid(GlEnvironment::shaders());
     pyramid.build(surface);
@@ -40,7 +40,7 @@ void check_pyramid(int width, int height, unsigned seed) {
                 float lo = 1e30f, hi = -1e30f;
                 for (int y = y0; y <= y1; ++y)
                     for (int x = x0; x <= x1; ++x) {
-                        const float d = rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4 + 3];
+                        const float d = cut[std::size_t(y) * std::size_t(width) + std::size_t(x)];
                         lo = std::min(lo, d);
                         hi = std::max(hi, d);
                     }

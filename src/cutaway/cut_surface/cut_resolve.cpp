@@ -1,7 +1,5 @@
 #include "cutaway/cut_surface/cut_resolve.h"
 
-#include <array>
-
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
@@ -22,16 +20,6 @@ void CutResolve::apply(const gl::FloatImageBuffer& depth, const CutTargets& targ
     // 4 pixels per invocation where a row is whole 4-pixel texels (resolve.comp QUADS).
     const bool quads = depth.has_quad_view();
     const gl::Program& program = programs_.get(quads ? gl::ShaderDefines{{"QUADS", ""}} : gl::ShaderDefines{});
-    const glm::mat4 inverse_view = glm::inverse(cut_camera.view);
-    // resolve.comp's cut_ray: the eye-space ray (ndc / projection scale, -1), ndc = 2 w / size - 1,
-    // turned into world space.
-    const glm::mat3 to_world(inverse_view);
-    const glm::vec2 projection_scale(cut_camera.projection[0][0], cut_camera.projection[1][1]);
-    const glm::vec2 ndc_per_px = 2.0f / (glm::vec2(float(width), float(height)) * projection_scale);
-    gl::set_uniform(program, "ray_origin", to_world * glm::vec3(-1.0f / projection_scale, -1.0f));
-    const std::array<glm::vec3, 2> ray_per_px{to_world * glm::vec3(ndc_per_px.x, 0.0f, 0.0f),
-                                              to_world * glm::vec3(0.0f, ndc_per_px.y, 0.0f)};
-    glProgramUniform3fv(program.id(), program.uniform("ray_per_px"), 2, &ray_per_px[0].x);
     gl::set_uniform(program, "cut_size", glm::ivec2(width, height));
     gl::set_uniform(program, "cut_near", cut_camera.near_plane);
     gl::set_uniform(program, "cut_far", cut_camera.far_plane);
@@ -49,7 +37,7 @@ void CutResolve::apply(const gl::FloatImageBuffer& depth, const CutTargets& targ
         depth.bind_image(0, GL_READ_ONLY);
         rear.bind_image(1, GL_READ_ONLY);
     }
-    glBindImageTexture(2, targets.surface.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(2, targets.surface.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     glBindImageTexture(3, targets.rear_clamp.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R8);
     program.use();
     gl::dispatch_over(program, quads ? width / 4 : width, height);

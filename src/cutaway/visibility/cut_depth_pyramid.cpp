@@ -49,7 +49,7 @@ void CutDepthPyramid::build(const gl::Texture& cut_surface) {
     for (int level = 0; level < levels(); ++level) {
         const gl::Program& p = level == 0 ? first_ : next_;
         if (level == 0) {
-            glBindImageTexture(0, cut_surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+            glBindImageTexture(0, cut_surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
             gl::wait_for_draws_before_image_loads();  // the surface may come from a draw or an image store
         } else {
             gl::set_uniform(p, "below_size", sizes_[std::size_t(level - 1)]);

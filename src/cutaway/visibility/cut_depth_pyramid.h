@@ -22,7 +22,7 @@ inline constexpr int max_pyramid_levels = 16;
 class CutDepthPyramid {
 public:
     explicit CutDepthPyramid(const gl::ShaderLibrary& shaders);
-    /// Rebuilds every level from `cut_surface` (RGBA32F, A = cut depth, 0 = nothing cut).
+    /// Rebuilds every level from `cut_surface` (R32F cut depth, 0 = nothing cut).
     void build(const gl::Texture& cut_surface);
     /// Binds the pyramid's buffer texture and sets `program`'s pyramid_texels, pyramid_levels,
     /// pyramid_sizes and pyramid_offsets.
