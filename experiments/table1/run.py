@@ -60,7 +60,7 @@ def main():
         "context": {**exp.context(), **cx.benchmark_context(document)},
         "models": table, "models_visible": tables["visible"], "observations": observations})
     with open(exp.path("table1.md"), "w") as f:
-        f.write(table1_report.markdown(table, observations, cx.benchmark_context(document), size, poses))
+        f.write(table1_report.markdown(table, observations, {**exp.context(), **cx.benchmark_context(document)}, size, poses))
         f.write(table1_report.visible_markdown(tables["visible"], table))
     print("wrote", os.path.relpath(exp.path("table1.md"), cx.REPO))
 

@@ -44,6 +44,11 @@ CutSample cut_at(vec3 world) {
     return cut_from_clip(cut_projection * eye, -eye.z);
 }
 
+#ifdef STORED_CUT_NORMALS
+// Stage 2's one-pass shading reads the normals cut_surface/cut_normals.comp stored per cut pixel.
+uniform sampler2D cut_normals;  // RGBA32F: world normal at each cut pixel
+vec3 cut_normal_at(ivec2 texel) { return texelFetch(cut_normals, texel, 0).rgb; }
+#else
 // The cut camera's ray through window position w, scaled to unit depth along its axis, in world
 // space: cut_ray_origin + w.x * cut_ray_per_px[0] + w.y * cut_ray_per_px[1] (affine in w); a point at
 // depth s on it lies at the camera's position + s * ray (src/cutaway/secondary_pass.cpp sets them).
@@ -75,6 +80,7 @@ vec3 cut_normal_at(ivec2 texel) {
     normal = dot(normal, normal) > 0.0 ? normalize(normal) : normalize(-ray);  // towards the camera
     return dot(normal, ray) > 0.0 ? -normal : normal;  // facing the camera
 }
+#endif
 
 // Whether the cut at `texel` is the clamp just in front of the rear shell (the strategy's cut
 // went past the model there, cut_surface/resolve.frag): the shell behind it shows as cut fill,

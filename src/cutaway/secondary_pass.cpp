@@ -12,7 +12,8 @@ SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
       nearest_face_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/nearest_face.frag"}}),
       plain_(shaders, {{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "secondary/plain.frag"}}),
       borders_(shaders, {{GL_COMPUTE_SHADER, "secondary/raycast_borders.comp"}}),
-      deferred_(shaders, {{GL_COMPUTE_SHADER, "secondary/deferred_shading.comp"}}) {}
+      deferred_(shaders, {{GL_COMPUTE_SHADER, "secondary/deferred_shading.comp"}}),
+      cut_normals_program_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/cut_normals.comp"}})) {}
 
 namespace {
 /// cut_lookup.glsl's cut_ray_origin and cut_ray_per_px: the eye-space ray (ndc / projection scale,
@@ -47,6 +48,8 @@ void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& cam
     gl::set_uniform(p, "view_rear_margin", clip.rear_margin);
 }
 const glm::vec3 shell_cut_colour(0.85f, 0.1f, 0.1f);
+/// Texture unit of the stored cut normals (the face programs' grid takes 8-13, the cut 1 and 5-7).
+constexpr unsigned cut_normals_texture_unit = 15;
 /// The variants every stage-2 program takes from where the cut was made: VIEW_REAR_SHELL
 /// (common/cut_lookup.glsl) while the view is frozen, CUT_CAMERA_IS_VIEW (the cut made from the
 /// model `camera` itself) otherwise.
@@ -105,6 +108,23 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     dispatch_per_pixel(p, camera);
 }
 
+void SecondaryPass::store_cut_normals(const CutClip& clip) {
+    const Camera& cut_camera = clip.cut_camera;
+    if (cut_normals_.width() != cut_camera.width || cut_normals_.height() != cut_camera.height) {
+        cut_normals_ = {};  // the old image goes before the new one is allocated
+        cut_normals_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, cut_camera.width, cut_camera.height);
+    }
+    gl::ShaderDefines unused;
+    bind_cut_images(unused, clip);
+    glBindImageTexture(6, cut_normals_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    gl::set_uniform(cut_normals_program_, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
+    set_cut_rays(cut_normals_program_, cut_camera);
+    cut_normals_program_.use();
+    gl::dispatch_over(cut_normals_program_, cut_camera.width, cut_camera.height);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+    cut_normals_.bind(cut_normals_texture_unit);
+}
+
 void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSettings& settings, const CutClip& clip,
                                    const SceneTargets& scene) {
     const Camera& camera = context.camera;
@@ -142,6 +162,8 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     }
     const gl::ShaderDefines nearest_defines = defines;
     add_shading_defines(defines, settings);
+    store_cut_normals(clip);
+    defines.emplace_back("STORED_CUT_NORMALS", "");
     const bool two_passes = draw == DrawMode::visible && settings.stage2_passes == Stage2Passes::two;
     GLint depth_function = GL_LESS;
     if (two_passes) {
@@ -166,6 +188,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     gl::set_uniform(p, "line_width", settings.line_width_px);
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
+    gl::set_uniform(p, "cut_normals", int(cut_normals_texture_unit));
     submit();
     if (two_passes) {
         glDepthMask(GL_TRUE);

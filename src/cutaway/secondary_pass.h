@@ -42,6 +42,9 @@ private:
     /// Ray-cast borders over the visible secondary pixels of `scene` (after a shaded draw).
     void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
                                const CutClip& clip);
+    /// The cut's normal per cut pixel into cut_normals_ (cut_surface/cut_normals.comp) for the
+    /// one-pass shading, bound at its texture unit.
+    void store_cut_normals(const CutClip& clip);
     /// Stage 2's deferred shading (secondary/deferred_shading.comp) after the DEFERRED draw.
     void shade_deferred(const FaceDrawContext& context, const FrameSettings& settings, const CutClip& clip,
                         const SceneTargets& scene);
@@ -51,6 +54,8 @@ private:
     gl::ProgramCache plain_;
     gl::ProgramCache borders_;
     gl::ProgramCache deferred_;
+    gl::Program cut_normals_program_;
+    gl::Texture cut_normals_;  ///< allocated on the first one-pass frame, at the cut image's size
 };
 
 }  // namespace cutaway::pipeline
