@@ -39,11 +39,13 @@ int checked_side(int side, const char* name) {
     return side;
 }
 
-FloatImage read_alpha(const gl::Texture& texture, int width, int height) {
+/// One channel (0 = R .. 3 = A) of a float texture, read back as RGBA.
+FloatImage read_channel(const gl::Texture& texture, int channel) {
+    const int width = texture.width(), height = texture.height();
     std::vector<float> rgba(std::size_t(width) * std::size_t(height) * 4);
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
     FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
-    for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + 3];
+    for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + std::size_t(channel)];
     return image;
 }
 
@@ -454,7 +456,7 @@ std::vector<std::uint32_t> CutawayRenderer::read_eclipse_ids() const {
     return ids;
 }
 
-FloatImage CutawayRenderer::read_scene_depth() const { return read_alpha(scene_.normal_depth, width_, height_); }
+FloatImage CutawayRenderer::read_scene_depth() const { return read_channel(scene_.normal_depth, 3); }
 
 std::vector<float> CutawayRenderer::read_window_depth() const {
     std::vector<float> depth(std::size_t(width_) * std::size_t(height_));
@@ -463,10 +465,7 @@ std::vector<float> CutawayRenderer::read_window_depth() const {
 }
 
 FloatImage CutawayRenderer::read_cut_depth() const {
-    FloatImage image{cut_.surface.width(), cut_.surface.height(), {}};
-    image.values.resize(std::size_t(image.width) * std::size_t(image.height));
-    glGetTextureImage(cut_.surface.id(), 0, GL_RED, GL_FLOAT, GLsizei(image.values.size() * sizeof(float)), image.values.data());
-    return image;
+    return read_channel(cut_.surface, 0);
 }
 
 cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) const {

@@ -72,8 +72,7 @@ void set_border_uniforms(const gl::Program& p, const Camera& camera, const Frame
 
 /// The compute passes read the cut surface and its rear-clamp mask as images (common/cut_lookup.glsl
 /// CUT_IMAGES): image units 4 and 5.
-void bind_cut_images(gl::ShaderDefines& defines, const CutClip& clip) {
-    defines.emplace_back("CUT_IMAGES", "");
+void bind_cut_images(const CutClip& clip) {
     glBindImageTexture(4, clip.cut.surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(5, clip.cut.rear_clamp.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
 }
@@ -94,7 +93,8 @@ void dispatch_per_pixel(const gl::Program& program, const Camera& camera) {
 void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
                                           const CutClip& clip) {
     gl::ShaderDefines defines = cut_view_defines(camera, clip);
-    bind_cut_images(defines, clip);
+    defines.emplace_back("CUT_IMAGES", "");
+    bind_cut_images(clip);
     const gl::Program& p = borders_.get(defines);
     set_cut_lookup(p, clip, camera);
     set_border_uniforms(p, camera, settings);
@@ -114,8 +114,7 @@ void SecondaryPass::store_cut_normals(const CutClip& clip) {
         cut_normals_ = {};  // the old image goes before the new one is allocated
         cut_normals_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, cut_camera.width, cut_camera.height);
     }
-    gl::ShaderDefines unused;
-    bind_cut_images(unused, clip);
+    bind_cut_images(clip);  // cut_normals.comp defines CUT_IMAGES itself
     glBindImageTexture(6, cut_normals_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gl::set_uniform(cut_normals_program_, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
     set_cut_rays(cut_normals_program_, cut_camera);
@@ -130,7 +129,8 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
     const Camera& camera = context.camera;
     gl::ShaderDefines defines = cut_view_defines(camera, clip);
     add_shading_defines(defines, settings);
-    bind_cut_images(defines, clip);
+    defines.emplace_back("CUT_IMAGES", "");
+    bind_cut_images(clip);
     const gl::Program& p = deferred_.get(defines);
     prepare_face_program(p, context);
     set_cut_lookup(p, clip, camera);
