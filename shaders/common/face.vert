@@ -4,10 +4,8 @@
 // the face's 4 corners so it can give the window-space distance to the quad's 4 edges
 // (single-pass wireframe, Baerentzen et al. 2006) without a geometry shader.
 // Variants: CULL_FRONT_INTERIOR (secondaries: an interior face seen from outside its cell always
-// coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries, shell),
-// CULL_FRONT (the rear shell: a face both of whose triangles face the eye is dropped; the centre
-// test of the others would drop a warped face whose one triangle is where a ray leaves the
-// model); PLAIN_FRAME (no cut read);
+// coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries);
+// PLAIN_FRAME (no cut read);
 // STORED_CORNERS (the face's corners read from src/cutaway/exposed_surface.h's buffer, 4 per
 // face in drawing order) with CULL_HIDDEN_BACK (a face both of whose triangles face away, which
 // its own cell hides, is dropped: what visibility/cull_cells.comp keeps behind the cut).
@@ -65,9 +63,6 @@ void main() {
 #endif
 #ifdef CULL_HIDDEN_BACK
     culled = culled || !f.any_triangle_front_facing;
-#endif
-#ifdef CULL_FRONT
-    culled = culled || !f.any_triangle_back_facing;
 #endif
     if (culled) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // all 4 vertices outside the clip volume

@@ -8,7 +8,6 @@ struct FaceFrame {
     bool back_facing;  // the eye is on the inner side: the face is seen from inside its cell
     bool collapsed;    // zero area (pinch-out): never drawn
     bool any_triangle_front_facing;  // either drawn triangle (0,1,2), (0,2,3) faces the eye (or is edge-on)
-    bool any_triangle_back_facing;   // either faces away from it (or is edge-on)
 };
 
 // The frame of the quad q (a face's 4 corners in face_corners order) of `cell`.
@@ -26,7 +25,6 @@ FaceFrame face_frame_of_quad(vec3 q[4], uint cell, vec3 eye) {
     float sign = cell_normals_flipped(cell) ? -1.0 : 1.0;
     float towards_first = sign * dot(first, eye - f.q[0]), towards_second = sign * dot(second, eye - f.q[0]);
     f.any_triangle_front_facing = towards_first >= 0.0 || towards_second >= 0.0;
-    f.any_triangle_back_facing = towards_first <= 0.0 || towards_second <= 0.0;
     return f;
 }
 

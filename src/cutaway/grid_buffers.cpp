@@ -5,12 +5,21 @@
 #include <stdexcept>
 #include <string>
 
+#include "gl/face_culling.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 
 FaceBuffer FaceBuffer::from(const std::vector<std::uint32_t>& records) {
     return {gl::Buffer::from(std::span<const std::uint32_t>(records)), records.size()};
+}
+
+WoundFaces WoundFaces::from(const std::vector<std::uint32_t>& records, const GridLayout& layout) {
+    std::vector<std::uint32_t> counter_clockwise, clockwise;
+    for (std::uint32_t record : records) {
+        (layout.inward_corner_order(face_record_cell(record)) ? clockwise : counter_clockwise).push_back(record);
+    }
+    return {FaceBuffer::from(counter_clockwise), FaceBuffer::from(clockwise)};
 }
 
 namespace {
@@ -100,8 +109,8 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
       cell_face_classes_(gl::Buffer::from(std::span<const std::uint16_t>(packed_face_classes(layout)))),
       primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
                     GL_DYNAMIC_STORAGE_BIT),
-      shell_(FaceBuffer::from(pipeline::shell_faces(layout))),
-      outer_(FaceBuffer::from(pipeline::outer_faces(layout, zcorn))),
+      shell_(WoundFaces::from(pipeline::shell_faces(layout), layout)),
+      outer_(WoundFaces::from(pipeline::outer_faces(layout, zcorn), layout)),
       pillar_texels_(pillars_, GL_RGBA32F),
       corner_plane_texels_(corner_planes_, GL_RGBA32F),
       cell_texels_(cells_, GL_RG32UI),
@@ -123,7 +132,8 @@ void GridBuffers::set_geometry_uniforms(const gl::Program& program) const {
 std::size_t GridBuffers::memory_bytes() const {
     std::size_t bytes = 0;
     for (const gl::Buffer* b : std::initializer_list<const gl::Buffer*>{&pillars_, &corner_planes_, &cells_, &values_, &cell_face_classes_, &primary_bits_,
-                                &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &shell_.buffer, &outer_.buffer, &all_.buffer})
+                                &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &shell_.counter_clockwise.buffer, &shell_.clockwise.buffer,
+                                &outer_.counter_clockwise.buffer, &outer_.clockwise.buffer, &all_.buffer})
         bytes += b->size_bytes();
     return bytes;
 }
@@ -178,6 +188,13 @@ void GridBuffers::draw_faces(const FaceBuffer& faces) const {
         const std::size_t count = std::min(range_faces, faces.count - first);
         glBindBufferRange(GL_SHADER_STORAGE_BUFFER, faces_binding, faces.buffer.id(), GLintptr(first * 4), GLsizeiptr(count * 4));
         quads_.draw(count);
+    }
+}
+
+void GridBuffers::draw_faces(const WoundFaces& faces, GLenum culled) const {
+    for (const auto& [part, front] : {std::pair{&faces.counter_clockwise, GL_CCW}, std::pair{&faces.clockwise, GL_CW}}) {
+        const gl::FaceCulling culling(culled, front);
+        draw_faces(*part);
     }
 }
 

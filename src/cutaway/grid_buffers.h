@@ -23,6 +23,18 @@ struct FaceBuffer {
     static FaceBuffer from(const std::vector<std::uint32_t>& records);
 };
 
+/// A per-model face list for the depth-only passes that let the rasteriser cull triangles
+/// (common/face_corner.vert), split by how a face's corners (face_corners order) turn seen from
+/// outside its cell: counter-clockwise, or clockwise for the cells whose corner order gives
+/// inward normals in render space (GridLayout::cells bit 31). Each part is drawn with its own
+/// glFrontFace, so every vertex keeps the corner order common/face.vert gives it, and with it
+/// the same rasterised depths.
+struct WoundFaces {
+    FaceBuffer counter_clockwise, clockwise;
+    std::size_t count() const { return counter_clockwise.count + clockwise.count; }
+    static WoundFaces from(const std::vector<std::uint32_t>& records, const GridLayout& layout);
+};
+
 class GridBuffers {
 public:
     /// Keeps a reference to `layout`, which must outlive it; reads the corner depths from `zcorn`.
@@ -48,6 +60,9 @@ public:
     void bind_culling_inputs() const;
     /// Draws `faces` as indexed quads (quad_draw.h) with the bound face program.
     void draw_faces(const FaceBuffer& faces) const;
+    /// Draws `faces` with the rasteriser culling the triangles that face `culled` (GL_FRONT or
+    /// GL_BACK: towards or away from the eye, seen from outside their cell).
+    void draw_faces(const WoundFaces& faces, GLenum culled) const;
     const QuadDraw& quads() const { return quads_; }
 
     glm::uvec2 grid_size() const { return grid_size_; }
@@ -58,9 +73,9 @@ public:
     const FaceBuffer& secondary_faces() const { return secondary_; }
     const FaceBuffer& primary_faces() const { return primary_; }
     const FaceBuffer& primary_cells() const { return primary_cells_; }
-    const FaceBuffer& shell_faces() const { return shell_; }
+    const WoundFaces& shell_faces() const { return shell_; }
     /// Shell and fault faces (grid_layout.h outer_faces).
-    const FaceBuffer& outer_faces() const { return outer_; }
+    const WoundFaces& outer_faces() const { return outer_; }
     /// Every face of every active cell (built on first use: only the all-faces path needs it).
     const FaceBuffer& all_faces() const;
     /// Bytes of every buffer allocated so far.
@@ -72,7 +87,8 @@ private:
     unsigned plane_slots_per_layer_;
     ModelFrame frame_;
     gl::Buffer pillars_, corner_planes_, cells_, values_, cell_face_classes_, primary_bits_;
-    FaceBuffer secondary_, primary_, primary_cells_, shell_, outer_;
+    FaceBuffer secondary_, primary_, primary_cells_;
+    WoundFaces shell_, outer_;
     /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
     /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
     gl::BufferTexture pillar_texels_, corner_plane_texels_, cell_texels_, value_texels_;

@@ -21,6 +21,9 @@ inline std::uint32_t pack_face(std::uint32_t compact_cell, grid::FaceSide side, 
     return compact_cell | (std::uint32_t(side) << face_cell_bits) | (std::uint32_t(face_class) << (face_cell_bits + 3));
 }
 
+/// The compact cell of a face record.
+inline std::uint32_t face_record_cell(std::uint32_t record) { return record & ((std::uint32_t(1) << face_cell_bits) - 1); }
+
 struct GridLayout {
     /// 2 x vec4 per pillar (top xyz, 0; bottom xyz, 0), centred model units (not flipped).
     /// The renderer frees them once GridBuffers has uploaded them.
@@ -31,6 +34,9 @@ struct GridLayout {
     /// Classification of the six faces of every active cell by compact index, 2 bits per side
     /// (FaceClass at bits 2 s, sides in FaceSide order), as the GPU reads them.
     std::vector<std::uint16_t> face_classes;
+
+    /// Bit 31 of `cells`: the face corner order gives inward normals for this cell.
+    bool inward_corner_order(std::size_t compact) const { return (cells[compact] & 0x80000000u) != 0; }
 
     grid::FaceClass face_class(std::size_t compact, grid::FaceSide side) const {
         return grid::FaceClass((face_classes[compact] >> (2 * unsigned(side))) & 3u);

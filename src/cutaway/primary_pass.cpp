@@ -7,8 +7,7 @@ namespace cutaway::pipeline {
 PrimaryPass::PrimaryPass(const gl::ShaderLibrary& shaders)
     : primaries_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "primary/primary.frag"}},
                                {{"CULL_BACK", ""}})),
-      shell_depth_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "primary/shell_depth.frag"}},
-                                 {{"CULL_BACK", ""}})) {}
+      shell_depth_(shaders.build({{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "primary/shell_depth.frag"}})) {}
 
 void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings) {
     prepare_face_program(primaries_, context);
@@ -19,7 +18,7 @@ void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffe
 void PrimaryPass::draw_shell_depth(const FaceDrawContext& context, const SceneTargets& scene) {
     scene.shell_framebuffer.bind();
     prepare_face_program(shell_depth_, context);
-    context.grid.draw_faces(context.grid.shell_faces());
+    context.grid.draw_faces(context.grid.shell_faces(), GL_BACK);  // per triangle (common/face_corner.vert)
 }
 
 }  // namespace cutaway::pipeline

@@ -9,13 +9,13 @@ namespace cutaway::pipeline {
 
 RearShellDepth::RearShellDepth(const gl::ShaderLibrary& shaders, int width, int height)
     // The seed shader writes exactly this: the cut camera's depth encoding, depth only.
-    // Only back faces: where a ray leaves the closed outer surface it crosses a face whose cell lies
-    // in front of it, so the farthest hit is always back-facing; culling the front half halves the
-    // faces rasterised and binned. A face is culled only when both its triangles face the eye
-    // (common/face.vert CULL_FRONT): its centre alone misjudges a warped face seen edge-on, which
-    // then left a covered fault face (grid/fault_cover.h) farthest at a few pixels.
-    : program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}},
-                             {{"CULL_FRONT", ""}})),
+    // Only back-facing triangles: where a ray leaves the closed outer surface it crosses a triangle
+    // whose cell lies in front of it, so the farthest hit is always a back-facing one; culling the
+    // front-facing ones halves what is rasterised and binned. The rasteriser decides per triangle
+    // (common/face_corner.vert), so a warped face seen edge-on keeps the triangle where a ray
+    // leaves the model (a face-wide test misjudged one and left a covered fault face,
+    // grid/fault_cover.h, farthest at a few pixels).
+    : program_(shaders.build({{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}})),
       primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})) {
     allocate(width, height);
 }
@@ -43,7 +43,7 @@ void RearShellDepth::render(const GridBuffers& grid, const Camera& cut_camera) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
-    grid.draw_faces(grid.outer_faces());
+    grid.draw_faces(grid.outer_faces(), GL_FRONT);
     prepare_face_program(primaries_program_, FaceDrawContext{grid, cut_camera});
     grid.draw_faces(grid.primary_faces());
     glDepthFunc(GL_LESS);

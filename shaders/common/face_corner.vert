@@ -1,0 +1,32 @@
+#version 450 core
+// Depth-only face passes (the rear shell, cut_surface/seed_geometry.frag; the shell contours,
+// primary/shell_depth.frag): one face record -> one indexed quad as in common/face.vert, but each
+// vertex rebuilds only its own corner. These passes read no normal, edge distance or cell, and
+// their facing test is the rasteriser's, per triangle (GL_CULL_FACE): the faces come split by the
+// way their corners (face_corners order) turn seen from outside their cell (GridBuffers::
+// WoundFaces), each part drawn with its own glFrontFace, so a vertex keeps the corner
+// common/face.vert gives it and the triangles rasterise to the same pixels and depths.
+// common/face.vert rebuilds all 4 corners per vertex (16 per face) for its edge distances and
+// face-wide facing tests; on llvmpipe, where the vertex stage is serial, that made these two
+// passes vertex-bound (sapphire: 22 and 28 ms at 480x270 against 36 and 37 ms at 1920x1080).
+#include "common/grid.glsl"
+
+layout(std430, binding = 3) readonly buffer Faces { uint faces[]; };
+
+uniform mat4 view_projection;
+uniform mat4 cut_view;  // the camera whose depth seed_geometry.frag writes
+
+// The same corner, projected by the same product, as common/face.vert.
+invariant gl_Position;
+
+out FaceVaryings {
+#include "common/face_varyings.glsl"
+} v_out;
+
+void main() {
+    uint record = faces[gl_VertexID / 4];
+    uint cell = face_record_cell(record);
+    vec3 q = corner_position(cell, face_corners[face_record_side(record) * 4u + uint(gl_VertexID) % 4u]);
+    gl_Position = view_projection * vec4(q, 1.0);
+    v_out.cut_eye_depth = -(cut_view * vec4(q, 1.0)).z;
+}
