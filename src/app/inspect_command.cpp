@@ -1,4 +1,4 @@
-// `cutaway inspect MODEL.grdecl [MORE.grdecl...] [--json] [--cells-csv FILE]`
+// `cutaway inspect MODEL.grdecl [MORE.grdecl...] | preset:NAME [--json] [--cells-csv FILE]`
 #include <charconv>
 #include <chrono>
 #include <ostream>
@@ -7,8 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/model_source.h"
 #include "app/option_checks.h"
-#include "grid/grdecl_reader.h"
 #include "grid/grid_summary.h"
 #include "io/staged_file.h"
 
@@ -105,19 +105,13 @@ int run_inspect(const InspectOptions& options) {
     files.emplace_back("--cells-csv", options.cells_csv);
     refuse_shared_outputs(files);
     using clock = std::chrono::steady_clock;
-    grid::GrdeclReadOptions read_options;
-    read_options.memory_limit_bytes = gib_to_bytes(options.memory_limit_gb);
-    std::vector<std::filesystem::path> paths(options.files.begin(), options.files.end());
-    std::vector<std::string> warnings;
-
-    const auto t0 = clock::now();
-    const grid::CornerPointGrid grid = grid::load_grdecl(paths, read_options, &warnings);
+    const LoadedModel model = load_model(options.files, gib_to_bytes(options.memory_limit_gb));
+    const grid::CornerPointGrid& grid = model.grid;
     const auto t1 = clock::now();
     const grid::GridSummary summary = grid::summarize(grid);
-    const auto t2 = clock::now();
-    const auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+    const double summary_ms = std::chrono::duration<double, std::milli>(clock::now() - t1).count();
 
-    const nlohmann::json j = summary_json(options, grid, summary, warnings, ms(t0, t1), ms(t1, t2));
+    const nlohmann::json j = summary_json(options, grid, summary, model.warnings, 1e3 * model.load_seconds, summary_ms);
     // The CSV first: a failed write ends the command before a report that would look like success.
     if (!options.cells_csv.empty())
         io::write_stream(options.cells_csv, [&grid](std::ostream& out) { write_cells_csv(out, grid); });
@@ -132,15 +126,15 @@ int run_inspect(const InspectOptions& options) {
 
 CommandAction add_inspect_command(CLI::App& app) {
     auto options = std::make_shared<InspectOptions>();
-    CLI::App* cmd = app.add_subcommand("inspect", "Load GRDECL file(s) onto one grid and report dimensions, "
-                                                  "active cells, faces by class and volumes");
-    cmd->add_option("model", options->files, "GRDECL file(s): the grid, then any property files")
+    CLI::App* cmd = app.add_subcommand("inspect", "Load GRDECL file(s) onto one grid, or generate a preset, and report "
+                                                  "dimensions, active cells, faces by class and volumes");
+    cmd->add_option("model", options->files, "GRDECL file(s): the grid, then any property files; or preset:NAME")
         ->required()
         ->check(utf8_text());
     cmd->add_flag("--json", options->json, "Print the report as JSON");
     cmd->add_option("--cells-csv", options->cells_csv, "Write i,j,k,volume,cx,cy,cz per active cell (0-based ijk)")
         ->check(writable_output());
-    add_memory_limit_option(*cmd, options->memory_limit_gb, "grids whose file text and arrays need");
+    add_memory_limit_option(*cmd, options->memory_limit_gb, "grids (file text and arrays)");
     return [options] { return run_inspect(*options); };
 }
 

@@ -61,7 +61,7 @@ LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory
     } else {
         grid::GrdeclReadOptions options;
         options.memory_limit_bytes = memory_limit_bytes;
-        loaded.grid = grid::load_grdecl(files_of(model), options, nullptr);
+        loaded.grid = grid::load_grdecl(files_of(model), options, &loaded.warnings);
         loaded.description = files_description(model);
     }
     loaded.load_seconds = seconds_since(started);
@@ -93,7 +93,7 @@ LoadedModel load_block(const std::vector<std::string>& model, const grid::IjkBox
         grid::GrdeclReadOptions options;
         options.memory_limit_bytes = memory_limit_bytes;
         options.block = box;
-        loaded.grid = grid::load_grdecl(files_of(model), options, nullptr);
+        loaded.grid = grid::load_grdecl(files_of(model), options, &loaded.warnings);
         loaded.description = files_description(model) + " (read by block)";
     }
     loaded.load_seconds = seconds_since(started);

@@ -14,6 +14,7 @@ struct LoadedModel {
     grid::CornerPointGrid grid;
     std::string description;  ///< file path or "preset:NAME (seed S)"
     double load_seconds = 0;
+    std::vector<std::string> warnings;  ///< the GRDECL reader's (none for a preset)
 };
 
 /// Loads `model` (files read onto one grid, or one preset:NAME); throws GrdeclError for bad files, std::invalid_argument for unknown presets.
