@@ -1,8 +1,10 @@
 #version 450 core
-// Depth-only face passes (the rear shell, cut_surface/seed_geometry.frag; the shell contours,
-// primary/shell_depth.frag): one face record -> one indexed quad as in common/face.vert, but each
-// vertex rebuilds only its own corner. These passes read no normal, edge distance or cell, and
-// their facing test is the rasteriser's, per triangle (GL_CULL_FACE): the faces come split by the
+// Depth-only face passes (the rear shell, cut_surface/seed_geometry.frag, with the primaries'
+// faces at the far plane, cut_surface/far_depth.frag; the shell contours, primary/shell_depth.frag;
+// the cut seeds from the primaries' faces, --seeds geometry): one face record -> one indexed quad
+// as in common/face.vert, but each vertex rebuilds only its own corner. These passes read no
+// normal, edge distance or cell. Where they keep one side only (the rear shell, the contours),
+// the facing test is the rasteriser's, per triangle (GL_CULL_FACE): the faces come split by the
 // way their corners (face_corners order) turn seen from outside their cell (GridBuffers::
 // WoundFaces), each part drawn with its own glFrontFace, so a vertex keeps the corner
 // common/face.vert gives it and the triangles rasterise to the same pixels and depths.

@@ -16,7 +16,7 @@ RearShellDepth::RearShellDepth(const gl::ShaderLibrary& shaders, int width, int 
     // leaves the model (a face-wide test misjudged one and left a covered fault face,
     // grid/fault_cover.h, farthest at a few pixels).
     : program_(shaders.build({{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}})),
-      primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})) {
+      primaries_program_(shaders.build({{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/far_depth.frag"}})) {
     allocate(width, height);
 }
 

@@ -35,7 +35,7 @@ cone_field::SeedImage widened_by_one_pixel(const cone_field::SeedImage& seeds) {
 
 CutSeedPass::CutSeedPass(const gl::ShaderLibrary& shaders)
     : program_(build_cell_box_program(shaders, {.back_face_only = true})),
-      geometry_program_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"},
+      geometry_program_(shaders.build({{GL_VERTEX_SHADER, "common/face_corner.vert"},
                                        {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}})) {}
 
 const gl::Texture& CutSeedPass::render_on_gpu(const CutSurfaceInputs& inputs) {
