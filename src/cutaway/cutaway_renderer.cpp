@@ -354,7 +354,7 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
     last_drawn_ = {};
     last_drawn_.secondary = cut_needed && s.draw == DrawMode::all_faces ? buffers_.secondary_faces().count : 0;
     last_drawn_.primary = draw_primaries ? buffers_.primary_faces().count : 0;
-    last_drawn_.shell_contours = s.contours ? buffers_.shell_faces().count() : 0;
+    last_drawn_.shell_contours = s.contours ? buffers_.outer_faces().count() : 0;
     visible_used_ = cut_needed && s.draw == DrawMode::visible;
     FrameTimes times;
     times.stages = timer_.stages();

@@ -7,6 +7,7 @@
 
 #include "gl/face_culling.h"
 #include "gl/uniforms.h"
+#include "grid/enclosed_pockets.h"
 
 namespace cutaway::pipeline {
 
@@ -23,6 +24,13 @@ WoundFaces WoundFaces::from(const std::vector<std::uint32_t>& records, const Gri
 }
 
 namespace {
+/// The layout's outer faces, split by winding.
+WoundFaces outer_surface(const GridLayout& layout, const grid::ZcornStore& zcorn) {
+    const std::vector<bool> active = active_cells(layout, zcorn.dims());
+    return WoundFaces::from(outer_faces(layout, zcorn, active, grid::enclosed_inactive_cells(zcorn, active, layout.face_tolerance)),
+                            layout);
+}
+
 /// The layout's packed classes (2 bits per side), 16 bits per active cell as the shaders read them
 /// (an R16UI buffer texture; the selection's storage buffer reads two cells per word, so the
 /// count is padded to even).
@@ -109,8 +117,7 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
       cell_face_classes_(gl::Buffer::from(std::span<const std::uint16_t>(packed_face_classes(layout)))),
       primary_bits_((layout.cells.size() + 31) / 32 * sizeof(std::uint32_t) + sizeof(std::uint32_t), nullptr,
                     GL_DYNAMIC_STORAGE_BIT),
-      shell_(WoundFaces::from(pipeline::shell_faces(layout), layout)),
-      outer_(WoundFaces::from(pipeline::outer_faces(layout, zcorn), layout)),
+      outer_(outer_surface(layout, zcorn)),
       pillar_texels_(pillars_, GL_RGBA32F),
       corner_plane_texels_(corner_planes_, GL_RGBA32F),
       cell_texels_(cells_, GL_RG32UI),
@@ -132,8 +139,7 @@ void GridBuffers::set_geometry_uniforms(const gl::Program& program) const {
 std::size_t GridBuffers::memory_bytes() const {
     std::size_t bytes = 0;
     for (const gl::Buffer* b : std::initializer_list<const gl::Buffer*>{&pillars_, &corner_planes_, &cells_, &values_, &cell_face_classes_, &primary_bits_,
-                                &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &shell_.counter_clockwise.buffer, &shell_.clockwise.buffer,
-                                &outer_.counter_clockwise.buffer, &outer_.clockwise.buffer, &all_.buffer})
+                                &secondary_.buffer, &primary_.buffer, &primary_cells_.buffer, &outer_.counter_clockwise.buffer, &outer_.clockwise.buffer, &all_.buffer})
         bytes += b->size_bytes();
     return bytes;
 }

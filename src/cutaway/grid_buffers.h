@@ -73,8 +73,9 @@ public:
     const FaceBuffer& secondary_faces() const { return secondary_; }
     const FaceBuffer& primary_faces() const { return primary_; }
     const FaceBuffer& primary_cells() const { return primary_cells_; }
-    const WoundFaces& shell_faces() const { return shell_; }
-    /// Shell and fault faces (grid_layout.h outer_faces).
+    /// The uncut model's outer surface (grid_layout.h outer_faces): the shell, the fault faces
+    /// no active cell across covers, less the walls of enclosed pockets. The rear shell keeps its
+    /// farthest depth, the shell contours its nearest.
     const WoundFaces& outer_faces() const { return outer_; }
     /// Every face of every active cell (built on first use: only the all-faces path needs it).
     const FaceBuffer& all_faces() const;
@@ -88,7 +89,7 @@ private:
     ModelFrame frame_;
     gl::Buffer pillars_, corner_planes_, cells_, values_, cell_face_classes_, primary_bits_;
     FaceBuffer secondary_, primary_, primary_cells_;
-    WoundFaces shell_, outer_;
+    WoundFaces outer_;
     /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
     /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
     gl::BufferTexture pillar_texels_, corner_plane_texels_, cell_texels_, value_texels_;

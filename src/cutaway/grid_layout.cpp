@@ -57,6 +57,7 @@ GridLayout build_grid_layout(const grid::CornerPointGrid& grid, const grid::Face
         if (grid.active(cell)) compact_of_cell[cell] = active++;
     layout.cells.resize(active);
     layout.face_classes.resize(active);
+    layout.face_tolerance = classes.tolerance();
     // Each active cell's records at its compact index (Eclipse order), the cells split over the threads.
     const std::ptrdiff_t cell_count = std::ptrdiff_t(grid.cell_count());
 #pragma omp parallel for schedule(static)
@@ -127,21 +128,31 @@ std::vector<std::uint32_t> faces_where(const GridLayout& layout, Keep keep) {
 }
 }  // namespace
 
-std::vector<std::uint32_t> shell_faces(const GridLayout& layout) {
-    return faces_where(layout, [](grid::FaceClass c) { return c == grid::FaceClass::shell; });
+std::vector<bool> active_cells(const GridLayout& layout, const grid::GridDims& dims) {
+    std::vector<bool> active(dims.cell_count(), false);
+    for (const std::uint32_t cell : layout.cells) active[cell & 0x7fffffffu] = true;
+    return active;
 }
 
-std::vector<std::uint32_t> outer_faces(const GridLayout& layout, const grid::ZcornStore& zcorn) {
+namespace {
+/// Whether the shell face of `compact` on `side` walls in an enclosed pocket (the cell across is in one).
+bool walls_pocket(const GridLayout& layout, const grid::GridDims& d, const std::vector<bool>& enclosed,
+                  std::uint32_t compact, grid::FaceSide side) {
+    const grid::CellIjk n = grid::across(grid::cell_ijk(d, layout.cells[compact] & 0x7fffffffu), side);
+    return d.contains(n.i, n.j, n.k) && enclosed[d.cell_index(n.i, n.j, n.k)];
+}
+}  // namespace
+
+std::vector<std::uint32_t> outer_faces(const GridLayout& layout, const grid::ZcornStore& zcorn,
+                                       const std::vector<bool>& active, const std::vector<bool>& enclosed) {
     const grid::GridDims& d = zcorn.dims();
-    std::vector<bool> active(d.cell_count(), false);
-    for (const std::uint32_t cell : layout.cells) active[cell & 0x7fffffffu] = true;
     std::vector<std::uint32_t> faces;
     for (std::uint32_t compact = 0; compact < layout.cells.size(); ++compact) {
         const grid::CellIjk at = grid::cell_ijk(d, layout.cells[compact] & 0x7fffffffu);
         for (int s = 0; s < 6; ++s) {
             const grid::FaceSide side(static_cast<grid::FaceSide>(s));
             const grid::FaceClass face_class = layout.face_class(compact, side);
-            const bool outer = face_class == grid::FaceClass::shell ||
+            const bool outer = (face_class == grid::FaceClass::shell && !walls_pocket(layout, d, enclosed, compact, side)) ||
                                (face_class == grid::FaceClass::fault && !grid::face_covered_across(zcorn, active, at.i, at.j, at.k, side));
             if (outer) faces.push_back(pack_face(compact, side, face_class));
         }

@@ -34,6 +34,9 @@ struct GridLayout {
     /// Classification of the six faces of every active cell by compact index, 2 bits per side
     /// (FaceClass at bits 2 s, sides in FaceSide order), as the GPU reads them.
     std::vector<std::uint16_t> face_classes;
+    /// The classification's tolerance (grid::FaceClassification::tolerance): corner depths this
+    /// close are one corner.
+    double face_tolerance = 0;
 
     /// Bit 31 of `cells`: the face corner order gives inward normals for this cell.
     bool inward_corner_order(std::size_t compact) const { return (cells[compact] & 0x80000000u) != 0; }
@@ -63,14 +66,19 @@ FaceLists build_face_lists(const grid::CornerPointGrid& grid, const GridLayout& 
 /// per pair (plus a margin for ties, where both copies of an edge-on face count as seen from inside).
 std::size_t selectable_face_capacity(const GridLayout& layout);
 
-/// Shell faces of the whole model (for the contour pass), independent of the selection.
-std::vector<std::uint32_t> shell_faces(const GridLayout& layout);
+/// One flag per Eclipse cell: active (a cell of `layout`).
+std::vector<bool> active_cells(const GridLayout& layout, const grid::GridDims& dims);
 
-/// Shell faces and the fault faces some part of which no active cell across covers
-/// (grid/fault_cover.h): the farthest of them along a ray is where the ray leaves the model
-/// (rear_shell_depth.h). A covered fault face never is, and 33% of sapphire's shell and fault
-/// faces, 45% of petra's, are covered ones.
-std::vector<std::uint32_t> outer_faces(const GridLayout& layout, const grid::ZcornStore& zcorn);
+/// The uncut model's outer surface: shell faces and the fault faces some part of which no active
+/// cell across covers (grid/fault_cover.h), less the walls of enclosed pockets of inactive cells
+/// (`enclosed`, grid/enclosed_pockets.h). The farthest of them along a ray is where the ray leaves
+/// the model (rear_shell_depth.h), the nearest where it enters (the shell contours). A covered
+/// fault face is neither, and 33% of sapphire's shell and fault faces, 45% of petra's, are covered
+/// ones; nor is a pocket's wall, which no ray from outside reaches before crossing an active cell.
+/// (With the shell faces alone the contours looked through the steps that faults make in the
+/// model's top into the cells behind, and drew stray lines there.)
+std::vector<std::uint32_t> outer_faces(const GridLayout& layout, const grid::ZcornStore& zcorn,
+                                       const std::vector<bool>& active, const std::vector<bool>& enclosed);
 
 /// Every face that is not interior (shell, fault, next to an inactive cell): what a frame
 /// without a cut can show (exposed_surface.h).

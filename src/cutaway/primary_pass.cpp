@@ -18,7 +18,7 @@ void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffe
 void PrimaryPass::draw_shell_depth(const FaceDrawContext& context, const SceneTargets& scene) {
     scene.shell_framebuffer.bind();
     prepare_face_program(shell_depth_, context);
-    context.grid.draw_faces(context.grid.shell_faces(), GL_BACK);  // per triangle (common/face_corner.vert)
+    context.grid.draw_faces(context.grid.outer_faces(), GL_BACK);  // the nearest, per triangle (common/face_corner.vert)
 }
 
 }  // namespace cutaway::pipeline

@@ -12,7 +12,7 @@ public:
     explicit PrimaryPass(const gl::ShaderLibrary& shaders);
     /// Draws `faces` into the bound scene framebuffer.
     void draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings);
-    /// Draws the shell faces' linear depth into scene.shell_framebuffer.
+    /// Draws the nearest outer face's linear depth (GridBuffers::outer_faces) into scene.shell_framebuffer.
     void draw_shell_depth(const FaceDrawContext& context, const SceneTargets& scene);
 
 private:

@@ -20,23 +20,11 @@ FaceClassification::FaceClassification(const CornerPointGrid& grid, double toler
                 const std::size_t cell = d.cell_index(i, j, k);
                 if (!grid.active(cell)) continue;
                 for (int side = 0; side < 6; ++side) {
-                    const int axis = side / 2;
                     const bool plus = side % 2 == 1;
-                    const int step = plus ? 1 : -1;
-                    const int ni = i + (axis == 0 ? step : 0), nj = j + (axis == 1 ? step : 0),
-                              nk = k + (axis == 2 ? step : 0);
+                    const CellIjk n = across({i, j, k}, FaceSide(side));
                     FaceClass face = FaceClass::shell;
-                    if (d.contains(ni, nj, nk) && grid.active(d.cell_index(ni, nj, nk))) {
-                        // Corners on this face have the axis bit set (plus side) or clear; the
-                        // neighbour's matching corners sit on the same pillars with the bit flipped.
-                        const int bit = 1 << axis;
-                        face = FaceClass::interior;
-                        for (int c = 0; c < 8; ++c) {
-                            if (((c & bit) != 0) != plus) continue;
-                            if (std::abs(z.corner_depth(i, j, k, c) - z.corner_depth(ni, nj, nk, c ^ bit)) > tolerance)
-                                face = FaceClass::fault;
-                        }
-                    }
+                    if (d.contains(n.i, n.j, n.k) && grid.active(d.cell_index(n.i, n.j, n.k)))
+                        face = faces_meet(z, i, j, k, FaceSide(side), tolerance) ? FaceClass::interior : FaceClass::fault;
                     classes_[6 * cell + std::size_t(side)] = face;
                     if (face == FaceClass::shell)
                         ++shell;
@@ -58,6 +46,20 @@ FaceClassification::FaceClassification(std::vector<FaceClass> classes, double to
         else if (plus && c == FaceClass::fault) ++counts_.fault;
         else if (plus && c == FaceClass::interior) ++counts_.interior;
     }
+}
+
+bool faces_meet(const ZcornStore& zcorn, int i, int j, int k, FaceSide side, double tolerance) {
+    const int axis = int(side) / 2;
+    const bool plus = int(side) % 2 == 1;
+    const CellIjk n = across({i, j, k}, side);
+    // Corners on this face have the axis bit set (plus side) or clear; the neighbour's matching
+    // corners sit on the same pillars with the bit flipped.
+    const int bit = 1 << axis;
+    for (int c = 0; c < 8; ++c) {
+        if (((c & bit) != 0) != plus) continue;
+        if (std::abs(zcorn.corner_depth(i, j, k, c) - zcorn.corner_depth(n.i, n.j, n.k, c ^ bit)) > tolerance) return false;
+    }
+    return true;
 }
 
 double default_face_tolerance(const CornerPointGrid& grid) { return face_tolerance_for(grid_bounds(grid)); }

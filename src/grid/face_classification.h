@@ -16,6 +16,12 @@ enum class FaceClass : std::uint8_t { none = 0, interior = 1, fault = 2, shell =
 /// Face order: I-, I+, J-, J+, K-, K+ (K+ is the bottom face, z down).
 enum class FaceSide : std::uint8_t { i_minus = 0, i_plus, j_minus, j_plus, k_minus, k_plus };
 
+/// The IJK neighbour across `side` of cell `at` (possibly outside the grid).
+inline CellIjk across(CellIjk at, FaceSide side) {
+    const int axis = int(side) / 2, step = int(side) % 2 == 1 ? 1 : -1;
+    return {at.i + (axis == 0 ? step : 0), at.j + (axis == 1 ? step : 0), at.k + (axis == 2 ? step : 0)};
+}
+
 struct FaceCounts {
     std::size_t interior = 0;  ///< faces shared by two active cells, counted once
     std::size_t fault = 0;     ///< faces shared by two active cells, counted once
@@ -41,6 +47,10 @@ private:
     FaceCounts counts_;
     double tolerance_;
 };
+
+/// Whether the face of cell (i, j, k) on `side` meets the face across of its IJK neighbour (which
+/// must lie in the grid): the 4 corner depths, on the same pillars, differ by at most `tolerance`.
+bool faces_meet(const ZcornStore& zcorn, int i, int j, int k, FaceSide side, double tolerance);
 
 /// Default tolerance: 1e-6 of the active cells' bounding-box diagonal (covers text rounding of
 /// depths printed with 6-7 significant digits, far below any real fault throw).

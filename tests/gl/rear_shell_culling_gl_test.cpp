@@ -1,10 +1,13 @@
 // The rear shell (cutaway/rear_shell_depth.h) lets the rasteriser cull the triangles facing the
-// eye, per winding part of the outer faces (GridBuffers::WoundFaces, common/face_corner.vert). A
-// ray leaves the closed outer surface (shell and uncovered fault faces) through a back-facing
-// triangle, so the farthest depth must barely change when nothing is culled: this compares the
-// pass against the same program drawing both parts without culling, at every pixel, from random
-// cameras, on models whose cells turn either way. A wrong glFrontFace for a part would keep its
-// front faces, which lie nearer: every pixel of that part would differ.
+// eye, per winding part of the outer faces (GridBuffers::WoundFaces, common/face_corner.vert), and
+// leaves out the walls of enclosed pockets of inactive cells (grid/enclosed_pockets.h). A ray
+// leaves the closed outer surface (shell and uncovered fault faces) through a back-facing
+// triangle, and never at a pocket's wall, so the farthest depth must barely change when nothing
+// is culled and the walls are drawn too: this compares the pass against the same program drawing
+// every shell and uncovered fault face without culling, at every pixel, from random cameras, on
+// models whose cells turn either way and on a generated model with enclosed pockets. A wrong
+// glFrontFace for a part would keep its front faces, which lie nearer: every pixel of that part
+// would differ.
 // What may differ, and why the bounds are what they are:
 // - the culled draw keeps a subset of the fragments, so it is never farther (exact);
 // - coincident or nearly coincident faces facing opposite ways (the top and bottom of a pinched-out
@@ -35,8 +38,10 @@ std::vector<float> read_depth(const gl::Texture& depth) {
     return texels;
 }
 
-/// Farthest depth of every outer-face triangle, none culled, in the rear shell's depth encoding.
-std::vector<float> unculled_rear_depth(const pipeline::GridBuffers& buffers, const pipeline::Camera& camera) {
+/// Farthest depth of every triangle of the shell and uncovered fault faces, pocket walls included,
+/// none culled, in the rear shell's depth encoding.
+std::vector<float> unculled_rear_depth(const pipeline::GridBuffers& buffers, const pipeline::FaceBuffer& faces,
+                                       const pipeline::Camera& camera) {
     const gl::Program program = GlEnvironment::shaders().build(
         {{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}});
     gl::Texture depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height);
@@ -53,14 +58,14 @@ std::vector<float> unculled_rear_depth(const pipeline::GridBuffers& buffers, con
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
-    buffers.draw_faces(buffers.outer_faces().counter_clockwise);
-    buffers.draw_faces(buffers.outer_faces().clockwise);
+    buffers.draw_faces(faces);
     glDepthFunc(GL_LESS);
     return read_depth(depth);
 }
 
 struct WindingParts {
     std::size_t counter_clockwise = 0, clockwise = 0;
+    std::size_t pocket_walls = 0;  ///< faces the pass leaves out as walls of enclosed pockets
 };
 
 WindingParts check_model(const grid::CornerPointGrid& grid, unsigned seed, const std::string& name) {
@@ -68,13 +73,15 @@ WindingParts check_model(const grid::CornerPointGrid& grid, unsigned seed, const
     const pipeline::GridLayout layout =
         pipeline::build_grid_layout(grid, grid::FaceClassification(grid, grid::default_face_tolerance(grid)), frame);
     const pipeline::GridBuffers buffers(layout, grid.zcorn(), frame);
+    const pipeline::FaceBuffer with_walls = pipeline::FaceBuffer::from(pipeline::outer_faces(
+        layout, grid.zcorn(), pipeline::active_cells(layout, grid.dims()), std::vector<bool>(grid.cell_count(), false)));
     pipeline::RearShellDepth rear(GlEnvironment::shaders(), width, height);
     std::mt19937 random(seed);
     for (int view = 0; view < 8; ++view) {
         const pipeline::Camera camera = pipeline::make_orbit_camera(frame, random_pose(random), width, height);
         rear.render(buffers, camera);
         const std::vector<float> culled = read_depth(rear.depth());
-        const std::vector<float> reference = unculled_rear_depth(buffers, camera);
+        const std::vector<float> reference = unculled_rear_depth(buffers, with_walls, camera);
         std::size_t covered = 0, farther = 0, differing = 0, far_apart = 0;
         for (std::size_t p = 0; p < culled.size(); ++p) {
             covered += reference[p] > 0.0f;
@@ -88,7 +95,8 @@ WindingParts check_model(const grid::CornerPointGrid& grid, unsigned seed, const
         EXPECT_LE(differing, covered / 1000) << where;
         EXPECT_LE(far_apart, 1u) << where;
     }
-    return {buffers.outer_faces().counter_clockwise.count, buffers.outer_faces().clockwise.count};
+    return {buffers.outer_faces().counter_clockwise.count, buffers.outer_faces().clockwise.count,
+            with_walls.count - buffers.outer_faces().count()};
 }
 
 TEST(RearShellCulling, FarthestDepthAsWithoutCullingOnGeneratedModels) {
@@ -97,6 +105,7 @@ TEST(RearShellCulling, FarthestDepthAsWithoutCullingOnGeneratedModels) {
     parts.counter_clockwise += faulted.counter_clockwise;
     parts.clockwise += faulted.clockwise;
     EXPECT_GT(parts.counter_clockwise + parts.clockwise, 0u);
+    EXPECT_GT(faulted.pocket_walls, 0u);  // the generated model has enclosed pockets to leave out
 }
 
 TEST(RearShellCulling, FarthestDepthAsWithoutCullingOnRealGridsOfBothHandednesses) {
