@@ -198,8 +198,9 @@ void GridBuffers::draw_faces(const FaceBuffer& faces) const {
 }
 
 void GridBuffers::draw_faces(const WoundFaces& faces, GLenum culled) const {
+    const gl::FaceCulling culling(culled);
     for (const auto& [part, front] : {std::pair{&faces.counter_clockwise, GL_CCW}, std::pair{&faces.clockwise, GL_CW}}) {
-        const gl::FaceCulling culling(culled, front);
+        glFrontFace(front);
         draw_faces(*part);
     }
 }

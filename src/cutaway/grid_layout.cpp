@@ -135,10 +135,9 @@ std::vector<bool> active_cells(const GridLayout& layout, const grid::GridDims& d
 }
 
 namespace {
-/// Whether the shell face of `compact` on `side` walls in an enclosed pocket (the cell across is in one).
-bool walls_pocket(const GridLayout& layout, const grid::GridDims& d, const std::vector<bool>& enclosed,
-                  std::uint32_t compact, grid::FaceSide side) {
-    const grid::CellIjk n = grid::across(grid::cell_ijk(d, layout.cells[compact] & 0x7fffffffu), side);
+/// Whether the face of the cell at `at` on `side` walls in an enclosed pocket (the cell across is in one).
+bool walls_pocket(const grid::GridDims& d, const std::vector<bool>& enclosed, grid::CellIjk at, grid::FaceSide side) {
+    const grid::CellIjk n = grid::across(at, side);
     return d.contains(n.i, n.j, n.k) && enclosed[d.cell_index(n.i, n.j, n.k)];
 }
 }  // namespace
@@ -152,7 +151,7 @@ std::vector<std::uint32_t> outer_faces(const GridLayout& layout, const grid::Zco
         for (int s = 0; s < 6; ++s) {
             const grid::FaceSide side(static_cast<grid::FaceSide>(s));
             const grid::FaceClass face_class = layout.face_class(compact, side);
-            const bool outer = (face_class == grid::FaceClass::shell && !walls_pocket(layout, d, enclosed, compact, side)) ||
+            const bool outer = (face_class == grid::FaceClass::shell && !walls_pocket(d, enclosed, at, side)) ||
                                (face_class == grid::FaceClass::fault && !grid::face_covered_across(zcorn, active, at.i, at.j, at.k, side));
             if (outer) faces.push_back(pack_face(compact, side, face_class));
         }

@@ -1,14 +1,13 @@
 #pragma once
-// The rasteriser's triangle culling, on for one scope.
+// The rasteriser's triangle culling, on for one scope (glFrontFace back to GL_CCW at its end).
 #include <epoxy/gl.h>
 
 namespace cutaway::gl {
 
 class FaceCulling {
 public:
-    /// `culled`: GL_FRONT or GL_BACK; `front`: the winding of front-facing triangles, GL_CCW or GL_CW.
-    FaceCulling(GLenum culled, GLenum front) {
-        glFrontFace(front);
+    /// `culled`: GL_FRONT or GL_BACK; the winding of front-facing triangles is glFrontFace's.
+    explicit FaceCulling(GLenum culled) {
         glCullFace(culled);
         glEnable(GL_CULL_FACE);
     }

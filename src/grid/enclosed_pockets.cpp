@@ -31,7 +31,7 @@ std::vector<bool> enclosed_inactive_cells(const ZcornStore& zcorn, const std::ve
                     walled_in = false;  // on a side of the grid
                     continue;
                 }
-                if (!faces_meet(zcorn, at.i, at.j, at.k, FaceSide(s), tolerance)) walled_in = false;
+                if (walled_in && !faces_meet(zcorn, at.i, at.j, at.k, FaceSide(s), tolerance)) walled_in = false;
                 const std::size_t next = d.cell_index(n.i, n.j, n.k);
                 if (!active[next] && !visited[next]) {
                     visited[next] = true;

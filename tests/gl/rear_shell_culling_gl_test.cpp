@@ -40,10 +40,8 @@ std::vector<float> read_depth(const gl::Texture& depth) {
 
 /// Farthest depth of every triangle of the shell and uncovered fault faces, pocket walls included,
 /// none culled, in the rear shell's depth encoding.
-std::vector<float> unculled_rear_depth(const pipeline::GridBuffers& buffers, const pipeline::FaceBuffer& faces,
-                                       const pipeline::Camera& camera) {
-    const gl::Program program = GlEnvironment::shaders().build(
-        {{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}});
+std::vector<float> unculled_rear_depth(const gl::Program& program, const pipeline::GridBuffers& buffers,
+                                       const pipeline::FaceBuffer& faces, const pipeline::Camera& camera) {
     gl::Texture depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height);
     gl::Framebuffer framebuffer;
     framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
@@ -76,12 +74,14 @@ WindingParts check_model(const grid::CornerPointGrid& grid, unsigned seed, const
     const pipeline::FaceBuffer with_walls = pipeline::FaceBuffer::from(pipeline::outer_faces(
         layout, grid.zcorn(), pipeline::active_cells(layout, grid.dims()), std::vector<bool>(grid.cell_count(), false)));
     pipeline::RearShellDepth rear(GlEnvironment::shaders(), width, height);
+    const gl::Program unculled = GlEnvironment::shaders().build(
+        {{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}});
     std::mt19937 random(seed);
     for (int view = 0; view < 8; ++view) {
         const pipeline::Camera camera = pipeline::make_orbit_camera(frame, random_pose(random), width, height);
         rear.render(buffers, camera);
         const std::vector<float> culled = read_depth(rear.depth());
-        const std::vector<float> reference = unculled_rear_depth(buffers, with_walls, camera);
+        const std::vector<float> reference = unculled_rear_depth(unculled, buffers, with_walls, camera);
         std::size_t covered = 0, farther = 0, differing = 0, far_apart = 0;
         for (std::size_t p = 0; p < culled.size(); ++p) {
             covered += reference[p] > 0.0f;
