@@ -13,7 +13,8 @@
 # bench_cpu_path.json (GPU jump flooding against the CPU path it replaced), bench_main.json (the
 # main job on the four presets, visible faces against all faces, plain frame beside it),
 # bench_cut_strategies.json (experiments/cut_strategies' timing sweep), scale.jsonl (one
-# `cutaway render` stats object per line, with its wall time). Parts run in that order; each is
+# `cutaway render` stats object per line, with its wall time), orbit_petra_720p.jsonl (the viewer
+# experiment's camera path on petra at 1280x720, one `cutaway render` stats object per pose). Parts run in that order; each is
 # skipped when too little of SECONDS is left, and one that fails does not stop the others.
 # PARTS="render_sapphire scale" (say) runs only the parts named (their first word). The EGL
 # platform is render's auto choice (the device platform where a hardware EGL device is listed;
@@ -73,7 +74,20 @@ scale() {
     python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["command_wall_s"] = float(sys.argv[2]); print(json.dumps(s))' \
         "$scratch/stats.json" "$(((t1 - t0) / 1000000))e-3" >>"$out/scale.jsonl"
 }
-export -f bench scale
+# The viewer experiment's camera path (experiments/viewer_responsiveness: petra, 1280x720, 24 turns of
+# 15 degrees from azimuth 35 at elevation 30, primary range 0.325-0.4): the renderer's frame at each
+# pose, without a window (the lent machine has no display). One stats object per pose, its azimuth added.
+orbit() {
+    local i az
+    for i in $(seq 0 23); do
+        az=$((35 + 15 * i))
+        "$bin/cutaway" render preset:petra --range 0.325 0.4 --camera $((az % 360)) 30 0 --size 1280 720 --warmup 2 \
+            --repeat 5 --no-metrics --out "$scratch/orbit.png" --stats "$scratch/orbit.json" || return 1
+        python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s["camera_az"] = int(sys.argv[2]); print(json.dumps(s))' \
+            "$scratch/orbit.json" "$az" >>"$out/orbit_petra_720p.jsonl"
+    done
+}
+export -f bench scale orbit
 export bin scratch out
 
 # The GL tests read ../shared/data beside the repository (their compiled-in path).
@@ -108,4 +122,5 @@ for preset in scale-1m scale-10m; do
     for strategy in frustum-clusters frustum-sweep; do part "scale $preset $strategy" 40 scale "$preset" "$strategy"; done
 done
 part "scale scale-100m auto" 200 scale scale-100m auto  # the default (it draws frustum-sweep there)
+part orbit 30 orbit
 log "done"

@@ -26,7 +26,8 @@ import table1_report  # noqa: E402
 from run import PAPER_MS  # noqa: E402  (experiments/table1/run.py: the paper's Table 1)
 
 RAW = ("context.txt", "device.log", "render_sapphire.json", "render_sapphire.png", "bench_table1.json", "bench_cpu_path.json",
-       "bench_main.json", "bench_cut_strategies.json", "scale.jsonl", "gl_tests.log")
+       "bench_main.json", "bench_cut_strategies.json", "scale.jsonl", "gl_tests.log",
+       "orbit_petra_720p.jsonl")
 CUT_COLUMNS = ("frustum", "frustum-clusters", "frustum-sweep", "chamfer-5x5", "jfa", "jfa2")
 MARKERS = ("o", "s", "^", "D")  # one per model, in the benchmark's preset order
 
@@ -195,6 +196,26 @@ def scale_section(path):
     return lines + [""]
 
 
+def orbit_section(path):
+    """The renderer's frame along the viewer experiment's camera path (petra, 1280x720)."""
+    with open(path) as f:
+        rows = [json.loads(line) for line in f if line.strip()]
+    totals = [r["stages_ms"]["total"] for r in rows]
+    unfenced = [r["frame_ms_unfenced"] for r in rows]
+    stages = {s: statistics.median(r["stages_ms"][s] for r in rows) for s in rows[0]["stages_ms"] if s != "total"}
+    median = statistics.median(totals)
+    return ["## The viewer's camera path on petra at 1280x720", "",
+            f"`orbit_petra_720p.jsonl`: `cutaway render preset:petra --size 1280 720` at each of the {len(rows)} poses of "
+            "experiments/viewer_responsiveness (turns of 15 degrees from azimuth 35 at elevation 30, primary range "
+            f"0.325-0.4: {int(rows[0]['primary_cells']):,} primaries; the main job's settings), 2 warm-up and 5 timed frames "
+            "per pose. The lent machine has no display, so this is the renderer's frame without the viewer's window, "
+            "panel and swap.", "",
+            f"- frame (stats total, fenced), median over the poses: {ms(median)} ms ({1000 / median:.0f} frames per "
+            f"second); poses' medians {ms(min(totals))}-{ms(max(totals))} ms",
+            f"- the same frame with one fence at its end (`frame_ms_unfenced`): median {ms(statistics.median(unfenced))} ms",
+            "- stages, medians over the poses: " + ", ".join(f"{s} {ms(t)}" for s, t in stages.items()) + " ms", ""]
+
+
 def gl_tests_section(path):
     """The GL test binaries run on this GPU (their gtest summary and failures, from the log)."""
     with open(path) as f:
@@ -257,6 +278,8 @@ def main():
         lines += ["![stage 1 per strategy against primary cells](cut_strategies.png)", ""]
     if "scale.jsonl" in files:
         lines += scale_section(files["scale.jsonl"])
+    if "orbit_petra_720p.jsonl" in files:
+        lines += orbit_section(files["orbit_petra_720p.jsonl"])
     if "gl_tests.log" in files:
         lines += gl_tests_section(files["gl_tests.log"])
     with open(os.path.join(out, "README.md"), "w") as f:
