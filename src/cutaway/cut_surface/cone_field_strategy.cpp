@@ -10,6 +10,7 @@
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/gpu_cone_transform.h"
+#include "gl/gl_context.h"
 
 namespace cutaway::pipeline {
 namespace {
@@ -93,7 +94,8 @@ CutSurfaceEntry jump_flooding_entry(std::string name, cone_field::JfaVariant var
             "seeds and transform on the GPU, nothing read back: one compute pass per step over a texture of owners "
             "(seed position and depth per pixel), ping-ponged",
             [variant](const gl::ShaderLibrary& shaders) {
-                return std::make_unique<GpuConeFieldStrategy>(shaders, make_gpu_jump_flooding(shaders, variant));
+                return std::make_unique<GpuConeFieldStrategy>(
+                    shaders, make_gpu_jump_flooding(shaders, variant, buffered_cut_write_for(gl::gl_renderer())));
             },
             [variant](const cone_field::SeedImage& seeds, double slope) {
                 return cone_field::jump_flooding_cut(seeds, slope, variant);

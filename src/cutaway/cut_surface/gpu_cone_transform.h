@@ -6,6 +6,7 @@
 // t(q) - (m / (far - near)) |q - p| in stored units, and the clamp "0 at or in front of the near
 // plane" (storable_cut_depth) is max(t, 0).
 #include <memory>
+#include <string_view>
 
 #include "cutaway/cone_field/chamfer.h"
 #include "cutaway/cone_field/jump_flooding.h"
@@ -28,9 +29,21 @@ public:
     virtual void run(const GpuConeInput& input, const CutTargets& targets) = 0;
 };
 
+/// How jump flooding's cut, which its last pass stores in a buffer (gl/float_image_buffer.h),
+/// reaches CutTargets::depth: a pixel transfer from the buffer, or a full-screen fragment pass
+/// that reads it and sets gl_FragDepth (shaders/cut_surface/cut_from_buffer.frag). Same image.
+enum class BufferedCutWrite { pixel_transfer, fragment_pass };
+
+/// The cheaper of the two on the device GL_RENDERER names (sapphire, 1920x1080, glFinish laps):
+/// on llvmpipe the transfer, 2.7 ms against 6.5-9.6 for the fragment pass; on NVIDIA's H200 the
+/// fragment pass, 0.2 ms, where the transfer took 4.9-6.0 ms and made the last flooding pass,
+/// which writes the buffer, take 4.0 ms instead of 0.05 (stage 1 of jfa 11.2-11.5 -> 2.2 ms).
+BufferedCutWrite buffered_cut_write_for(std::string_view gl_renderer);
+
 /// Jump flooding with the passes of `variant` (jfa_steps), the CPU reference's 9-tap rule and
-/// tie-breaking, in float instead of double.
-std::unique_ptr<GpuConeTransform> make_gpu_jump_flooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant);
+/// tie-breaking, in float instead of double; its cut written into the depth image by `write`.
+std::unique_ptr<GpuConeTransform> make_gpu_jump_flooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant,
+                                                         BufferedCutWrite write);
 
 /// Chamfer propagation with `mask` as directional line sweeps (gpu_chamfer.cpp).
 std::unique_ptr<GpuConeTransform> make_gpu_chamfer(const gl::ShaderLibrary& shaders, cone_field::ChamferMask mask);

@@ -1,8 +1,9 @@
 // Jump flooding on the GPU: one compute pass per step (jfa_steps), ping-ponging two RGBA32UI
 // images of owners (seed position and stored depth per pixel, 2 pixels per texel,
 // shaders/cut_surface/jump_flood.comp);
-// the last pass stores each owner cone's height into a buffer copied into the cut depth (a fragment
-// pass writing it took 9-17 ms, the copy 2.7). On llvmpipe, image
+// the last pass stores each owner cone's height into a buffer, which reaches the cut depth by a
+// pixel transfer or a fragment pass, whichever the device does faster (BufferedCutWrite,
+// gpu_cone_transform.h). On llvmpipe, image
 // loads with "0 = no owner" (out-of-image loads read 0: no bounds tests) and selects instead of
 // branches made a pass about 2.5x faster than texelFetch with branches (same run, loaded machine).
 // Work groups of 64 x 4 passed JFA^2's 22 passes about 11% faster than 8 x 8 (16 x 16: slower, 32 x 8:
@@ -40,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/gpu_cone_transform.h"
 #include "cutaway/cut_surface/jump_flood_split.h"
 #include "gl/float_image_buffer.h"
@@ -88,11 +90,15 @@ void flood(const BlockPrograms& programs, int step, float slope, int width, int 
 
 class GpuJumpFlooding final : public GpuConeTransform {
 public:
-    GpuJumpFlooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant)
+    GpuJumpFlooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant, BufferedCutWrite write)
         : init_(shaders, "cut_surface/jump_flood.comp", group_defines()),
           passes_(shaders, false),
           last_passes_(shaders, true),
-          variant_(variant) {}
+          variant_(variant),
+          write_(write) {
+        if (write_ == BufferedCutWrite::fragment_pass)
+            cut_writer_ = shaders.build({{GL_VERTEX_SHADER, "post/fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/cut_from_buffer.frag"}});
+    }
 
     void run(const GpuConeInput& in, const CutTargets& targets) override {
         const int width = targets.depth.width(), height = targets.depth.height();
@@ -120,21 +126,38 @@ public:
             flood(last ? last_passes_ : passes_, steps[i], in.slope, width, height);
             current = 1 - current;
         }
-        cut_.write_depth(targets.depth);  // a copy on the GL side: no fragment pass, nothing read back
+        write_cut(targets, width);  // on the GL side: nothing read back
     }
 
 private:
+    void write_cut(const CutTargets& targets, int width) const {
+        if (write_ == BufferedCutWrite::pixel_transfer) {
+            cut_.write_depth(targets.depth);
+            return;
+        }
+        cut_.bind_image(0, GL_READ_ONLY);
+        gl::set_uniform(cut_writer_, "width", width);
+        write_cut_depth(cut_writer_, targets);
+    }
+
     SeedInitPrograms init_;
     BlockPrograms passes_, last_passes_;
     cone_field::JfaVariant variant_;
+    BufferedCutWrite write_;
+    gl::Program cut_writer_;             ///< cut_surface/cut_from_buffer.frag, for BufferedCutWrite::fragment_pass
     std::array<gl::Texture, 2> owners_;  ///< ping-pong, resized with the targets
-    gl::FloatImageBuffer cut_;           ///< the last pass's cut, copied into the cut depth image
+    gl::FloatImageBuffer cut_;           ///< the last pass's cut, written into the cut depth image by write_
 };
 
 }  // namespace
 
-std::unique_ptr<GpuConeTransform> make_gpu_jump_flooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant) {
-    return std::make_unique<GpuJumpFlooding>(shaders, variant);
+BufferedCutWrite buffered_cut_write_for(std::string_view gl_renderer) {
+    return is_software_rasteriser(gl_renderer) ? BufferedCutWrite::pixel_transfer : BufferedCutWrite::fragment_pass;
+}
+
+std::unique_ptr<GpuConeTransform> make_gpu_jump_flooding(const gl::ShaderLibrary& shaders, cone_field::JfaVariant variant,
+                                                         BufferedCutWrite write) {
+    return std::make_unique<GpuJumpFlooding>(shaders, variant, write);
 }
 
 }  // namespace cutaway::pipeline
