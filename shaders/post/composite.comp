@@ -12,7 +12,7 @@ layout(rg32f, binding = 1) uniform readonly image2D ambient;      // factor, lin
 layout(rg32ui, binding = 2) uniform readonly uimage2D scene_id;  // compact cell + 1, flags
 layout(r32f, binding = 3) uniform readonly image2D shell_depth;  // linear depth of the uncut shell (0 = background)
 layout(rgba8, binding = 4) uniform writeonly image2D final_colour;
-layout(rgba32f, binding = 5) uniform readonly image2D normal_depth;  // A: linear depth (0 = background)
+layout(rg32ui, binding = 5) uniform readonly uimage2D normal_depth;  // G: linear depth's bits (0 = background; common/packed_normal.glsl)
 uniform vec2 viewport_size;
 uniform float saturation_primary;    // factor on primaries' saturation
 uniform float saturation_secondary;  // factor on secondaries' saturation
@@ -47,7 +47,7 @@ vec3 hsv_to_rgb(vec3 c) {
 // keeps samples on the same smooth surface equal partners; 1e-20 keeps a zero depth from dividing
 // by zero.
 float ambient_at(ivec2 texel) {
-    float depth = imageLoad(normal_depth, texel).a;
+    float depth = uintBitsToFloat(imageLoad(normal_depth, texel).g);
     ivec2 low = texel >> 1, odd = texel & 1;
     ivec2 last = (ivec2(viewport_size) - 1) >> 1;
     float weight_sum = 0.0, sum = 0.0;

@@ -12,7 +12,9 @@
 // depth-aware upsampling (post/composite.comp, ambient_at): a quarter of the work.
 layout(local_size_x = 64, local_size_y = 16) in;  // gl::dispatch_over says why
 
-layout(rgba32f, binding = 0) uniform readonly image2D normal_depth;  // eye-space normal, linear depth (0 = background)
+#include "common/packed_normal.glsl"
+
+layout(rg32ui, binding = 0) uniform readonly uimage2D normal_depth;  // eye-space normal, linear depth (0 = background; packed_normal.glsl)
 layout(rg32f, binding = 1) uniform writeonly image2D ambient;        // factor, linear depth of its pixel
 uniform vec2 projection_scale;   // P[0][0], P[1][1]
 uniform vec2 viewport_size;
@@ -35,16 +37,17 @@ void main() {
 #endif
     if (any(greaterThanEqual(pixel, ivec2(viewport_size)))) return;
     vec2 window = vec2(pixel) + 0.5;  // the pixel's centre, as gl_FragCoord.xy
-    vec4 here = imageLoad(normal_depth, pixel);
-    if (here.a <= 0.0) {  // background: a branch, so that background-only SIMD lanes skip the samples
+    uvec2 here = imageLoad(normal_depth, pixel).rg;
+    float here_depth = packed_value(here);
+    if (here_depth <= 0.0) {  // background: a branch, so that background-only SIMD lanes skip the samples
         imageStore(ambient, target, vec4(1.0, 0.0, 0.0, 0.0));
         return;
     }
     vec2 ndc_per_px = 2.0 / (viewport_size * projection_scale);
     vec2 ndc_origin = -1.0 / projection_scale;
-    vec3 position = eye_position(window, here.a, ndc_per_px, ndc_origin);
-    vec3 normal = normalize(here.xyz);
-    float radius_px = radius * projection_scale.y * 0.5 * viewport_size.y / here.a;
+    vec3 position = eye_position(window, here_depth, ndc_per_px, ndc_origin);
+    vec3 normal = packed_normal(here);
+    float radius_px = radius * projection_scale.y * 0.5 * viewport_size.y / here_depth;
     // Per-pixel rotation of a fixed spiral (interleaved gradient noise) hides banding.
     float angle0 = 6.2831853 * fract(52.9829189 * fract(dot(window, vec2(0.06711056, 0.00583715))));
     // The spiral's direction turns by the golden angle per sample: a 2x2 rotation, not a sine and
@@ -60,11 +63,11 @@ void main() {
                          direction.x * golden_turn.y + direction.y * golden_turn.x);
         ivec2 texel = ivec2(window + offset);
         // Outside the image a load reads 0: no depth, no occlusion (selects, not branches).
-        float depth = imageLoad(normal_depth, texel).a;
+        float depth = packed_value(imageLoad(normal_depth, texel).rg);
         vec3 d = eye_position(vec2(texel) + 0.5, depth, ndc_per_px, ndc_origin) - position;
         float distance2 = dot(d, d);
         float occludes = max(dot(normal, d) * inversesqrt(distance2 + 1e-12) - 0.05, 0.0) / (1.0 + distance2 * inverse_radius2);
         occlusion += depth > 0.0 ? occludes : 0.0;
     }
-    imageStore(ambient, target, vec4(clamp(1.0 - strength * occlusion / float(SAMPLES), 0.0, 1.0), here.a, 0.0, 0.0));
+    imageStore(ambient, target, vec4(clamp(1.0 - strength * occlusion / float(SAMPLES), 0.0, 1.0), here_depth, 0.0, 0.0));
 }

@@ -15,11 +15,12 @@ layout(local_size_x = 64, local_size_y = 4) in;
 #include "common/pixel_flags.glsl"
 #include "common/secondary_shading.glsl"
 #include "common/deferred_face.glsl"
+#include "common/packed_normal.glsl"
 
 layout(rgba8, binding = 0) uniform writeonly image2D scene_colour;
 layout(rg32ui, binding = 1) uniform uimage2D scene_id;                 // compact cell + 1 (0: background), deferred face
-layout(rgba32f, binding = 2) uniform readonly image2D face_plane;      // world face normal, w = linear depth (DEFERRED)
-layout(rgba32f, binding = 3) uniform writeonly image2D normal_depth;  // eye normal, linear depth
+layout(rg32ui, binding = 2) uniform readonly uimage2D face_plane;      // world face normal, linear depth (DEFERRED; packed_normal.glsl)
+layout(rg32ui, binding = 3) uniform writeonly uimage2D normal_depth;  // eye normal, linear depth (packed_normal.glsl)
 uniform mat4 model_view;
 
 void main() {
@@ -27,9 +28,9 @@ void main() {
     if (any(greaterThanEqual(texel, ivec2(viewport_size)))) return;
     uvec2 id = imageLoad(scene_id, texel).rg;
     if (id.x == 0u) return;  // background (cleared): nothing drawn
-    vec4 plane = imageLoad(face_plane, texel);
-    vec3 plane_normal = plane.xyz;
-    float linear_depth = plane.w;  // the fragment's, as the one-pass draw stores it (not rebuilt from the depth buffer)
+    uvec2 plane = imageLoad(face_plane, texel).rg;
+    vec3 plane_normal = packed_normal(plane);
+    float linear_depth = packed_value(plane);  // the fragment's, as the one-pass draw stores it (not rebuilt from the depth buffer)
     vec2 window = vec2(texel) + 0.5;  // the pixel's centre, as gl_FragCoord.xy
     vec2 ndc = window / viewport_size * 2.0 - 1.0;
     vec3 world = (inverse_view * vec4(ndc / projection_scale * linear_depth, -linear_depth, 1.0)).xyz;
@@ -50,6 +51,6 @@ void main() {
         colour_border(s.colour, s.flags, face_info & 3u, hide_internal_lines);
 #endif
     imageStore(scene_colour, texel, vec4(s.colour, 1.0));
-    imageStore(normal_depth, texel, vec4(normalize(mat3(model_view) * s.normal), linear_depth));
+    imageStore(normal_depth, texel, uvec4(pack_normal_and(normalize(mat3(model_view) * s.normal), linear_depth), 0u, 0u));
     imageStore(scene_id, texel, uvec4(id.x, s.flags, 0u, 0u));
 }

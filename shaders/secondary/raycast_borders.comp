@@ -10,9 +10,10 @@ layout(local_size_x = 64, local_size_y = 4) in;
 #include "common/cut_lookup.glsl"
 #include "common/pixel_flags.glsl"
 #include "common/secondary_shading.glsl"
+#include "common/packed_normal.glsl"
 
-layout(rgba32f, binding = 2) uniform readonly image2D face_plane;    // world face normal, w = 1 + face class (0: a primary; not cleared where id is 0)
-layout(rgba32f, binding = 3) uniform readonly image2D normal_depth;  // w: linear depth in the model camera
+layout(rg32ui, binding = 2) uniform readonly uimage2D face_plane;    // world face normal, 1 + face class (0: a primary; not cleared where id is 0)
+layout(rg32ui, binding = 3) uniform readonly uimage2D normal_depth;  // eye normal, linear depth in the model camera
 uniform bool hide_internal_lines;  // no border lines on the cut fill (shell-cut lines stay)
 layout(rgba8, binding = 0) uniform image2D scene_colour;
 layout(rg32ui, binding = 1) uniform uimage2D scene_id;
@@ -23,15 +24,16 @@ void main() {
     vec2 window = vec2(texel) + 0.5;  // the pixel's centre, as gl_FragCoord.xy
     uvec2 id = imageLoad(scene_id, texel).rg;
     if (id.x == 0u) return;  // background: face_plane is not cleared (frame_targets.h)
-    vec4 plane = imageLoad(face_plane, texel);
-    if (plane.w == 0.0) return;
-    float depth = imageLoad(normal_depth, texel).a;
+    uvec2 plane = imageLoad(face_plane, texel).rg;
+    float face_class_plus_1 = packed_value(plane);
+    if (face_class_plus_1 == 0.0) return;
+    float depth = packed_value(imageLoad(normal_depth, texel).rg);
     vec2 ndc = window / viewport_size * 2.0 - 1.0;
     vec3 world = (inverse_view * vec4(ndc / projection_scale * depth, -depth, 1.0)).xyz;
-    if (!raycast_border_at(window, texel, world, plane.xyz)) return;
+    if (!raycast_border_at(window, texel, world, packed_normal(plane))) return;
     vec3 colour = imageLoad(scene_colour, texel).rgb;
     uint flags = id.y;
-    colour_border(colour, flags, uint(plane.w + 0.5) - 1u, hide_internal_lines);
+    colour_border(colour, flags, uint(face_class_plus_1 + 0.5) - 1u, hide_internal_lines);
     if (flags == id.y) return;
     imageStore(scene_colour, texel, vec4(colour, 1.0));
     imageStore(scene_id, texel, uvec4(id.x, flags, 0u, 0u));

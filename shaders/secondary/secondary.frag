@@ -48,14 +48,14 @@ void main() {
 #ifdef DEFERRED
     // Written to SceneTargets::deferred_framebuffer: the id and face plane targets only.
     out_id = uvec2(v_in.compact_cell + 1u, pack_deferred_face(v_in.face_info, edge_opacity));
-    out_face_plane = vec4(v_in.face_normal, linear_depth);  // w: linear depth
+    out_face_plane = pack_normal_and(v_in.face_normal, linear_depth);  // and the linear depth
 #else
     SecondaryShade s = shade_secondary(here, v_in.world_position, ivec2(gl_FragCoord.xy), v_in.compact_cell,
                                        v_in.face_info, v_in.face_normal, edge_opacity, edge_opacity > 0.5);
     write_frame_at_depth(s.colour, s.normal, linear_depth, v_in.compact_cell, s.flags);
 #ifdef BORDER_RAYCAST
     // The ray-cast test runs once per visible pixel afterwards (secondary/raycast_borders.comp).
-    out_face_plane = vec4(v_in.face_normal, 1.0 + float(v_in.face_info & 3u));  // w: 1 + face class
+    out_face_plane = pack_normal_and(v_in.face_normal, 1.0 + float(v_in.face_info & 3u));  // and 1 + face class
 #endif
 #endif
 }

@@ -17,7 +17,7 @@
 namespace cutaway::app {
 
 /// Host bytes a frame needs per pixel: the G-buffers (cut surface 13 with its filtered depth, scene
-/// 52, post 6, mean filter, seeds and the cut pyramid about 20; on llvmpipe GPU memory is host
+/// 36, post 6, mean filter, seeds and the cut pyramid about 20; on llvmpipe GPU memory is host
 /// memory) plus the CPU read-backs of the image, the cell ids and the metrics' frames. Measured
 /// peaks were 145-150 bytes per pixel (render --size 8192 8192: 9.7 GB; 4096 4096: 2.5 GB) when
 /// the targets held 33 bytes per pixel more (a second resolved cut, the two-pass face index, the

@@ -1,6 +1,8 @@
 #include "cutaway/cutaway_renderer.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -46,6 +48,17 @@ FloatImage read_channel(const gl::Texture& texture, int channel) {
     glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
     FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
     for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + std::size_t(channel)];
+    return image;
+}
+
+/// The float of an RG32UI target that holds a packed normal and a float per pixel
+/// (shaders/common/packed_normal.glsl: its second word).
+FloatImage read_packed_value(const gl::Texture& texture) {
+    const int width = texture.width(), height = texture.height();
+    std::vector<std::uint32_t> words(std::size_t(width) * std::size_t(height) * 2);
+    glGetTextureImage(texture.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(words.size() * sizeof(std::uint32_t)), words.data());
+    FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
+    for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = std::bit_cast<float>(words[2 * i + 1]);
     return image;
 }
 
@@ -456,7 +469,7 @@ std::vector<std::uint32_t> CutawayRenderer::read_eclipse_ids() const {
     return ids;
 }
 
-FloatImage CutawayRenderer::read_scene_depth() const { return read_channel(scene_.normal_depth, 3); }
+FloatImage CutawayRenderer::read_scene_depth() const { return read_packed_value(scene_.normal_depth); }
 
 std::vector<float> CutawayRenderer::read_window_depth() const {
     std::vector<float> depth(std::size_t(width_) * std::size_t(height_));

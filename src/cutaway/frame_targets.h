@@ -40,19 +40,19 @@ struct NearestFaceTarget {
 struct SceneTargets {
     SceneTargets(int width, int height);
     gl::Texture colour;        ///< RGBA8, where id is not 0
-    gl::Texture normal_depth;  ///< RGBA32F (0 = background)
+    gl::Texture normal_depth;  ///< RG32UI: eye-space normal, linear depth (0 = background), shaders/common/packed_normal.glsl
     gl::Texture id;            ///< RG32UI: compact cell + 1 (0 = background), flags
-    gl::Texture face_plane;    ///< RGBA32F where id is not 0: world normal of the visible secondary face, w = 1 + face class (0 on primaries); deferred: w = linear depth
+    gl::Texture face_plane;    ///< RG32UI where id is not 0: world normal of the visible secondary face and 1 + face class (0 on primaries; deferred: the linear depth), packed as normal_depth
     gl::Texture depth;         ///< DEPTH32F
     gl::Framebuffer framebuffer;
     /// Stage 2's first pass on the visible path with --stage2-passes 2 (allocated at its first
     /// use: 4 bytes per pixel a one-pass frame does not need).
     const NearestFaceTarget& nearest_face() const;
     /// Stage 2's draw with --stage2-passes deferred (secondary.frag, DEFERRED): id and
-    /// face_plane only (24 of the 44 bytes per pixel the shaded draw writes per fragment), depth.
+    /// face_plane only (16 of the 28 bytes per pixel the shaded draw writes per fragment), depth.
     gl::Framebuffer deferred_framebuffer;
     /// The plain frame's (`--baseline`): colour, id and depth only (secondary/plain.frag), so a
-    /// frame without a cut writes 12 bytes per pixel instead of the G-buffer's 48.
+    /// frame without a cut writes 12 bytes per pixel instead of the G-buffer's 32.
     gl::Framebuffer plain_framebuffer;
     gl::Texture shell_depth;   ///< R32F linear depth of the uncut shell (contours)
     gl::Texture shell_depth_buffer;

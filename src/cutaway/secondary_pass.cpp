@@ -101,8 +101,8 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     gl::set_uniform(p, "hide_internal_lines", settings.hide_internal_lines);
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
-    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);  // image loads: cheaper than texelFetch on llvmpipe
-    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);  // image loads: cheaper than texelFetch on llvmpipe
+    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     gl::wait_for_draws_before_image_loads();
     p.use();
     dispatch_per_pixel(p, camera);
@@ -138,8 +138,8 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
     gl::set_uniform(p, "focal_px", camera.focal_px());
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
-    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
-    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
     gl::wait_for_draws_before_image_loads();
     dispatch_per_pixel(p, camera);
 }

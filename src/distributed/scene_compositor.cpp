@@ -4,6 +4,7 @@
 #include <IceTMPI.h>
 #include <mpi.h>
 
+#include <bit>
 #include <chrono>
 #include <cfloat>
 #include <stdexcept>
@@ -36,7 +37,7 @@ struct SceneCompositor::Impl {
     // This rank's buffers, then (rank 0) the composited ones.
     std::vector<float> depth, normal_depth, packed, shell;
     std::vector<std::uint8_t> colour;
-    std::vector<std::uint32_t> id_pairs, ids;
+    std::vector<std::uint32_t> normal_depth_words, id_pairs, ids;
     std::size_t icet_bytes = 0, reduce_bytes = 0;
     double exchange_ms = 0, wait_ms = 0;
 
@@ -85,7 +86,7 @@ bool SceneCompositor::composite(const pipeline::SceneTargets& scene, const std::
     Impl& m = *impl_;
     icetSetContext(m.context);
     read_texture(scene.depth, GL_DEPTH_COMPONENT, GL_FLOAT, m.depth, 1);
-    read_texture(scene.normal_depth, GL_RGBA, GL_FLOAT, m.normal_depth, 4);
+    read_texture(scene.normal_depth, GL_RG_INTEGER, GL_UNSIGNED_INT, m.normal_depth_words, 2);
     read_texture(scene.colour, GL_RGBA, GL_UNSIGNED_BYTE, m.colour, 4);
     read_texture(scene.id, GL_RG_INTEGER, GL_UNSIGNED_INT, m.id_pairs, 2);
     read_texture(scene.shell_depth, GL_RED, GL_FLOAT, m.shell, 1);
@@ -93,7 +94,14 @@ bool SceneCompositor::composite(const pipeline::SceneTargets& scene, const std::
     if (whole_ids.size() != pixels) throw std::invalid_argument("composite: one whole-model id per pixel expected");
     // Integers below 2^24 are exact in float, and Z-buffer compositing copies them unchanged.
     m.packed.resize(4 * pixels);
+    m.normal_depth.resize(4 * pixels);
     for (std::size_t p = 0; p < pixels; ++p) {
+        // The packed normal's two 16-bit halves (exact in float) and the linear depth itself.
+        const std::uint32_t normal = m.normal_depth_words[2 * p];
+        m.normal_depth[4 * p + 0] = float(normal & 0xffffu);
+        m.normal_depth[4 * p + 1] = float(normal >> 16);
+        m.normal_depth[4 * p + 2] = 0.0f;
+        m.normal_depth[4 * p + 3] = std::bit_cast<float>(m.normal_depth_words[2 * p + 1]);
         const std::uint8_t* c = &m.colour[4 * p];
         m.packed[4 * p + 0] = float(std::uint32_t(c[0]) | std::uint32_t(c[1]) << 8 | std::uint32_t(c[2]) << 16);
         m.packed[4 * p + 1] = float(whole_ids[p] & 0xffffu);
@@ -129,9 +137,12 @@ bool SceneCompositor::composite(const pipeline::SceneTargets& scene, const std::
         m.id_pairs[2 * p] = m.ids[p];
         m.id_pairs[2 * p + 1] = std::uint32_t(q[3]);
         if (shell_out[p] == FLT_MAX) shell_out[p] = 0.0f;
+        const float* n = &normal_depth_out[4 * p];
+        m.normal_depth_words[2 * p] = std::uint32_t(n[0]) | std::uint32_t(n[1]) << 16;
+        m.normal_depth_words[2 * p + 1] = std::bit_cast<std::uint32_t>(n[3]);
     }
     write_texture(scene.depth, GL_DEPTH_COMPONENT, GL_FLOAT, depth_out);
-    write_texture(scene.normal_depth, GL_RGBA, GL_FLOAT, normal_depth_out);
+    write_texture(scene.normal_depth, GL_RG_INTEGER, GL_UNSIGNED_INT, m.normal_depth_words);
     write_texture(scene.colour, GL_RGBA, GL_UNSIGNED_BYTE, m.colour);
     write_texture(scene.id, GL_RG_INTEGER, GL_UNSIGNED_INT, m.id_pairs);
     write_texture(scene.shell_depth, GL_RED, GL_FLOAT, shell_out);

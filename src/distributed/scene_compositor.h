@@ -3,7 +3,8 @@
 // pre-rendered buffers; IceT needs no GL context of its own here). Every channel the screen-space
 // passes read is composited with the same window depth, so every channel of a pixel comes from
 // the same rank:
-//   composite 1, RGBA32F: eye-space normal xyz + linear depth (SSAO's input);
+//   composite 1, RGBA32F: the eye-space normal's two 16-bit halves as packed in the normal_depth
+//     target (shaders/common/packed_normal.glsl; exact in float), 0, linear depth (SSAO's input);
 //   composite 2, RGBA32F holding exact integers below 2^24: colour R + 256 G + 65536 B, the
 //     whole-model Eclipse id + 1 in two 16-bit halves, and the pixel flags;
 //   the uncut shell's linear depth (contours) has its own depth: MPI_Reduce(MIN) at rank 0.

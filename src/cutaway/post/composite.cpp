@@ -28,7 +28,7 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
     glBindImageTexture(2, scene.id.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     glBindImageTexture(3, scene.shell_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(4, post.final_colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-    glBindImageTexture(5, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA32F);
+    glBindImageTexture(5, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     gl::set_uniform(p, "viewport_size", glm::vec2(float(width), float(height)));
     gl::set_uniform(p, "saturation_primary", settings.saturation_primary);
     gl::set_uniform(p, "saturation_secondary", settings.saturation_secondary);
