@@ -12,7 +12,7 @@ layout(rg32f, binding = 1) uniform readonly image2D ambient;      // factor, lin
 layout(rg32ui, binding = 2) uniform readonly uimage2D scene_id;  // compact cell + 1, flags
 layout(r32f, binding = 3) uniform readonly image2D shell_depth;  // linear depth of the uncut shell (0 = background)
 layout(rgba8, binding = 4) uniform writeonly image2D final_colour;
-layout(rg32ui, binding = 5) uniform readonly uimage2D normal_depth;  // G: linear depth's bits (0 = background; common/packed_normal.glsl)
+layout(rg32ui, binding = 5) uniform readonly uimage2D normal_depth;  // eye normal, linear depth (0 = background; common/packed_normal.glsl)
 uniform vec2 viewport_size;
 uniform float saturation_primary;    // factor on primaries' saturation
 uniform float saturation_secondary;  // factor on secondaries' saturation
@@ -23,6 +23,7 @@ uniform float contour_jump;          // relative depth jump that makes a fold co
 uniform vec3 background;
 
 #include "common/pixel_flags.glsl"
+#include "common/packed_normal.glsl"
 
 vec3 rgb_to_hsv(vec3 c) {
     vec4 K = vec4(0.0, -1.0 / 3.0, 2.0 / 3.0, -1.0);
@@ -47,7 +48,7 @@ vec3 hsv_to_rgb(vec3 c) {
 // keeps samples on the same smooth surface equal partners; 1e-20 keeps a zero depth from dividing
 // by zero.
 float ambient_at(ivec2 texel) {
-    float depth = uintBitsToFloat(imageLoad(normal_depth, texel).g);
+    float depth = packed_value(imageLoad(normal_depth, texel).rg);
     ivec2 low = texel >> 1, odd = texel & 1;
     ivec2 last = (ivec2(viewport_size) - 1) >> 1;
     float weight_sum = 0.0, sum = 0.0;

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstdint>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "cutaway/colour_map.h"
@@ -15,6 +15,7 @@
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "gl/gl_context.h"
 #include "gl/gl_error.h"
+#include "gl/texture_readback.h"
 #include "grid/cell_geometry.h"
 #include "grid/face_classification.h"
 
@@ -41,23 +42,11 @@ int checked_side(int side, const char* name) {
     return side;
 }
 
-/// One channel (0 = R .. 3 = A) of a float texture, read back as RGBA.
-FloatImage read_channel(const gl::Texture& texture, int channel) {
-    const int width = texture.width(), height = texture.height();
-    std::vector<float> rgba(std::size_t(width) * std::size_t(height) * 4);
-    glGetTextureImage(texture.id(), 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
-    FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
-    for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = rgba[4 * i + std::size_t(channel)];
-    return image;
-}
-
 /// The float of an RG32UI target that holds a packed normal and a float per pixel
 /// (shaders/common/packed_normal.glsl: its second word).
 FloatImage read_packed_value(const gl::Texture& texture) {
-    const int width = texture.width(), height = texture.height();
-    std::vector<std::uint32_t> words(std::size_t(width) * std::size_t(height) * 2);
-    glGetTextureImage(texture.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(words.size() * sizeof(std::uint32_t)), words.data());
-    FloatImage image{width, height, std::vector<float>(std::size_t(width) * std::size_t(height))};
+    const std::vector<std::uint32_t> words = gl::read_texels<std::uint32_t>(texture, GL_RG_INTEGER, GL_UNSIGNED_INT, 2);
+    FloatImage image{texture.width(), texture.height(), std::vector<float>(words.size() / 2)};
     for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = std::bit_cast<float>(words[2 * i + 1]);
     return image;
 }
@@ -450,8 +439,7 @@ gl::RgbaImage CutawayRenderer::read_image() const {
 }
 
 IdImage CutawayRenderer::read_ids() const {
-    std::vector<std::uint32_t> pairs(std::size_t(width_) * std::size_t(height_) * 2);
-    glGetTextureImage(scene_.id.id(), 0, GL_RG_INTEGER, GL_UNSIGNED_INT, GLsizei(pairs.size() * 4), pairs.data());
+    const std::vector<std::uint32_t> pairs = gl::read_texels<std::uint32_t>(scene_.id, GL_RG_INTEGER, GL_UNSIGNED_INT, 2);
     IdImage ids{width_, height_, {}, {}};
     ids.cell.resize(pairs.size() / 2);
     ids.flags.resize(pairs.size() / 2);
@@ -472,13 +460,11 @@ std::vector<std::uint32_t> CutawayRenderer::read_eclipse_ids() const {
 FloatImage CutawayRenderer::read_scene_depth() const { return read_packed_value(scene_.normal_depth); }
 
 std::vector<float> CutawayRenderer::read_window_depth() const {
-    std::vector<float> depth(std::size_t(width_) * std::size_t(height_));
-    glGetTextureImage(scene_.depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * sizeof(float)), depth.data());
-    return depth;
+    return gl::read_texels<float>(scene_.depth, GL_DEPTH_COMPONENT, GL_FLOAT, 1);
 }
 
 FloatImage CutawayRenderer::read_cut_depth() const {
-    return read_channel(cut_.surface, 0);
+    return {cut_.surface.width(), cut_.surface.height(), gl::read_texels<float>(cut_.surface, GL_RED, GL_FLOAT, 1)};
 }
 
 cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) const {

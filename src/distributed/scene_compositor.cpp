@@ -9,18 +9,14 @@
 #include <cfloat>
 #include <stdexcept>
 
+#include "gl/texture_readback.h"
+
 namespace cutaway::distributed {
 namespace {
 
 void check_icet(const char* what) {
     if (const IceTEnum error = icetGetError(); error != ICET_NO_ERROR)
         throw std::runtime_error(std::string("IceT: ") + what + " failed (error 0x" + std::to_string(error) + ")");
-}
-
-template <typename T>
-void read_texture(const gl::Texture& texture, GLenum format, GLenum type, std::vector<T>& out, std::size_t components) {
-    out.resize(std::size_t(texture.width()) * std::size_t(texture.height()) * components);
-    glGetTextureImage(texture.id(), 0, format, type, GLsizei(out.size() * sizeof(T)), out.data());
 }
 
 template <typename T>
@@ -85,11 +81,11 @@ SceneCompositor::~SceneCompositor() {
 bool SceneCompositor::composite(const pipeline::SceneTargets& scene, const std::vector<std::uint32_t>& whole_ids) {
     Impl& m = *impl_;
     icetSetContext(m.context);
-    read_texture(scene.depth, GL_DEPTH_COMPONENT, GL_FLOAT, m.depth, 1);
-    read_texture(scene.normal_depth, GL_RG_INTEGER, GL_UNSIGNED_INT, m.normal_depth_words, 2);
-    read_texture(scene.colour, GL_RGBA, GL_UNSIGNED_BYTE, m.colour, 4);
-    read_texture(scene.id, GL_RG_INTEGER, GL_UNSIGNED_INT, m.id_pairs, 2);
-    read_texture(scene.shell_depth, GL_RED, GL_FLOAT, m.shell, 1);
+    gl::read_texels_into(scene.depth, GL_DEPTH_COMPONENT, GL_FLOAT, 1, m.depth);
+    gl::read_texels_into(scene.normal_depth, GL_RG_INTEGER, GL_UNSIGNED_INT, 2, m.normal_depth_words);
+    gl::read_texels_into(scene.colour, GL_RGBA, GL_UNSIGNED_BYTE, 4, m.colour);
+    gl::read_texels_into(scene.id, GL_RG_INTEGER, GL_UNSIGNED_INT, 2, m.id_pairs);
+    gl::read_texels_into(scene.shell_depth, GL_RED, GL_FLOAT, 1, m.shell);
     const std::size_t pixels = m.depth.size();
     if (whole_ids.size() != pixels) throw std::invalid_argument("composite: one whole-model id per pixel expected");
     // Integers below 2^24 are exact in float, and Z-buffer compositing copies them unchanged.
