@@ -195,11 +195,9 @@ void check_interior_faces_selected_once(const grid::CornerPointGrid& grid, unsig
     for (std::size_t c = 0; c < grid.cell_count(); ++c)
         if (grid.active(c)) eclipse_of.push_back(c);
     const grid::GridDims& dims = grid.dims();
-    const auto decode = [&](std::uint32_t record) {
-        const std::size_t cell = eclipse_of[record & ((1u << pipeline::face_cell_bits) - 1u)];
-        const int i = int(cell % std::size_t(dims.nx)), j = int(cell / std::size_t(dims.nx) % std::size_t(dims.ny)),
-                  k = int(cell / (std::size_t(dims.nx) * std::size_t(dims.ny)));
-        return std::make_tuple(grid::CellIjk{i, j, k}, grid::FaceSide((record >> pipeline::face_cell_bits) & 7u),
+    const auto decode = [&](std::uint32_t record) {  // pipeline::pack_face's cell, side and class
+        return std::make_tuple(grid::cell_ijk(dims, eclipse_of[pipeline::face_record_cell(record)]),
+                               grid::FaceSide((record >> pipeline::face_cell_bits) & 7u),
                                grid::FaceClass(record >> (pipeline::face_cell_bits + 3)));
     };
     std::size_t interior = 0, twice = 0, not_edge_on = 0;
