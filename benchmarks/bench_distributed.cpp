@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "app/heap_policy.h"
 #include "app/model_source.h"
 #include "app/render_options.h"
 #include "app/run_context.h"
@@ -158,6 +159,7 @@ void add_context(const DistributedBenchOptions& o, const distributed::MpiSession
 
 int main(int argc, char** argv) {
     using namespace cutaway;
+    app::keep_freed_heap_memory();  // as `cutaway` (app/heap_policy.h)
     const distributed::MpiSession mpi;
     try {
         const DistributedBenchOptions options = take_options(argc, argv, mpi.root());

@@ -20,6 +20,7 @@
 
 #include "app/model_source.h"
 #include "app/render_report.h"
+#include "app/heap_policy.h"
 #include "app/run_context.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
@@ -365,6 +366,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     stats["gl_version"] = gl::gl_version();
     stats["gl_platform"] = scene.context->platform();
     stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
     stats["git_revision"] = run_context::git_revision();
     stats["size"] = {options.width, options.height};
     stats["cells"] = scene.whole_dims.cell_count();

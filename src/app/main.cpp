@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "app/commands.h"
+#include "app/heap_policy.h"
 #include "app/mpi_launch.h"
 #include "gl/gl_error.h"
 #include "grid/grdecl_error.h"
@@ -12,6 +13,7 @@
 #include "volume/volume_error.h"
 
 int main(int argc, char** argv) {
+    cutaway::app::keep_freed_heap_memory();
     CLI::App app{"cutaway: corner-point reservoir grids, cutaway rendering and seismic ray casting benchmarks"};
     app.require_subcommand(1);
     // Refused command lines read like every other refusal: "cutaway: --option: expected ..., found ...".

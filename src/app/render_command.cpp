@@ -16,6 +16,7 @@
 #include "app/option_checks.h"
 #include "app/render_options.h"
 #include "app/render_report.h"
+#include "app/heap_policy.h"
 #include "app/run_context.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
@@ -149,6 +150,7 @@ int run_render(const RenderOptions& options) {
     stats["gl_version"] = gl::gl_version();
     stats["gl_platform"] = context->platform();
     stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
     stats["git_revision"] = run_context::git_revision();
     stats["size"] = {options.width, options.height};
     stats["cells"] = grid.cell_count();

@@ -13,6 +13,7 @@
 
 #include "app/commands.h"
 #include "app/option_checks.h"
+#include "app/heap_policy.h"
 #include "app/run_context.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
@@ -267,6 +268,7 @@ int run_volume(VolumeOptions& o) {
     stats["occupied_block_fraction"] = scene.occupied_fraction();
     stats["gl_renderer"] = runs.gl_renderer;
     stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
     stats["git_revision"] = run_context::git_revision();
     io::write_file(o.stats, stats.dump(2) + '\n');
     return 0;
