@@ -335,8 +335,7 @@ void register_benchmarks(const BenchSetup& setup) {
         ->Iterations(std::int64_t(o.repeat) * o.poses)->UseManualTime()->Unit(benchmark::kMillisecond);
 }
 
-void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::string>& strategies, const gl::GlContext& context,
-                 bool heap_kept) {
+void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::string>& strategies, const gl::GlContext& context) {
     auto join = [](const std::vector<std::string>& items) {
         std::string text;
         for (const std::string& item : items) text += (text.empty() ? "" : ",") + item;
@@ -346,7 +345,7 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
     benchmark::AddCustomContext("gl_version", gl::gl_version());
     benchmark::AddCustomContext("gl_platform", context.platform());
     benchmark::AddCustomContext("LP_NUM_THREADS", run_context::lp_num_threads());
-    benchmark::AddCustomContext("heap_trim_threshold_bytes", heap_kept ? std::to_string(app::kept_free_heap_bytes) : "glibc default");
+    benchmark::AddCustomContext("heap_trim_threshold_bytes", app::heap_trim_threshold_json().dump());  // as stats.json
     benchmark::AddCustomContext("git_revision", run_context::git_revision());
     benchmark::AddCustomContext("uname", run_context::uname_text());
     benchmark::AddCustomContext("cutaway_build_type", CUTAWAY_BUILD_TYPE);
@@ -373,7 +372,7 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool heap_kept = app::keep_freed_heap_memory();
+    app::keep_freed_heap_memory();  // as `cutaway` (app/heap_policy.h)
     try {
         const bench::CutawayBenchOptions options = bench::take_bench_options(argc, argv);
         const std::vector<std::string> strategies = chosen_strategies(options.strategies);
@@ -383,7 +382,7 @@ int main(int argc, char** argv) {
         const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
         SceneCache cache(shaders, options.width, options.height);
         const BenchSetup setup{shaders, options, strategies, cache};
-        add_context(options, strategies, *context, heap_kept);
+        add_context(options, strategies, *context);
         register_benchmarks(setup);
         benchmark::Initialize(&argc, argv);
         if (benchmark::ReportUnrecognizedArguments(argc, argv)) {

@@ -18,9 +18,9 @@
 #include <utility>
 #include <vector>
 
+#include "app/heap_policy.h"
 #include "app/model_source.h"
 #include "app/render_report.h"
-#include "app/heap_policy.h"
 #include "app/run_context.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"

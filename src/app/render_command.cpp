@@ -11,12 +11,12 @@
 
 #include "app/commands.h"
 #include "app/distributed_render.h"
+#include "app/heap_policy.h"
 #include "app/mpi_launch.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
 #include "app/render_options.h"
 #include "app/render_report.h"
-#include "app/heap_policy.h"
 #include "app/run_context.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"

@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
-#include "app/option_checks.h"
 #include "app/heap_policy.h"
+#include "app/option_checks.h"
 #include "app/run_context.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
