@@ -49,10 +49,12 @@
 #include "cutaway/cutaway_renderer.h"
 #include "gl/gl_context.h"
 #include "gl/shader_library.h"
+#include "metrics/median.h"
 
 namespace {
 
 using namespace cutaway;
+using cutaway::metrics::median;
 
 /// One loaded preset with its renderer; the bench keeps only the latest (1920x1080 targets are large).
 struct Scene {
@@ -100,13 +102,6 @@ std::size_t visible_primary_pixels(const pipeline::CutawayRenderer& renderer) {
     const pipeline::IdImage ids = renderer.read_ids();
     return std::size_t(std::count_if(ids.flags.begin(), ids.flags.end(),
                                      [](std::uint32_t f) { return (f & pipeline::flag_primary) != 0; }));
-}
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 pipeline::DrawMode draw_mode(const std::string& name) {

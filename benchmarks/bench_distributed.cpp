@@ -31,9 +31,11 @@
 #include "gl/gl_context.h"
 #include "gl/shader_library.h"
 #include "grid/face_classification.h"
+#include "metrics/median.h"
 
 namespace cutaway {
 namespace {
+using metrics::median;
 
 constexpr std::size_t memory_limit = std::size_t(8) << 30;
 
@@ -74,12 +76,6 @@ DistributedBenchOptions take_options(int& argc, char** argv, bool root) {
     if (o.frames < 1 || o.warmup < 0) throw std::invalid_argument("--frames: at least 1, --warmup: at least 0");
     if (o.presets.empty()) throw std::invalid_argument("--presets: expected at least one preset");
     return o;
-}
-
-double median(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n == 0 ? 0.0 : n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 struct BenchSetup {

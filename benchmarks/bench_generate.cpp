@@ -26,11 +26,13 @@
 #include "generators/presets.h"
 #include "generators/write_progress.h"
 #include "grid/grdecl_writer.h"
+#include "metrics/median.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 using namespace cutaway;
+using cutaway::metrics::median;
 
 struct Options {
     std::string preset = "scale-1m";
@@ -108,11 +110,6 @@ std::size_t header_active_cells(const fs::path& file) {
     for (std::string line; std::getline(in, line) && line.rfind("--", 0) == 0;)
         if (line.rfind("-- active_cells = ", 0) == 0) return std::stoull(line.substr(18));
     return 0;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 std::string utc_now() {

@@ -4,7 +4,7 @@ layout(location = 1) out uvec2 out_normal_depth;  // model camera eye-space norm
 layout(location = 2) out uvec2 out_id;            // compact cell + 1, pixel flags
 layout(location = 3) out uvec2 out_face_plane;    // world face normal, 1 + face class (secondaries; 0, 0 elsewhere), packed
 
-#include "common/pixel_flags.glsl"
+#include "common/shared_constants.h"
 #include "common/packed_normal.glsl"
 
 uniform mat4 model_view;  // the model camera's view matrix

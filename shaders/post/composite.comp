@@ -22,7 +22,7 @@ uniform vec3 contour_colour;
 uniform float contour_jump;          // relative depth jump that makes a fold contour
 uniform vec3 background;
 
-#include "common/pixel_flags.glsl"
+#include "common/shared_constants.h"
 #include "common/packed_normal.glsl"
 
 vec3 rgb_to_hsv(vec3 c) {

@@ -8,7 +8,7 @@ layout(local_size_x = 64, local_size_y = 4) in;
 #include "common/grid.glsl"
 #include "common/shading.glsl"
 #include "common/cut_lookup.glsl"
-#include "common/pixel_flags.glsl"
+#include "common/shared_constants.h"
 #include "common/secondary_shading.glsl"
 #include "common/packed_normal.glsl"
 

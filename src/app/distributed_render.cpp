@@ -10,7 +10,6 @@
 #include <functional>
 #include <iostream>
 #include <memory>
-#include <new>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -18,10 +17,12 @@
 #include <utility>
 #include <vector>
 
+#include "app/exit_status.h"
 #include "app/heap_policy.h"
 #include "app/model_source.h"
 #include "app/render_report.h"
 #include "app/run_context.h"
+#include "app/run_context_json.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cutaway_renderer.h"
@@ -30,13 +31,11 @@
 #include "distributed/rank_blocks.h"
 #include "distributed/rank_renderer.h"
 #include "gl/gl_context.h"
-#include "gl/gl_error.h"
 #include "gl/image.h"
 #include "grid/face_classification.h"
-#include "grid/grdecl_error.h"
 #include "grid/grid_box.h"
-#include "io/output_error.h"
 #include "io/staged_file.h"
+#include "metrics/median.h"
 
 namespace cutaway::app {
 namespace {
@@ -52,37 +51,6 @@ void check_distributed_options(const RenderOptions& options) {
     if (options.baseline) throw std::invalid_argument("--baseline: not supported under mpirun");
     if (!options.select_by.empty())
         throw std::invalid_argument("--select-by: not supported under mpirun (the ranks select by the colouring property on the GPU)");
-}
-
-/// Exit code of `main` for an exception (app/main.cpp's mapping).
-int exit_code_of(const std::exception_ptr& error) {
-    try {
-        std::rethrow_exception(error);
-    } catch (const grid::GrdeclError&) {
-        return 2;
-    } catch (const io::OutputError&) {
-        return 2;
-    } catch (const std::invalid_argument&) {
-        return 2;
-    } catch (const gl::GlError&) {
-        return 4;
-    } catch (const std::bad_alloc&) {
-        return 3;
-    } catch (...) {
-        return 1;
-    }
-}
-
-std::string message_of(const std::exception_ptr& error) {
-    try {
-        std::rethrow_exception(error);
-    } catch (const std::bad_alloc&) {
-        return "out of memory (lower the input size or raise --memory-limit-gb)";
-    } catch (const std::exception& e) {
-        return e.what();
-    } catch (...) {
-        return "unknown error";
-    }
 }
 
 /// A failure every rank agreed on: the lowest failing rank's message, the highest exit code.
@@ -101,8 +69,8 @@ void on_all_ranks(const distributed::MpiSession& mpi, const std::function<void()
     } catch (...) {
         failure = std::current_exception();
     }
-    const std::string error = mpi.first_error(failure ? message_of(failure) : std::string());
-    const int code = int(mpi.max(failure ? double(exit_code_of(failure)) : 0.0));
+    const std::string error = mpi.first_error(failure ? exit_status_of(failure).message : std::string());
+    const int code = int(mpi.max(failure ? double(exit_status_of(failure).code) : 0.0));
     if (!error.empty()) throw AgreedFailure{error, code};
 }
 
@@ -247,12 +215,12 @@ std::vector<double> rank_numbers(const RankScene& scene, const json& stages, con
                                 scene.load_peak_bytes,
                                 scene.model.load_seconds,
                                 scene.setup_seconds,
-                                median(exchange.allreduce_ms),
-                                median(exchange.icet_ms),
-                                median(exchange.icet_bytes),
-                                median(exchange.reduce_bytes),
-                                median(exchange.allreduce_wait_ms),
-                                median(exchange.icet_wait_ms)};
+                                metrics::median(exchange.allreduce_ms),
+                                metrics::median(exchange.icet_ms),
+                                metrics::median(exchange.icet_bytes),
+                                metrics::median(exchange.reduce_bytes),
+                                metrics::median(exchange.allreduce_wait_ms),
+                                metrics::median(exchange.icet_wait_ms)};
     const grid::IjkBox& b = rank.block().box;
     for (int bound : {b.i0, b.j0, b.k0, b.i1, b.j1, b.k1}) numbers.push_back(double(bound));
     for (const std::string& name : stage_order) numbers.push_back(stages["stages_ms"][name].get<double>());
@@ -362,12 +330,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
                 "single-process run instead)";
         }
     stats["strategy"] = strategy_json(strategy, settings.strategy, rank.renderer().auto_sweep_from());
-    stats["gl_renderer"] = gl::gl_renderer();
-    stats["gl_version"] = gl::gl_version();
-    stats["gl_platform"] = scene.context->platform();
-    stats["lp_num_threads"] = run_context::lp_num_threads();
-    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
-    stats["git_revision"] = run_context::git_revision();
+    stats.update(run_context_json(current_gl_device(scene.context->platform())));
     stats["size"] = {options.width, options.height};
     stats["cells"] = scene.whole_dims.cell_count();
     stats["active_cells"] = scene.whole_active;
@@ -407,9 +370,9 @@ int run_distributed_render(const RenderOptions& options) {
         return render_frames(options, mpi, scene);
     } catch (...) {
         // Mid-frame a rank may fail alone while the others wait in a collective: end them all.
-        std::cerr << "cutaway: rank " << mpi.rank() << " of " << mpi.size() << ": " << message_of(std::current_exception())
+        std::cerr << "cutaway: rank " << mpi.rank() << " of " << mpi.size() << ": " << exit_status_of(std::current_exception()).message
                   << '\n';
-        mpi.abort(exit_code_of(std::current_exception()));
+        mpi.abort(exit_status_of(std::current_exception()).code);
     }
 }
 

@@ -1,16 +1,12 @@
 // `cutaway`: one program, one subcommand per job (see ../shared/DESIGN.md for the contract).
 #include <exception>
 #include <iostream>
-#include <new>
 #include <sstream>
 
 #include "app/commands.h"
 #include "app/heap_policy.h"
+#include "app/exit_status.h"
 #include "app/mpi_launch.h"
-#include "gl/gl_error.h"
-#include "grid/grdecl_error.h"
-#include "io/output_error.h"
-#include "volume/volume_error.h"
 
 int main(int argc, char** argv) {
     cutaway::app::keep_freed_heap_memory();
@@ -45,27 +41,10 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("volume")) return volume();
         if (app.got_subcommand("generate-seismic")) return generate_seismic();
         if (app.got_subcommand("view")) return view();
-    } catch (const cutaway::grid::GrdeclError& error) {
-        std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
-    } catch (const cutaway::volume::VolumeError& error) {
-        std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
-    } catch (const cutaway::io::OutputError& error) {
-        std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
-    } catch (const cutaway::gl::GlError& error) {
-        std::cerr << "cutaway: OpenGL: " << error.what() << '\n';
-        return 4;
-    } catch (const std::invalid_argument& error) {
-        std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
-    } catch (const std::bad_alloc&) {
-        std::cerr << "cutaway: out of memory (lower the input size or raise --memory-limit-gb)\n";
-        return 3;
-    } catch (const std::exception& error) {
-        std::cerr << "cutaway: " << error.what() << '\n';
-        return 1;
+    } catch (...) {
+        const cutaway::app::ExitStatus status = cutaway::app::exit_status_of(std::current_exception());
+        std::cerr << "cutaway: " << status.message << '\n';
+        return status.code;
     }
-    return 1;
+    return cutaway::app::exit_failure;
 }

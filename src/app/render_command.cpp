@@ -18,6 +18,7 @@
 #include "app/render_options.h"
 #include "app/render_report.h"
 #include "app/run_context.h"
+#include "app/run_context_json.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cutaway_renderer.h"
@@ -27,6 +28,7 @@
 #include "metrics/cut_error.h"
 #include "grid/primary_selection.h"
 #include "io/staged_file.h"
+#include "metrics/median.h"
 
 namespace cutaway::app {
 namespace {
@@ -122,15 +124,15 @@ int run_render(const RenderOptions& options) {
     }
     std::vector<double> unfenced;
     for (int i = 0; i < options.repeat; ++i) unfenced.push_back(renderer.render_unfenced_ms(settings, camera));
-    stats["frame_ms_unfenced"] = median(unfenced);
+    stats["frame_ms_unfenced"] = metrics::median(unfenced);
     if (options.exact_check) stats["cut_vs_exact"] = exact_check(renderer, settings, camera);
     if (options.baseline) {
         std::vector<double> baseline;
         for (int i = 0; i < std::max(1, options.repeat); ++i)
             baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
-        stats["baseline_ms"] = median(baseline);
+        stats["baseline_ms"] = metrics::median(baseline);
         stats["baseline_faces_drawn"] = renderer.faces_drawn().secondary;
-        stats["total_over_baseline"] = stats["stages_ms"]["total"].get<double>() / median(baseline);
+        stats["total_over_baseline"] = stats["stages_ms"]["total"].get<double>() / metrics::median(baseline);
     }
     if (options.metrics) {
         const pipeline::FrameMetrics m = pipeline::measure_frame(renderer, settings, camera);
@@ -146,12 +148,7 @@ int run_render(const RenderOptions& options) {
         stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
     }
     stats["strategy"] = strategy_json(strategy, settings.strategy, renderer.auto_sweep_from());
-    stats["gl_renderer"] = gl::gl_renderer();
-    stats["gl_version"] = gl::gl_version();
-    stats["gl_platform"] = context->platform();
-    stats["lp_num_threads"] = run_context::lp_num_threads();
-    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
-    stats["git_revision"] = run_context::git_revision();
+    stats.update(run_context_json(current_gl_device(context->platform())));
     stats["size"] = {options.width, options.height};
     stats["cells"] = grid.cell_count();
     stats["active_cells"] = grid.active_count();

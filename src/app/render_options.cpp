@@ -6,20 +6,26 @@
 
 #include "annotation/property_units.h"
 #include "app/option_checks.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
+#include "cutaway/setting_names.h"
 #include "generators/generator.h"
 
 namespace cutaway::app {
 namespace {
 
-template <typename Enum>
-Enum parse_choice(const std::string& option, const std::string& value,
-                  std::initializer_list<std::pair<const char*, Enum>> choices) {
-    std::string known;
-    for (const auto& [name, result] : choices) {
-        if (value == name) return result;
-        known += (known.empty() ? "" : "|") + std::string(name);
-    }
-    throw std::invalid_argument(option + " '" + value + "': expected " + known);
+/// `value` by the choice table that named it on the command line (where it was checked already).
+template <typename Value>
+Value parse_choice(const std::string& option, const std::string& value, pipeline::ChoiceTable<Value> table) {
+    if (const std::optional<Value> found = pipeline::find_choice(table, value)) return *found;
+    throw std::invalid_argument(option + " '" + value + "': expected " + pipeline::joined_choices(pipeline::choice_names(table)));
+}
+
+/// The option checked against `table`'s names while parsing, its choices listed in the help.
+template <typename Value>
+CLI::Option* add_choice(CLI::App& c, const std::string& name, std::string& value, pipeline::ChoiceTable<Value> table,
+                        const std::string& help) {
+    const std::vector<std::string> names = pipeline::choice_names(table);
+    return c.add_option(name, value, pipeline::joined_choices(names) + ": " + help)->check(one_of(names));
 }
 
 std::string names_of(const std::vector<std::string>& names) {
@@ -54,20 +60,18 @@ pipeline::OrbitPose RenderOptions::camera_pose() const { return {camera[0], came
 pipeline::FrameSettings RenderOptions::frame_settings() const {
     using namespace pipeline;
     FrameSettings s = settings;
-    s.border = parse_choice<BorderMode>("--border", border, {{"raycast", BorderMode::raycast}, {"threshold", BorderMode::threshold}});
-    s.mean_filter_kernel = parse_choice<MeanFilterKernel>("--mean-filter-kernel", kernel,
-                                                          {{"full", MeanFilterKernel::full},
-                                                           {"sampled", MeanFilterKernel::sampled},
-                                                           {"distance-scaled", MeanFilterKernel::distance_scaled}});
-    s.ssao = parse_choice<bool>("--ssao", ssao, {{"on", true}, {"off", false}});
-    s.ssao_half_resolution = parse_choice<bool>("--ssao-resolution", ssao_resolution, {{"half", true}, {"full", false}});
-    s.contours = parse_choice<bool>("--contours", contours, {{"on", true}, {"off", false}});
-    s.only = parse_choice<OnlyLayer>("--only", only, {{"both", OnlyLayer::both}, {"primaries", OnlyLayer::primaries},
-                                                      {"secondaries", OnlyLayer::secondaries}});
-    s.draw = parse_choice<DrawMode>("--draw", draw, {{"visible", DrawMode::visible}, {"all-faces", DrawMode::all_faces}});
-    s.stage2_passes = parse_choice<Stage2Passes>("--stage2-passes", stage2_passes,
-                                                 {{"1", Stage2Passes::one}, {"2", Stage2Passes::two}, {"deferred", Stage2Passes::deferred}});
-    s.seeds = parse_choice<SeedSource>("--seeds", seeds, {{"boxes", SeedSource::boxes}, {"geometry", SeedSource::geometry}});
+    s.border = parse_choice("--border", border, choices_of(BorderMode{}));
+    s.mean_filter_kernel = parse_choice("--mean-filter-kernel", kernel, choices_of(MeanFilterKernel{}));
+    s.ssao = parse_choice("--ssao", ssao, on_off_choices());
+    s.ssao_half_resolution = parse_choice("--ssao-resolution", ssao_resolution, ssao_resolution_choices());
+    s.contours = parse_choice("--contours", contours, on_off_choices());
+    s.only = parse_choice("--only", only, choices_of(OnlyLayer{}));
+    s.draw = parse_choice("--draw", draw, choices_of(DrawMode{}));
+    s.stage2_passes = parse_choice("--stage2-passes", stage2_passes, choices_of(Stage2Passes{}));
+    s.seeds = parse_choice("--seeds", seeds, choices_of(SeedSource{}));
+    const std::vector<std::string> strategies = cut_strategy_names();
+    if (std::find(strategies.begin(), strategies.end(), s.strategy) == strategies.end())
+        throw std::invalid_argument("--strategy '" + s.strategy + "': expected " + joined_choices(strategies));
     for (float a : aperture)
         if (!(a >= 0 && a <= 180))
             throw std::invalid_argument("--aperture " + std::to_string(a) + ": expected a full opening angle 0..180 degrees");
@@ -111,22 +115,25 @@ void add_selection_options(CLI::App& c, RenderOptions& o) {
 }
 
 void add_frame_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("--strategy", o.settings.strategy, "cut-surface strategy (default auto: frustum-clusters, one frustum per IJK box of adjacent primaries, below 10,000 primary cells on a GPU and 500 on a software rasteriser such as llvmpipe, frustum-sweep from there; frustum: one per primary, the paper's)")->capture_default_str();
-    c.add_option("--draw", o.draw,
-                 "stage 2 faces: visible (GPU culling against the frustum and the cut) | all-faces (the paper's path)");
-    c.add_option("--stage2-passes", o.stage2_passes,
-                 "visible path: deferred (the draw makes the cut test only, a compute pass shades each pixel once; the default) | 1 (every fragment shaded) | 2 (cut test and depth first, then the faces drawn again, shading once per pixel)");
-    c.add_option("--seeds", o.seeds, "seeds of the distance-transform strategies: boxes|geometry");
-    c.add_option("--border", o.border, "border lines: raycast|threshold");
+    c.add_option("--strategy", o.settings.strategy, "cut-surface strategy (default auto: frustum-clusters, one frustum per IJK box of adjacent primaries, below 10,000 primary cells on a GPU and 500 on a software rasteriser such as llvmpipe, frustum-sweep from there; frustum: one per primary, the paper's)")
+        ->capture_default_str()
+        ->check(one_of(pipeline::cut_strategy_names()));
+    add_choice(c, "--draw", o.draw, pipeline::choices_of(pipeline::DrawMode{}),
+               "stage 2 faces: visible (GPU culling against the frustum and the cut) | all-faces (the paper's path)");
+    add_choice(c, "--stage2-passes", o.stage2_passes, pipeline::choices_of(pipeline::Stage2Passes{}),
+               "visible path: deferred (the draw makes the cut test only, a compute pass shades each pixel once; the default) | 1 (every fragment shaded) | 2 (cut test and depth first, then the faces drawn again, shading once per pixel)");
+    add_choice(c, "--seeds", o.seeds, pipeline::choices_of(pipeline::SeedSource{}), "seeds of the distance-transform strategies");
+    add_choice(c, "--border", o.border, pipeline::choices_of(pipeline::BorderMode{}), "border lines");
     c.add_option("--border-width", o.settings.border_width_px, "border line width w, pixels")
         ->check(finite_in(1, 32, "pixels"));
     c.add_option("--line-width", o.settings.line_width_px, "cell edge line width, pixels (0: none)")
         ->check(finite_in(0, 16, "pixels"));
     c.add_option("--mean-filter", o.settings.mean_filter, "mean filter size k (odd; 0 = off)")->check(finite_in(0, 65));
-    c.add_option("--mean-filter-kernel", o.kernel, "full|sampled|distance-scaled (radius shrinking with distance to the camera)");
-    c.add_option("--ssao", o.ssao, "on|off");
-    c.add_option("--ssao-resolution", o.ssao_resolution,
-                 "half (occlusion for one pixel in four, upsampled by depth; the default) | full (every pixel, as the paper)");
+    add_choice(c, "--mean-filter-kernel", o.kernel, pipeline::choices_of(pipeline::MeanFilterKernel{}),
+               "mean filter kernel (distance-scaled: radius shrinking with distance to the camera)");
+    add_choice(c, "--ssao", o.ssao, pipeline::on_off_choices(), "screen-space ambient occlusion");
+    add_choice(c, "--ssao-resolution", o.ssao_resolution, pipeline::ssao_resolution_choices(),
+               "half (occlusion for one pixel in four, upsampled by depth; the default) | full (every pixel, as the paper)");
     c.add_option("--aperture", o.aperture,
                  "horizontal and vertical aperture H V: full opening angles, degrees 0..180 (each wall leans out by "
                  "half; 180: flat)")
@@ -144,8 +151,8 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     c.add_flag("--see-through", o.settings.see_through,
                "let the cut leave the model through its rear shell (the paper's frustums; default: the cut "
                "stops just in front of the farthest shell surface, which shows as cut fill)");
-    c.add_option("--contours", o.contours, "shell contour lines: on|off");
-    c.add_option("--only", o.only, "both|primaries|secondaries");
+    add_choice(c, "--contours", o.contours, pipeline::on_off_choices(), "shell contour lines");
+    add_choice(c, "--only", o.only, pipeline::choices_of(pipeline::OnlyLayer{}), "layers drawn");
     c.add_flag("!--no-colour-bar", o.settings.colour_bar, "leave out the colour bar");
 }
 

@@ -8,17 +8,12 @@
 
 #include "app/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
+#include "metrics/median.h"
 
 namespace cutaway::app {
+using metrics::median;
 
 using nlohmann::json;
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
 
 json stage_statistics(const std::vector<pipeline::FrameTimes>& runs, const std::vector<std::string>& extra_stages) {
     json wall = json::object(), query = json::object(), valid = json::object();

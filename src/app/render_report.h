@@ -10,7 +10,6 @@
 
 namespace cutaway::app {
 
-double median(std::vector<double> values);
 
 /// Median over repetitions of each stage's wall and query times (pipeline::stage_names, then
 /// `extra_stages`, then total), plus validity of all.

@@ -54,9 +54,6 @@ inline std::string env_or_empty(const char* name) {
     return value ? value : "";
 }
 
-}  // namespace cutaway::run_context
-
-namespace cutaway::run_context {
 
 /// LP_NUM_THREADS as set for llvmpipe, or "unset" (llvmpipe then uses one thread per core).
 inline std::string lp_num_threads() {

@@ -15,6 +15,7 @@
 #include "app/heap_policy.h"
 #include "app/option_checks.h"
 #include "app/run_context.h"
+#include "app/run_context_json.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
 #include "gl/shader_library.h"
@@ -27,9 +28,11 @@
 #include "volume/level_window.h"
 #include "volume/segy_reader.h"
 #include "volume/view_geometry.h"
+#include "metrics/median.h"
 
 namespace cutaway::app {
 namespace {
+using metrics::median;
 
 using Clock = std::chrono::steady_clock;
 using volume::RayCastSettings;
@@ -65,13 +68,6 @@ double elapsed_ms(Clock::time_point since) {
     return std::chrono::duration<double, std::milli>(Clock::now() - since).count();
 }
 
-double median(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
 /// Per-stage times over the timed repetitions: fenced wall and GL query, ms.
 struct StageSeries {
     std::vector<double> wall_ms, gl_query_ms;
@@ -83,13 +79,13 @@ struct FrameRuns {
     std::map<std::string, StageSeries> stages;
     std::vector<double> total_ms;
     volume::CastResult last;
-    std::string gl_renderer = "none (cpu caster)";
+    GlDevice gl_device{"none (cpu caster)", "", ""};
 };
 
 FrameRuns run_gpu(const volume::VolumeScene& scene, const VolumeOptions& options) {
     FrameRuns runs;
     const auto context = gl::create_context(gl::ContextOptions{});
-    runs.gl_renderer = gl::gl_renderer();
+    runs.gl_device = current_gl_device(context->platform());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     volume::GpuRayCaster caster(shaders, scene);
     for (int frame = 0; frame < options.warmup + options.repeat; ++frame) {
@@ -266,10 +262,7 @@ int run_volume(VolumeOptions& o) {
     stats["samples_per_ray"] = runs.last.rays ? double(runs.last.samples) / double(runs.last.rays) : 0.0;
     stats["samples_per_second"] = samples_per_second;
     stats["occupied_block_fraction"] = scene.occupied_fraction();
-    stats["gl_renderer"] = runs.gl_renderer;
-    stats["lp_num_threads"] = run_context::lp_num_threads();
-    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
-    stats["git_revision"] = run_context::git_revision();
+    stats.update(run_context_json(runs.gl_device));
     io::write_file(o.stats, stats.dump(2) + '\n');
     return 0;
 }

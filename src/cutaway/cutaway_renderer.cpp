@@ -268,96 +268,43 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera)
     return times;
 }
 
+RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
+    RendererState state;
+    state.frozen = frozen_camera_.has_value();
+    state.frozen_cut_valid = frozen_valid_;
+    state.cone_field_strategy = bool(find_cut_surface(cut_strategy(s)).cpu_reference);
+    state.distributed = bool(hooks_.combine_max);
+    state.screen_passes = hooks_.screen_passes;
+    return state;
+}
+
 FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& camera) {
     if (camera.width != width_ || camera.height != height_)
         throw std::invalid_argument("camera image size differs from the renderer's");
     sync_selection_to_cpu();  // untimed: only after a new GPU selection
+    last_plan_ = plan_frame(s, state_for(s));
     timer_.clear();
     cut_readback_bytes_ = 0;
     empty_vertex_array_.bind();
     glFinish();
     const auto started = std::chrono::steady_clock::now();
 
-    const Camera& cut_camera = cut_camera_for(camera);
-    const bool draw_primaries = s.only != OnlyLayer::secondaries;
-    const bool cut_needed = s.only != OnlyLayer::primaries;
-    const bool cut_drawn = cut_needed && s.cut_enabled;
-    const bool keep_frozen_cut = frozen_camera_ && frozen_valid_;
-    if (!keep_frozen_cut) {
-        const bool filtered = cut_drawn && s.mean_filter >= 3;
-        const bool combined = cut_drawn && hooks_.combine_max;
-        // Cone-field strategies combine their seeds; the others their cut (a max either way).
-        const std::string cut_name = cut_strategy(s);
-        const bool seeds_combined = combined && bool(find_cut_surface(cut_name).cpu_reference);
-        gl::timed_stage(timer_, "cut_surface", [&] {
-            cut_.clear();
-            if (!cut_drawn) return;
-            CutSurfaceStrategy& cut_strategy = strategy(cut_name);
-            CutSurfaceInputs inputs = cut_inputs(s, cut_camera);
-            if (seeds_combined) inputs.combine_seeds = [&](const gl::Texture& seeds) { hooks_.combine_max({&seeds}); };
-            cut_strategy.render(inputs, cut_);
-            cut_readback_bytes_ = cut_strategy.readback_bytes();
-            if (!s.see_through) rear_shell_.render(buffers_, cut_camera);
-            if (!combined && !filtered) resolve_cut(nullptr, s, cut_camera);
-        });
-        if (combined)
-            gl::timed_stage(timer_, "cut_combine", [&] {
-                std::vector<const gl::Texture*> images;
-                if (!seeds_combined) images.push_back(&cut_.depth);
-                if (!s.see_through) images.push_back(&rear_shell_.depth());
-                if (!images.empty()) hooks_.combine_max(images);
-                if (!filtered) resolve_cut(nullptr, s, cut_camera);
-            });
-        if (filtered)
-            gl::timed_stage(timer_, "mean_filter", [&] {
-                resolve_cut(&mean_filter_.filter(cut_, s.mean_filter | 1, s.mean_filter_kernel, cut_camera,
-                                                 mean_filter_reference_depth(frame_, cut_camera)),
-                            s, cut_camera);
-            });
-        frozen_valid_ = frozen_camera_.has_value();
+    const FrameStep step{s, camera, cut_camera_for(camera), last_plan_};
+    for (const PlannedStage& stage : last_plan_.stages) {
+        empty_vertex_array_.bind();  // attribute-less passes draw with it; each pass binds its own otherwise
+        const auto run = [&] {
+            for (FramePass pass : stage.passes) run_pass(pass, step);
+        };
+        if (stage.stage.empty()) run();
+        else gl::timed_stage(timer_, stage.stage, run);
     }
-    empty_vertex_array_.bind();
-    const bool keep_view_rear = cut_drawn && frozen_camera_ && !s.see_through;
-    if (cut_needed && s.draw == DrawMode::visible)
-        gl::timed_stage(timer_, "culling", [&] {
-            visible_.select(buffers_, camera, cut_drawn ? &cut_ : nullptr, cut_camera, keep_view_rear);
-        });
-    if (cut_needed && s.draw == DrawMode::all_faces) secondary_face_list();  // built on first use, untimed
-    const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
-    gl::timed_stage(timer_, "secondary", [&] {
-        const CutClip clip{cut_, cut_camera, keep_view_rear ? &render_view_rear_shell(camera) : nullptr,
-                           rear_margin(camera)};
-        scene_.clear();
-        scene_.framebuffer.bind();
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(s.depth_ties_to_last ? GL_LEQUAL : GL_LESS);
-        if (!cut_needed) return;
-        secondary_.draw(context, [&] { draw_secondary_faces(s.draw); }, s, clip, scene_, s.draw);
-    });
-    gl::timed_stage(timer_, "primary", [&] {
-        scene_.framebuffer.bind();
-        if (draw_primaries) primary_.draw_primaries(context, buffers_.primary_faces(), s);
-        if (s.contours) primary_.draw_shell_depth(context, scene_);
-        glDepthFunc(GL_LESS);
-    });
-    bool run_post = true;
-    if (hooks_.combine_scene) gl::timed_stage(timer_, "composite", [&] { run_post = hooks_.combine_scene(scene_); });
-    if (s.ssao && run_post)
-        gl::timed_stage(timer_, "ssao", [&] {
-            ssao_.apply(scene_, post_, camera, s, s.ssao_radius * frame_.radius());
-        });
-    if (run_post)
-        gl::timed_stage(timer_, "post", [&] {
-            composite_.apply(scene_, post_, s, width_, height_);
-            if (s.colour_bar) colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
-            empty_vertex_array_.bind();
-        });
+    if (last_plan_.makes_cut) frozen_valid_ = frozen_camera_.has_value();
     glFinish();
     last_drawn_ = {};
-    last_drawn_.secondary = cut_needed && s.draw == DrawMode::all_faces ? buffers_.secondary_faces().count : 0;
-    last_drawn_.primary = draw_primaries ? buffers_.primary_faces().count : 0;
+    last_drawn_.secondary = last_plan_.runs(FramePass::secondary_list) ? buffers_.secondary_faces().count : 0;
+    last_drawn_.primary = last_plan_.draw_primaries ? buffers_.primary_faces().count : 0;
     last_drawn_.shell_contours = s.contours ? buffers_.outer_faces().count() : 0;
-    visible_used_ = cut_needed && s.draw == DrawMode::visible;
+    visible_used_ = last_plan_.runs(FramePass::culling);
     FrameTimes times;
     times.stages = timer_.stages();
     times.total.stage = "total";
@@ -368,6 +315,74 @@ FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& ca
         times.total.gl_query_valid = times.total.gl_query_valid && stage.gl_query_valid;
     }
     return times;
+}
+
+void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
+    gl::DebugGroup group(to_string(pass));
+    switch (pass) {
+    case FramePass::clear_cut: cut_.clear(); return;
+    case FramePass::strategy_cut: draw_strategy_cut(f); return;
+    case FramePass::rear_shell: rear_shell_.render(buffers_, f.cut_camera); return;
+    case FramePass::combine_cut: {
+        std::vector<const gl::Texture*> images;
+        if (f.plan.combine_cut_depth) images.push_back(&cut_.depth);
+        if (f.plan.combine_rear_shell) images.push_back(&rear_shell_.depth());
+        hooks_.combine_max(images);
+        return;
+    }
+    case FramePass::resolve_cut: resolve_cut(nullptr, f.settings, f.cut_camera); return;
+    case FramePass::filter_resolve_cut:
+        resolve_cut(&mean_filter_.filter(cut_, f.settings.mean_filter | 1, f.settings.mean_filter_kernel, f.cut_camera,
+                                         mean_filter_reference_depth(frame_, f.cut_camera)),
+                    f.settings, f.cut_camera);
+        return;
+    case FramePass::culling:
+        visible_.select(buffers_, f.camera, f.plan.cut_drawn ? &cut_ : nullptr, f.cut_camera, f.plan.clip_view_rear_shell);
+        return;
+    case FramePass::secondary_list: secondary_face_list(); return;
+    case FramePass::view_rear_shell: render_view_rear_shell(f.camera); return;
+    case FramePass::clear_scene:
+        scene_.clear();
+        scene_.framebuffer.bind();
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(f.settings.depth_ties_to_last ? GL_LEQUAL : GL_LESS);
+        return;
+    case FramePass::secondaries: draw_secondaries(f); return;
+    case FramePass::bind_scene: scene_.framebuffer.bind(); return;
+    case FramePass::primaries: primary_.draw_primaries(draw_context(f.camera), buffers_.primary_faces(), f.settings); return;
+    case FramePass::shell_contours: primary_.draw_shell_depth(draw_context(f.camera), scene_); return;
+    case FramePass::reset_depth_test: glDepthFunc(GL_LESS); return;
+    case FramePass::combine_scene: hooks_.combine_scene(scene_); return;
+    case FramePass::ssao: ssao_.apply(scene_, post_, f.camera, f.settings, f.settings.ssao_radius * frame_.radius()); return;
+    case FramePass::composite:
+        composite_.apply(scene_, post_, f.settings, width_, height_);
+        empty_vertex_array_.bind();
+        return;
+    case FramePass::colour_bar:
+        colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
+        empty_vertex_array_.bind();
+        return;
+    }
+}
+
+FaceDrawContext CutawayRenderer::draw_context(const Camera& camera) const {
+    return {buffers_, camera, &colour_map_, {label_.min, label_.max}};
+}
+
+void CutawayRenderer::draw_strategy_cut(const FrameStep& f) {
+    CutSurfaceStrategy& cut_strategy = strategy(this->cut_strategy(f.settings));
+    CutSurfaceInputs inputs = cut_inputs(f.settings, f.cut_camera);
+    if (f.plan.combine_seeds) inputs.combine_seeds = [&](const gl::Texture& seeds) { hooks_.combine_max({&seeds}); };
+    cut_strategy.render(inputs, cut_);
+    cut_readback_bytes_ = cut_strategy.readback_bytes();
+}
+
+void CutawayRenderer::draw_secondaries(const FrameStep& f) {
+    // The view's rear shell was drawn by view_rear_shell earlier in this stage (freeze view).
+    const CutClip clip{cut_, f.cut_camera, f.plan.clip_view_rear_shell ? &rear_shell_.depth() : nullptr,
+                       rear_margin(f.camera)};
+    secondary_.draw(draw_context(f.camera), [&] { draw_secondary_faces(f.settings.draw); }, f.settings, clip, scene_,
+                    f.settings.draw);
 }
 
 double CutawayRenderer::render_unfenced_ms(const FrameSettings& settings, const Camera& camera) {
@@ -389,7 +404,7 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode dr
     // Built on first use, untimed: every face of every cell, or the exposed faces with their corners.
     if (draw == DrawMode::all_faces) buffers_.all_faces();
     if (draw == DrawMode::visible && !exposed_) exposed_.emplace(shaders_, buffers_, layout_);
-    const FaceDrawContext context{buffers_, camera, &colour_map_, {label_.min, label_.max}};
+    const FaceDrawContext context = draw_context(camera);
     gl::timed_stage(timer_, "baseline", [&] {
         scene_.clear_plain();
         scene_.plain_framebuffer.bind();

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/shared_constants.h"
 #include "cutaway/active_cell_rank.h"
 #include "cutaway/camera.h"
 #include "cutaway/colour_bar.h"
@@ -16,6 +17,7 @@
 #include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "cutaway/exposed_surface.h"
+#include "cutaway/frame_plan.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/grid_buffers.h"
@@ -81,13 +83,15 @@ struct FrameHooks {
     /// Sums the primaries' centres over all renderers (the cone-field strategies' slope is taken
     /// at the centroid of all primaries). Called whenever the selection changes.
     std::function<CentreSum(const CentreSum& own)> sum_centres;
-    /// After stage 3, before SSAO and post: combines the G-buffer over all renderers and returns
-    /// whether this renderer runs the screen-space passes on it (false: its final image is left
-    /// unwritten). Timed as stage "composite".
-    std::function<bool(const SceneTargets& scene)> combine_scene;
+    /// After stage 3, before SSAO and post: combines the G-buffer over all renderers. Timed as
+    /// stage "composite".
+    std::function<void(const SceneTargets& scene)> combine_scene;
+    /// Whether this renderer runs the screen-space passes on the combined G-buffer (false: its
+    /// final image is left unwritten; only one renderer of a distributed frame runs them).
+    bool screen_passes = true;
 };
 
-inline constexpr std::uint32_t flag_primary = 1, flag_cut_fill = 2, flag_border = 4, flag_edge = 8, flag_shell_cut = 16;
+using shared::flag_border, shared::flag_cut_fill, shared::flag_edge, shared::flag_primary, shared::flag_shell_cut;
 
 class CutawayRenderer {
 public:
@@ -213,7 +217,19 @@ private:
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const ModelFrame& frame,
                     const LayOut& lay_out, int width, int height, const CornerDepthsRead& corner_depths_read);
 
+    /// What one pass of the plan needs: the frame's settings, cameras and plan.
+    struct FrameStep {
+        const FrameSettings& settings;
+        const Camera& camera;
+        const Camera& cut_camera;
+        const FramePlan& plan;
+    };
     FrameTimes render_once(const FrameSettings& settings, const Camera& camera);
+    RendererState state_for(const FrameSettings& settings) const;
+    void run_pass(FramePass pass, const FrameStep& step);
+    void draw_strategy_cut(const FrameStep& step);
+    void draw_secondaries(const FrameStep& step);
+    FaceDrawContext draw_context(const Camera& camera) const;
     const Camera& cut_camera_for(const Camera& camera) const { return frozen_camera_ ? *frozen_camera_ : camera; }
     CutSurfaceStrategy& strategy(const std::string& name);
     /// Render units the rear-shell clamp keeps in front of the rear shell seen from `camera`.
@@ -276,6 +292,7 @@ private:
     bool frozen_valid_ = false;
     gl::StageTimer timer_;
     FrameHooks hooks_;
+    FramePlan last_plan_;
 };
 
 /// Largest image side the current context can render (GL_MAX_TEXTURE_SIZE, GL_MAX_VIEWPORT_DIMS).

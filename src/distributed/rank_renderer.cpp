@@ -26,8 +26,9 @@ RankRenderer::RankRenderer(const gl::ShaderLibrary& shaders, GridBlock block, co
     hooks.combine_scene = [this](const pipeline::SceneTargets& scene) {
         std::vector<std::uint32_t> ids = renderer_.read_eclipse_ids();
         for (std::uint32_t& id : ids) id = block_.whole_id(id);
-        return compositor_.composite(scene, ids);
+        compositor_.composite(scene, ids);
     };
+    hooks.screen_passes = compositor_.displays();
     renderer_.set_hooks(std::move(hooks));
 }
 

@@ -145,6 +145,8 @@ bool SceneCompositor::composite(const pipeline::SceneTargets& scene, const std::
     return true;
 }
 
+bool SceneCompositor::displays() const { return impl_->rank == 0; }
+
 const std::vector<std::uint32_t>& SceneCompositor::composited_ids() const { return impl_->ids; }
 std::size_t SceneCompositor::icet_bytes_sent() const { return impl_->icet_bytes; }
 std::size_t SceneCompositor::reduce_bytes_sent() const { return impl_->reduce_bytes; }

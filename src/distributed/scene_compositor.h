@@ -32,6 +32,8 @@ public:
     /// bottom to top. At rank 0 the composited frame replaces `scene`'s colour, normal_depth, id
     /// (whole-model Eclipse id + 1, flags), depth and shell_depth; returns true there.
     bool composite(const pipeline::SceneTargets& scene, const std::vector<std::uint32_t>& whole_ids);
+    /// Whether this rank displays the composited frame (rank 0): it runs the screen-space passes.
+    bool displays() const;
     /// Rank 0: the last composited frame's whole-model Eclipse id + 1 per pixel.
     const std::vector<std::uint32_t>& composited_ids() const;
 

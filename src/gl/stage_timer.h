@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "gl/debug_group.h"
 #include "gl/gl_objects.h"
 
 namespace cutaway::gl {
@@ -47,9 +48,10 @@ private:
     std::vector<StageTime> stages_;
 };
 
-/// Runs `work` as one timed stage of `timer`.
+/// Runs `work` as one timed stage of `timer`, in a GL debug group of the stage's name.
 template <typename Work>
 void timed_stage(StageTimer& timer, std::string stage, Work&& work) {
+    const DebugGroup group(stage.c_str());
     timer.begin(std::move(stage));
     work();
     timer.end();

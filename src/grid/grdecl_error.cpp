@@ -12,6 +12,6 @@ static std::string describe(const GrdeclErrorInfo& info) {
     return text;
 }
 
-GrdeclError::GrdeclError(GrdeclErrorInfo info) : std::runtime_error(describe(info)), info_(std::move(info)) {}
+GrdeclError::GrdeclError(GrdeclErrorInfo info) : io::BadInputError(describe(info)), info_(std::move(info)) {}
 
 }  // namespace cutaway::grid

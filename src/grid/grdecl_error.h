@@ -1,7 +1,8 @@
 #pragma once
 // The one error type of GRDECL input: where (file, line, keyword), what was expected, what was found.
-#include <stdexcept>
 #include <string>
+
+#include "io/bad_input_error.h"
 
 namespace cutaway::grid {
 
@@ -13,7 +14,7 @@ struct GrdeclErrorInfo {
     std::string found;
 };
 
-class GrdeclError : public std::runtime_error {
+class GrdeclError : public io::BadInputError {
 public:
     explicit GrdeclError(GrdeclErrorInfo info);
     const GrdeclErrorInfo& info() const { return info_; }

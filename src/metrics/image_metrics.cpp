@@ -18,9 +18,9 @@ Exposure primary_exposure(const PixelIds& primaries_only, const PixelIds& cutawa
     require_same_size(primaries_only, cutaway);
     Exposure exposure;
     for (std::size_t i = 0; i < primaries_only.cell.size(); ++i) {
-        if (primaries_only.cell[i] == 0 || !(primaries_only.flags[i] & pixel_primary)) continue;
+        if (primaries_only.cell[i] == 0 || !(primaries_only.flags[i] & flag_primary)) continue;
         ++exposure.primary_pixels;
-        if (cutaway.cell[i] == primaries_only.cell[i] && (cutaway.flags[i] & pixel_primary)) ++exposure.visible;
+        if (cutaway.cell[i] == primaries_only.cell[i] && (cutaway.flags[i] & flag_primary)) ++exposure.visible;
     }
     exposure.fraction = exposure.primary_pixels == 0 ? 1.0 : double(exposure.visible) / double(exposure.primary_pixels);
     return exposure;
@@ -29,7 +29,7 @@ Exposure primary_exposure(const PixelIds& primaries_only, const PixelIds& cutawa
 std::size_t context_pixels(const PixelIds& frame) {
     std::size_t count = 0;
     for (std::size_t i = 0; i < frame.cell.size(); ++i)
-        if (frame.cell[i] != 0 && !(frame.flags[i] & (pixel_primary | pixel_cut_fill | pixel_border))) ++count;
+        if (frame.cell[i] != 0 && !(frame.flags[i] & (flag_primary | flag_cut_fill | flag_border))) ++count;
     return count;
 }
 

@@ -3,10 +3,12 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/shared_constants.h"
+
 namespace cutaway::metrics {
 
 /// Per-pixel ids of one frame: cell[i] = compact cell + 1 (0 = background), flags[i] as in
-/// shaders/common/frame_outputs.glsl. Row order does not matter as long as images agree.
+/// shaders/common/shared_constants.h. Row order does not matter as long as images agree.
 struct PixelIds {
     int width = 0;
     int height = 0;
@@ -14,7 +16,7 @@ struct PixelIds {
     const std::vector<std::uint32_t>& flags;
 };
 
-inline constexpr std::uint32_t pixel_primary = 1, pixel_cut_fill = 2, pixel_border = 4;
+using shared::flag_border, shared::flag_cut_fill, shared::flag_primary;
 
 struct Exposure {
     double fraction = 1;            ///< visible unchanged / primary pixels (1 when there are none)

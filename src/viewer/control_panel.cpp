@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include "cutaway/cut_surface/cut_strategy_choice.h"
+#include "cutaway/setting_names.h"
 
 namespace cutaway::viewer {
 namespace {
@@ -27,9 +28,10 @@ bool choice_combo(const char* label, std::string& value, const std::vector<std::
 
 /// A checkbox over an "on"/"off" option.
 bool on_off_checkbox(const char* label, std::string& value) {
-    bool on = value == "on";
+    const pipeline::ChoiceTable<bool> words = pipeline::on_off_choices();
+    bool on = pipeline::find_choice(words, value).value_or(false);
     if (!ImGui::Checkbox(label, &on)) return false;
-    value = on ? "on" : "off";
+    value = pipeline::name_of_choice(words, on);
     return true;
 }
 
@@ -81,7 +83,7 @@ unsigned property_section(ViewerState& state, const ViewerScene& scene) {
 unsigned cut_section(ViewerState& state) {
     app::RenderOptions& o = state.options;
     bool changed = choice_combo("strategy", o.settings.strategy, pipeline::cut_strategy_names());
-    changed |= choice_combo("seeds", o.seeds, {"boxes", "geometry"});
+    changed |= choice_combo("seeds", o.seeds, pipeline::choice_names<pipeline::SeedSource>());
     changed |= ImGui::SliderFloat("aperture H (full)", &o.aperture[0], 0, 180, "%.1f deg");
     changed |= ImGui::SliderFloat("aperture V (full)", &o.aperture[1], 0, 180, "%.1f deg");
     changed |= ImGui::Checkbox("aperture 180 (remove all in front)", &o.aperture_180);
@@ -97,7 +99,7 @@ unsigned cut_section(ViewerState& state) {
 unsigned lines_and_post_section(ViewerState& state) {
     app::RenderOptions& o = state.options;
     pipeline::FrameSettings& s = o.settings;
-    bool changed = choice_combo("border", o.border, {"raycast", "threshold"});
+    bool changed = choice_combo("border", o.border, pipeline::choice_names<pipeline::BorderMode>());
     changed |= ImGui::SliderFloat("border width", &s.border_width_px, 1, 8, "%.1f px");
     changed |= ImGui::SliderFloat("line width", &s.line_width_px, 0, 4, "%.1f px");
     changed |= ImGui::Checkbox("hide internal lines", &s.hide_internal_lines);
@@ -110,11 +112,11 @@ unsigned lines_and_post_section(ViewerState& state) {
         s.mean_filter = half ? 2 * half + 1 : 0;
         changed = true;
     }
-    changed |= choice_combo("kernel", o.kernel, {"full", "sampled", "distance-scaled"});
+    changed |= choice_combo("kernel", o.kernel, pipeline::choice_names<pipeline::MeanFilterKernel>());
     changed |= on_off_checkbox("SSAO", o.ssao);
-    changed |= choice_combo("SSAO resolution", o.ssao_resolution, {"half", "full"});
+    changed |= choice_combo("SSAO resolution", o.ssao_resolution, pipeline::choice_names(pipeline::ssao_resolution_choices()));
     changed |= ImGui::Checkbox("saturation contrast", &s.saturation);
-    changed |= choice_combo("show", o.only, {"both", "primaries", "secondaries"});
+    changed |= choice_combo("show", o.only, pipeline::choice_names<pipeline::OnlyLayer>());
     changed |= ImGui::Checkbox("colour bar", &s.colour_bar);
     return changed ? change_frame : change_none;
 }

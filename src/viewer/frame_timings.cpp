@@ -2,17 +2,9 @@
 
 #include <algorithm>
 
+#include "metrics/median.h"
+
 namespace cutaway::viewer {
-namespace {
-
-double median_of(std::vector<double> values) {
-    if (values.empty()) return 0;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-}  // namespace
 
 FrameTimings::FrameTimings(std::size_t window) : window_(window), loop_rendering_(window), loop_idle_(window) {}
 
@@ -65,12 +57,12 @@ nlohmann::json FrameTimings::to_json() const {
         for (const auto& [name, ms] : r.stage_ms) stage_runs[name].push_back(ms);
     }
     nlohmann::json stage_medians = nlohmann::json::object();
-    for (const auto& [name, runs] : stage_runs) stage_medians[name] = median_of(runs);
+    for (const auto& [name, runs] : stage_runs) stage_medians[name] = metrics::median(runs);
     return {{"frames", frames},
             {"rendered_frames", loops_rendering.size()},
             {"idle_frames", loops_idle.size()},
-            {"median_loop_ms_rendering", median_of(loops_rendering)},
-            {"median_loop_ms_idle", median_of(loops_idle)},
+            {"median_loop_ms_rendering", metrics::median(loops_rendering)},
+            {"median_loop_ms_idle", metrics::median(loops_idle)},
             {"median_stages_ms", stage_medians}};
 }
 

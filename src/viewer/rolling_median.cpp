@@ -1,9 +1,10 @@
 #include "viewer/rolling_median.h"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
+
+#include "metrics/median.h"
 
 namespace cutaway::viewer {
 
@@ -17,17 +18,7 @@ void RollingMedian::add(double value) {
     values_.push_back(value);
 }
 
-double RollingMedian::median() const {
-    if (values_.empty()) return 0;
-    std::vector<double> sorted(values_.begin(), values_.end());
-    const std::size_t middle = sorted.size() / 2;
-    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(middle), sorted.end());
-    const double upper = sorted[middle];
-    if (sorted.size() % 2 == 1) return upper;
-    // After nth_element everything before `middle` is <= upper; the largest of them is the lower middle.
-    const double lower = *std::max_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(middle));
-    return 0.5 * (lower + upper);
-}
+double RollingMedian::median() const { return metrics::median({values_.begin(), values_.end()}); }
 
 std::size_t RollingMedian::size() const { return values_.size(); }
 

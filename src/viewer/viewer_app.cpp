@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "app/run_context.h"
+#include "app/run_context_json.h"
 #include "gl/gl_error.h"
 #include "gl/image.h"
 #include "io/staged_file.h"
@@ -336,11 +337,7 @@ void ViewerApp::write_stats() const {
     stats["model"] = scene_->description();
     stats["primary_cells"] = scene_->primary_count();
     stats["script"] = options_.script;
-    stats["gl_renderer"] = gl::gl_renderer();
-    stats["gl_version"] = gl::gl_version();
-    stats["gl_platform"] = window_.platform();
-    stats["lp_num_threads"] = run_context::lp_num_threads();
-    stats["git_revision"] = run_context::git_revision();
+    stats.update(app::run_context_json(app::current_gl_device(window_.platform())));
     stats["timing"] = "loop_ms: wall clock of one viewer loop pass (events, script, panel, render when something "
                       "changed, blit, swap); stages_ms: fenced wall-clock stage times of the cutaway frame";
     io::write_file(options_.stats, stats.dump(2) + '\n');

@@ -21,10 +21,10 @@ struct Frame {
 
 TEST(ImageMetrics, ExposureCountsPrimaryPixelsShowingTheSameCell) {
     Frame primaries(4, 1), cutaway(4, 1);
-    for (int x = 0; x < 4; ++x) primaries.set(x, 0, 10, pixel_primary);
-    cutaway.set(0, 0, 10, pixel_primary);   // visible
-    cutaway.set(1, 0, 10, pixel_primary);   // visible
-    cutaway.set(2, 0, 11, pixel_primary);   // another primary in front: not the same cell
+    for (int x = 0; x < 4; ++x) primaries.set(x, 0, 10, flag_primary);
+    cutaway.set(0, 0, 10, flag_primary);   // visible
+    cutaway.set(1, 0, 10, flag_primary);   // visible
+    cutaway.set(2, 0, 11, flag_primary);   // another primary in front: not the same cell
     cutaway.set(3, 0, 10, 0);               // a secondary with the same id: not a primary pixel
     const Exposure e = primary_exposure(primaries.ids(), cutaway.ids());
     EXPECT_EQ(e.primary_pixels, 4u);
@@ -42,9 +42,9 @@ TEST(ImageMetrics, ContextKeptIsZeroAtTheWidestCutAndOneUncut) {
 TEST(ImageMetrics, ContextPixelsLeaveOutPrimariesFillAndBorders) {
     Frame f(4, 1);
     f.set(0, 0, 1, 0);
-    f.set(1, 0, 2, pixel_primary);
-    f.set(2, 0, 3, pixel_cut_fill);
-    f.set(3, 0, 4, pixel_border);
+    f.set(1, 0, 2, flag_primary);
+    f.set(2, 0, 3, flag_cut_fill);
+    f.set(3, 0, 4, flag_border);
     EXPECT_EQ(context_pixels(f.ids()), 1u);
 }
 
@@ -54,7 +54,7 @@ Frame band(double w, double angle) {
     const double nx = -std::sin(angle), ny = std::cos(angle);
     for (int y = 0; y < 200; ++y)
         for (int x = 0; x < 200; ++x)
-            if (std::abs((x + 0.5 - 100) * nx + (y + 0.5 - 100) * ny) < 0.5 * w) f.set(x, y, 1, pixel_border);
+            if (std::abs((x + 0.5 - 100) * nx + (y + 0.5 - 100) * ny) < 0.5 * w) f.set(x, y, 1, flag_border);
     return f;
 }
 
@@ -64,7 +64,7 @@ TEST(ImageMetrics, LineWidthOfAStraightBandIsItsWidthAtAnyAngle) {
     // [w - 1, 1.082 w + 1].
     for (double w : {2.0, 4.0, 6.0})
         for (double degrees : {0.0, 10.0, 30.0, 45.0, 70.0, 90.0}) {
-            const LineWidth width = line_width(band(w, degrees * M_PI / 180).ids(), pixel_border);
+            const LineWidth width = line_width(band(w, degrees * M_PI / 180).ids(), flag_border);
             EXPECT_GE(width.mean, w - 1) << w << " at " << degrees;
             EXPECT_LE(width.mean, 1.082 * w + 1) << w << " at " << degrees;
         }
@@ -75,9 +75,9 @@ TEST(ImageMetrics, ErraticBandsHaveALargerSpread) {
     Frame erratic(200, 200);
     for (int x = 0; x < 200; ++x) {
         const int w = 1 + (x * 7919) % 9;  // thickness jumping between 1 and 9 pixels
-        for (int y = 100; y < 100 + w; ++y) erratic.set(x, y, 1, pixel_border);
+        for (int y = 100; y < 100 + w; ++y) erratic.set(x, y, 1, flag_border);
     }
-    EXPECT_LT(line_width(steady.ids(), pixel_border).stddev, line_width(erratic.ids(), pixel_border).stddev);
+    EXPECT_LT(line_width(steady.ids(), flag_border).stddev, line_width(erratic.ids(), flag_border).stddev);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "annotation/colour_bar_layout.h"
 #include "gl_test_support.h"
+#include "metrics/median.h"
 
 namespace cutaway::test {
 namespace {
@@ -182,11 +183,7 @@ TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
         brightness.push_back(k);
     }
     ASSERT_GT(distances.size(), 2000u);  // petra's 1% primaries cover thousands of pixels here
-    const auto median = [](std::vector<double> v) {
-        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
-        return v[v.size() / 2];
-    };
-    const double median_distance = median(distances), median_brightness = median(brightness);
+    const double median_distance = metrics::median(distances), median_brightness = metrics::median(brightness);
     std::cout << "  primary pixels: median RGB distance " << median_distance << " to the colour map at their value, "
               << "brightness " << median_brightness << " of it (" << distances.size() << " px)\n";
     // 20 of 441 (the RGB cube's diagonal): the colour bar's entry at a glance; 8-bit rounding and

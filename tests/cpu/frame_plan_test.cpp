@@ -1,0 +1,131 @@
+// The frame plan (src/cutaway/frame_plan.h): which passes run for which settings and renderer
+// state, and that every plan reads only what an earlier pass (or a kept frozen cut) wrote.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "cutaway/frame_plan.h"
+
+namespace cutaway::pipeline {
+namespace {
+
+std::vector<FramePass> passes_of(const FramePlan& plan, const std::string& stage) {
+    for (const PlannedStage& planned : plan.stages)
+        if (planned.stage == stage) return planned.passes;
+    return {};
+}
+
+std::vector<std::string> stage_names(const FramePlan& plan) {
+    std::vector<std::string> names;
+    for (const PlannedStage& stage : plan.stages) names.push_back(stage.stage);
+    return names;
+}
+
+TEST(FramePlan, PaperDefaultsRunEveryStageOnce) {
+    const FramePlan plan = plan_frame(FrameSettings{}, RendererState{});
+    EXPECT_EQ(stage_names(plan),
+              (std::vector<std::string>{"cut_surface", "mean_filter", "culling", "secondary", "primary", "ssao", "post"}));
+    // The 9x9 mean filter resolves the cut: stage 1 leaves it unresolved.
+    EXPECT_EQ(passes_of(plan, "cut_surface"),
+              (std::vector<FramePass>{FramePass::clear_cut, FramePass::strategy_cut, FramePass::rear_shell}));
+    EXPECT_EQ(passes_of(plan, "mean_filter"), std::vector<FramePass>{FramePass::filter_resolve_cut});
+    EXPECT_EQ(first_unwritten_read(plan), "");
+}
+
+TEST(FramePlan, UnfilteredCutIsResolvedInStageOne) {
+    FrameSettings s;
+    s.mean_filter = 0;
+    const FramePlan plan = plan_frame(s, RendererState{});
+    EXPECT_FALSE(plan.runs(FramePass::filter_resolve_cut));
+    EXPECT_EQ(passes_of(plan, "cut_surface").back(), FramePass::resolve_cut);
+}
+
+TEST(FramePlan, SeeThroughDrawsNoRearShell) {
+    FrameSettings s;
+    s.see_through = true;
+    const FramePlan plan = plan_frame(s, RendererState{});
+    EXPECT_FALSE(plan.runs(FramePass::rear_shell));
+    EXPECT_EQ(first_unwritten_read(plan), "");
+}
+
+TEST(FramePlan, FrozenViewKeepsItsCutAndClipsAgainstTheViewsRearShell) {
+    RendererState frozen;
+    frozen.frozen = true;
+    const FramePlan first = plan_frame(FrameSettings{}, frozen);  // the frozen camera's cut is made once
+    EXPECT_TRUE(first.makes_cut);
+    frozen.frozen_cut_valid = true;
+    const FramePlan later = plan_frame(FrameSettings{}, frozen);
+    EXPECT_FALSE(later.makes_cut);
+    EXPECT_FALSE(later.runs(FramePass::strategy_cut));
+    EXPECT_EQ(passes_of(later, "secondary").front(), FramePass::view_rear_shell);
+    EXPECT_EQ(first_unwritten_read(later), "");  // the kept cut counts as written
+}
+
+TEST(FramePlan, DistributedFramesCombineCutOrSeedsAndRunScreenPassesOnce) {
+    RendererState rank;
+    rank.distributed = true;
+    rank.screen_passes = false;
+    const FramePlan frustum = plan_frame(FrameSettings{}, rank);
+    EXPECT_TRUE(frustum.combine_cut_depth);
+    EXPECT_EQ(passes_of(frustum, "cut_combine"), std::vector<FramePass>{FramePass::combine_cut});
+    EXPECT_TRUE(frustum.runs(FramePass::combine_scene));
+    EXPECT_FALSE(frustum.runs(FramePass::ssao));
+    EXPECT_FALSE(frustum.runs(FramePass::composite));
+    rank.cone_field_strategy = true;
+    FrameSettings see_through;
+    see_through.see_through = true;
+    see_through.mean_filter = 0;
+    const FramePlan seeds = plan_frame(see_through, rank);
+    EXPECT_TRUE(seeds.combine_seeds);
+    // Seeds combined inside stage 1 and no rear shell: nothing left to combine but the resolve.
+    EXPECT_EQ(passes_of(seeds, "cut_combine"), std::vector<FramePass>{FramePass::resolve_cut});
+    EXPECT_EQ(first_unwritten_read(seeds), "");
+}
+
+TEST(FramePlan, OnlyPrimariesDrawsNoCutAndNoSecondaries) {
+    FrameSettings s;
+    s.only = OnlyLayer::primaries;
+    const FramePlan plan = plan_frame(s, RendererState{});
+    EXPECT_FALSE(plan.runs(FramePass::strategy_cut));
+    EXPECT_FALSE(plan.runs(FramePass::secondaries));
+    EXPECT_FALSE(plan.runs(FramePass::culling));
+    EXPECT_TRUE(plan.runs(FramePass::primaries));
+}
+
+TEST(FramePlan, ThePapersPathListsSecondaryFacesUntimed) {
+    FrameSettings s;
+    s.draw = DrawMode::all_faces;
+    const FramePlan plan = plan_frame(s, RendererState{});
+    EXPECT_FALSE(plan.runs(FramePass::culling));
+    EXPECT_EQ(passes_of(plan, ""), std::vector<FramePass>{FramePass::secondary_list});
+}
+
+TEST(FramePlan, EverySettingCombinationIsConsistent) {
+    // Every combination of the switches that change the plan: no pass reads an unwritten target.
+    for (int bits = 0; bits < 1 << 10; ++bits) {
+        FrameSettings s;
+        s.see_through = bits & 1;
+        s.mean_filter = (bits & 2) ? 9 : 0;
+        s.only = (bits & 4) ? OnlyLayer::secondaries : ((bits & 8) ? OnlyLayer::primaries : OnlyLayer::both);
+        s.draw = (bits & 16) ? DrawMode::all_faces : DrawMode::visible;
+        s.cut_enabled = !(bits & 32);
+        RendererState state;
+        state.frozen = bits & 64;
+        state.frozen_cut_valid = (bits & 64) && (bits & 128);
+        state.distributed = bits & 256;
+        state.cone_field_strategy = bits & 512;
+        const FramePlan plan = plan_frame(s, state);
+        EXPECT_EQ(first_unwritten_read(plan), "") << "combination " << bits;
+    }
+}
+
+TEST(FramePlan, AnUnwrittenReadIsFound) {
+    // The check itself can fail: a plan whose stage 2 reads a cut no pass made.
+    FramePlan broken = plan_frame(FrameSettings{}, RendererState{});
+    broken.stages.erase(broken.stages.begin(), broken.stages.begin() + 2);
+    EXPECT_NE(first_unwritten_read(broken), "");
+}
+
+}  // namespace
+}  // namespace cutaway::pipeline
