@@ -18,7 +18,6 @@
 #include <utility>
 #include <vector>
 
-#include "app/heap_policy.h"
 #include "app/model_source.h"
 #include "app/render_report.h"
 #include "app/run_context.h"
@@ -362,12 +361,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
                 "single-process run instead)";
         }
     stats["strategy"] = strategy_json(strategy, settings.strategy, rank.renderer().auto_sweep_from());
-    stats["gl_renderer"] = gl::gl_renderer();
-    stats["gl_version"] = gl::gl_version();
-    stats["gl_platform"] = scene.context->platform();
-    stats["lp_num_threads"] = run_context::lp_num_threads();
-    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
-    stats["git_revision"] = run_context::git_revision();
+    put_run_context(stats, scene.context->platform());
     stats["size"] = {options.width, options.height};
     stats["cells"] = scene.whole_dims.cell_count();
     stats["active_cells"] = scene.whole_active;

@@ -11,7 +11,6 @@
 
 #include "app/commands.h"
 #include "app/distributed_render.h"
-#include "app/heap_policy.h"
 #include "app/mpi_launch.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
@@ -146,12 +145,7 @@ int run_render(const RenderOptions& options) {
         stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
     }
     stats["strategy"] = strategy_json(strategy, settings.strategy, renderer.auto_sweep_from());
-    stats["gl_renderer"] = gl::gl_renderer();
-    stats["gl_version"] = gl::gl_version();
-    stats["gl_platform"] = context->platform();
-    stats["lp_num_threads"] = run_context::lp_num_threads();
-    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
-    stats["git_revision"] = run_context::git_revision();
+    put_run_context(stats, context->platform());
     stats["size"] = {options.width, options.height};
     stats["cells"] = grid.cell_count();
     stats["active_cells"] = grid.active_count();

@@ -6,8 +6,11 @@
 #include <stdexcept>
 #include <utility>
 
+#include "app/heap_policy.h"
 #include "app/option_checks.h"
+#include "app/run_context.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
+#include "gl/gl_context.h"
 
 namespace cutaway::app {
 
@@ -89,6 +92,15 @@ void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options)
         if (pose && pose->distance > 0 && pose->distance < frame.radius())
             throw std::invalid_argument(std::string(option) + ": expected DIST 0 (frame the model) or at least the model's radius " +
                                         number_text(frame.radius()) + " (outside it), found " + number_text(pose->distance));
+}
+
+void put_run_context(json& stats, const std::string& gl_platform) {
+    stats["gl_renderer"] = gl::gl_renderer();
+    stats["gl_version"] = gl::gl_version();
+    stats["gl_platform"] = gl_platform;
+    stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["heap_trim_threshold_bytes"] = heap_trim_threshold_json();
+    stats["git_revision"] = run_context::git_revision();
 }
 
 }  // namespace cutaway::app

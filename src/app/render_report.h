@@ -27,6 +27,10 @@ nlohmann::json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::
 void put_metric(nlohmann::json& stats, const std::string& key, double fraction, std::size_t denominator,
                 const std::string& why_absent);
 
+/// The machine and build every run's stats.json records: gl_renderer, gl_version, gl_platform
+/// (the context's), lp_num_threads, heap_trim_threshold_bytes, git_revision.
+void put_run_context(nlohmann::json& stats, const std::string& gl_platform);
+
 /// Refuses a camera that would see nothing: a model without extent (all pillars at one x, y, or
 /// coordinates whose extent overflows single precision) or a DIST inside the model.
 void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options);
