@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "app/animate_options.h"
+#include "app/animation_summary.h"
 #include "app/commands.h"
 #include "app/interrupt_guard.h"
 #include "app/model_source.h"
@@ -23,6 +24,7 @@
 #include "app/render_report.h"
 #include "app/run_context.h"
 #include "annotation/property_units.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cutaway_renderer.h"
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
@@ -65,27 +67,33 @@ temporal::AnimationTimeline timeline_of(const AnimateOptions& options, std::size
     return timeline;
 }
 
-/// Min and max over active cells of every animated step: one colour scale for the whole animation.
-grid::PrimaryRange colour_range_over(const grid::CornerPointGrid& grid, const temporal::StepValueSource& source,
-                                     const temporal::AnimationTimeline& timeline) {
-    grid::PrimaryRange range{0, 0};
+/// What the animation's report steps hold, read once before the frames.
+struct StepSurvey {
+    grid::PrimaryRange colour_range;    ///< min and max over active cells of every step: one colour scale
+    std::size_t most_primaries = 0;     ///< the largest primary set of a step (selected anew)
+};
+
+StepSurvey survey_steps(const grid::CornerPointGrid& grid, const temporal::StepValueSource& source,
+                        const temporal::AnimationTimeline& timeline, const grid::PrimaryRange& primary_range,
+                        const std::optional<grid::IjkBox>& box) {
+    StepSurvey survey;
     for (std::size_t step = timeline.first_step; step <= timeline.last_step; ++step) {
-        const grid::PrimaryRange r = grid::active_value_range(grid, source.values(step), source.property());
-        range = step == timeline.first_step ? r : grid::PrimaryRange{std::min(range.min, r.min), std::max(range.max, r.max)};
+        const std::vector<float> values = source.values(step);
+        const grid::PrimaryRange r = grid::active_value_range(grid, values, source.property());
+        survey.colour_range = step == timeline.first_step
+                                  ? r
+                                  : grid::PrimaryRange{std::min(survey.colour_range.min, r.min), std::max(survey.colour_range.max, r.max)};
+        survey.most_primaries = std::max(survey.most_primaries, grid::count_primaries(grid::select_primaries(
+                                                                    grid, values, source.property(), primary_range, box)));
     }
-    return range;
+    return survey;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 metrics::PixelIds view(const pipeline::IdImage& ids) { return {ids.width, ids.height, ids.cell, ids.flags}; }
-
-/// The largest value of `key` over frames 1.. (frame 0 has no previous frame), or null.
-json max_over_frames(const json& frames, const char* key) {
-    json best = nullptr;
-    for (const json& frame : frames)
-        if (frame.contains(key) && frame[key].is_number() && (best.is_null() || frame[key].get<double>() > best.get<double>()))
-            best = frame[key];
-    return best;
-}
 
 int animate(const AnimateOptions& options) {
     // Before any thread starts (OpenMP in the generator, llvmpipe's, the encoder's): see interrupt_guard.h.
@@ -98,8 +106,9 @@ int animate(const AnimateOptions& options) {
     for (const std::string& model : scene.model) files.emplace_back("the model", model);
     files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}});
     refuse_shared_outputs(files);
+    io::require_even_size(scene.width, scene.height);
     const temporal::Coherence coherence = temporal::parse_coherence(options.coherence);
-    const pipeline::FrameSettings settings = scene.frame_settings();
+    pipeline::FrameSettings settings = scene.frame_settings();
 
     LoadedModel model = load_model(scene.model, scene.model_memory_limit_bytes(), scene.property);
     interrupts.check();
@@ -111,13 +120,14 @@ int animate(const AnimateOptions& options) {
     if (needed > scene.model_memory_limit_bytes())
         throw std::invalid_argument("--memory-limit-gb: " + memory_limit_problem(needed, scene.model_memory_limit_bytes(),
                                                                                 "the animation's per-cell and per-pixel arrays"));
-    const grid::PrimaryRange colour_range = colour_range_over(grid, source, timeline);
     PropertyChoice first_step;  // --range, or --primary-fraction of the first animated step's values
     first_step.name = scene.property;
     first_step.owned = source.values(timeline.first_step);
     const std::optional<grid::IjkBox> box = choose_primary_range(grid, first_step, scene);
     const grid::PrimaryRange primary_range = first_step.primary_range;
     first_step.owned = std::vector<float>();
+    const StepSurvey survey = survey_steps(grid, source, timeline, primary_range, box);
+    const grid::PrimaryRange colour_range = survey.colour_range;
     const float band = coherence == temporal::Coherence::smooth ? float(options.hysteresis) * (colour_range.max - colour_range.min) : 0.0f;
 
     std::unique_ptr<gl::GlContext> context = gl::create_context(scene.context_options());
@@ -126,6 +136,10 @@ int animate(const AnimateOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, scene.z_scale, scene.width, scene.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), scene);
+    // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
+    // redraws the whole cut another way at once (on petra it made the first step's largest
+    // flicker). The animation keeps the one auto picks for its largest primary set.
+    settings.strategy = pipeline::resolve_cut_strategy(settings.strategy, survey.most_primaries, renderer.auto_sweep_from());
     const annotation::ColourBarLabel label{scene.property, colour_range.min, colour_range.max,
                                            annotation::property_unit(scene.property)};
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
@@ -150,8 +164,6 @@ int animate(const AnimateOptions& options) {
     json frames = json::array();
     std::vector<std::uint8_t> previous_flags;
     std::vector<metrics::CutState> previous_states;
-    double exposure_min = 1;
-    std::size_t exposure_frames = 0;
     const auto frames_started = std::chrono::steady_clock::now();
     for (std::size_t f = 0; f < frame_count; ++f) {
         interrupts.check();
@@ -167,18 +179,26 @@ int animate(const AnimateOptions& options) {
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer.frame(), pose, scene.width, scene.height, bar_width);
         if (scene.freeze_pose && f == 0)
             renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *scene.freeze_pose, scene.width, scene.height, bar_width));
-        renderer.render(settings, camera);
+        const double upload_ms = milliseconds_since(started);
+        // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
+        const double draw_ms = renderer.render_unfenced_ms(settings, camera);
         gl::RgbaImage image = renderer.read_image();
+        double png_ms = 0;  // an extra output, left out of the frame's time
         if (!options.frames_dir.empty()) {
+            const auto png_started = std::chrono::steady_clock::now();
             char name[32];
             std::snprintf(name, sizeof name, "frame_%05zu.png", f);
             gl::write_png(image, std::filesystem::path(options.frames_dir) / name);
+            png_ms = milliseconds_since(png_started);
         }
+        // Waits only while ffmpeg still takes the frame before: encoding overlaps the next frame.
         encoder.write_frame(std::move(image.pixels));
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+        const double ms = milliseconds_since(started) - png_ms;
 
         json entry{{"frame", f}, {"time_step", frame.time_step}, {"ms", ms},
+                   {"ms_by_part", {{"upload", upload_ms}, {"draw", draw_ms}, {"readback_and_encoder", ms - upload_ms - draw_ms}}},
                    {"primary_cells", grid::count_primaries(flags)}};
+        if (options.time_against_render) entry["render_ms"] = renderer.render_unfenced_ms(settings, camera);
         if (f > 0) {
             const metrics::PopCounts pops = metrics::count_pops(previous_flags, flags);
             entry["pop_in"] = pops.in;
@@ -193,16 +213,14 @@ int animate(const AnimateOptions& options) {
             const metrics::Exposure exposure = metrics::primary_exposure(view(renderer.read_ids()), view(ids));
             put_metric(entry, "primary_exposure", exposure.fraction, exposure.primary_pixels,
                        "no primary pixel in the primaries-only frame");
-            if (exposure.primary_pixels > 0) {
-                exposure_min = std::min(exposure_min, exposure.fraction);
-                ++exposure_frames;
-            }
         }
         previous_flags = flags;
         frames.push_back(std::move(entry));
         progress.show(f + 1);
     }
-    encoder.finish();
+    const auto finish_started = std::chrono::steady_clock::now();
+    encoder.finish();  // ffmpeg encodes the frames still queued and writes the index
+    const double finish_ms = milliseconds_since(finish_started);
     interrupts.check();
     staged.commit();
     const double frames_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
@@ -210,19 +228,9 @@ int animate(const AnimateOptions& options) {
     if (!options.stats.empty()) {
         json stats;
         stats["frames"] = frames;
-        json pop_max = nullptr;
-        for (const json& frame : frames)
-            if (frame.contains("pop_in"))
-                pop_max = std::max(pop_max.is_null() ? 0 : pop_max.get<std::size_t>(),
-                                   frame["pop_in"].get<std::size_t>() + frame["pop_out"].get<std::size_t>());
-        stats["pop_max"] = pop_max;
-        stats["cut_flicker_max"] = max_over_frames(frames, "cut_flicker");
-        put_metric(stats, "primary_exposure_min", exposure_min, options.metrics ? exposure_frames : 0,
-                   options.metrics ? "no frame has a primary pixel" : "--no-metrics");
-        std::vector<double> frame_ms;
-        for (const json& frame : frames) frame_ms.push_back(frame["ms"].get<double>());
-        stats["frame_ms_median"] = median(frame_ms);
+        put_frame_summaries(stats, frames, finish_ms);
         stats["frames_wall_s"] = frames_seconds;  // every frame, its metrics and the encoding to the end
+        stats["encoder_finish_ms"] = finish_ms;   // after the last frame: ffmpeg's queue and index
         stats["frame_count"] = frame_count;
         stats["report_steps_read"] = sequence.steps_read();
         put_run_context(stats, context->platform());
@@ -232,6 +240,8 @@ int animate(const AnimateOptions& options) {
         stats["model"] = model.description;
         stats["model_load_s"] = model.load_seconds;
         stats["renderer_setup_s"] = setup_seconds;
+        stats["strategy"] = {{"requested", scene.settings.strategy}, {"drawn", settings.strategy},
+                             {"largest_step_primaries", survey.most_primaries}};
         stats["property"] = {{"name", scene.property}, {"colour_range", {colour_range.min, colour_range.max}},
                              {"primary_range", {primary_range.min, primary_range.max}}, {"hysteresis_band", band},
                              {"report_steps", source.step_count()}};

@@ -56,6 +56,9 @@ void add_animate_options(CLI::App& c, AnimateOptions& o) {
         ->check(finite_in(-3600, 3600, "degrees"));
     c.add_option("--frames", o.frames_dir, "also write each frame as DIR/frame_NNNNN.png")->check(frames_directory());
     c.add_flag("!--no-metrics", o.metrics, "skip primary_exposure (one extra untimed frame each) and cut_flicker");
+    c.add_flag("--time-against-render", o.time_against_render,
+               "draw every frame a second time as render does (no upload, read-back or encoding), timed: "
+               "render_ms per frame and frame_over_render");
     c.add_option("--crf", o.crf, "x264 constant rate factor (lower: larger, sharper)")->check(finite_in(0, 51));
 }
 
@@ -70,6 +73,7 @@ nlohmann::json describe(const AnimateOptions& o) {
     configuration["frames_dir"] = o.frames_dir;
     configuration["metrics"] = o.metrics;
     configuration["crf"] = o.crf;
+    configuration["time_against_render"] = o.time_against_render;
     return configuration;
 }
 

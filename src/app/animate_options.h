@@ -27,6 +27,7 @@ struct AnimateOptions {
     std::string frames_dir;          ///< PNG frames (empty: none)
     bool metrics = true;             ///< primary_exposure and cut_flicker per frame
     int crf = 20;                    ///< x264 constant rate factor
+    bool time_against_render = false;  ///< draw each frame again as `render` does, timed (render_ms)
 };
 
 /// Registers every option of `cutaway animate` on `command`.

@@ -56,11 +56,15 @@ struct SpawnSetup {
 
 }  // namespace
 
+void require_even_size(int width, int height) {
+    if (width <= 0 || height <= 0 || width % 2 || height % 2)
+        throw std::invalid_argument("--size: expected an even width and height for H.264 (yuv420p), found " +
+                                    std::to_string(width) + " x " + std::to_string(height));
+}
+
 Mp4Encoder::Mp4Encoder(std::filesystem::path path, const Mp4Settings& settings)
     : path_(std::move(path)), frame_bytes_(std::size_t(std::max(settings.width, 0)) * std::size_t(std::max(settings.height, 0)) * 4) {
-    if (settings.width <= 0 || settings.height <= 0 || settings.width % 2 || settings.height % 2)
-        throw std::invalid_argument("--size: expected an even width and height for H.264 (yuv420p), found " +
-                                    std::to_string(settings.width) + " x " + std::to_string(settings.height));
+    require_even_size(settings.width, settings.height);
     const std::string size = std::to_string(settings.width) + "x" + std::to_string(settings.height);
     const std::vector<std::string> arguments{
         settings.program, "-hide_banner", "-nostdin", "-loglevel", "error", "-y",

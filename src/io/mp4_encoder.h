@@ -29,6 +29,10 @@ struct Mp4Settings {
     std::string program = "ffmpeg";  ///< looked up on PATH
 };
 
+/// Throws std::invalid_argument naming --size unless both sides are positive and even (H.264 in
+/// yuv420p keeps one colour sample per 2 x 2 pixels).
+void require_even_size(int width, int height);
+
 class Mp4Encoder {
 public:
     /// Starts ffmpeg writing `path` (created or replaced; the caller stages it, io::StagedFile).

@@ -57,10 +57,10 @@ endforeach()
 
 # none against smooth at the same frames (steps 0..3, 8 frames per step), mean filter off so that
 # primary exposure is exactly 1 (README: the frustum's back face covers every primary pixel; the
-# mean filter may move the cut over a border pixel). At 8 frames per step the paced changes
-# spread each step's pops over 8 frames (about 8x fewer per frame) and cut flicker drops 3.6x on
-# this run; at 4 frames per step flicker drops only about 2.3x (the first changes of a step
-# carve the most new cut), so the 3x target is checked at 8.
+# mean filter may move the cut over a border pixel). At 8 frames per step the paced changes spread
+# each step's pops over 8 frames (8.0x fewer per frame than none here) and cut flicker drops 4.6x;
+# at 4 frames per step flicker drops about 2.8x (a step's first changes carve the most new cut),
+# so the 3x target is checked at 8.
 foreach(mode none smooth)
   execute_process(COMMAND ${CUTAWAY} animate ${PETRA} --steps 0 3 --frames-per-step 8 --mean-filter 0
                           --coherence ${mode} --out ${OUT}/${mode}.mp4 --stats ${OUT}/${mode}.json
