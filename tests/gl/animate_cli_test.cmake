@@ -15,8 +15,9 @@ function(ffprobe_field file field result)
   set(${result} "${value}" PARENT_SCOPE)
 endfunction()
 
-# Steps 1..3 at 3 frames per step: (3 - 1) x 3 + 1 = 7 frames, also written as PNG.
-execute_process(COMMAND ${CUTAWAY} animate ${PETRA} --steps 1 3 --frames-per-step 3 --out ${OUT}/short.mp4
+# Steps 1..3 at 3 frames per step: (3 - 1) x 3 + 1 = 7 frames, also written as PNG, the camera
+# turning 30 degrees over them.
+execute_process(COMMAND ${CUTAWAY} animate ${PETRA} --steps 1 3 --frames-per-step 3 --orbit 30 --out ${OUT}/short.mp4
                         --stats ${OUT}/short.json --frames ${OUT}/frames
                 RESULT_VARIABLE rc ERROR_VARIABLE err)
 if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/short.mp4)
