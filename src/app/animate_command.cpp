@@ -218,6 +218,7 @@ int animate(const AnimateOptions& options) {
         frames.push_back(std::move(entry));
         progress.show(f + 1);
     }
+    progress.end();
     const auto finish_started = std::chrono::steady_clock::now();
     encoder.finish();  // ffmpeg encodes the frames still queued and writes the index
     const double finish_ms = milliseconds_since(finish_started);

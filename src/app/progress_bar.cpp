@@ -15,8 +15,9 @@ ProgressBar::ProgressBar(std::string label, std::size_t total, std::string unit)
     : label_(std::move(label)), total_(std::max<std::size_t>(total, 1)), unit_(std::move(unit)),
       on_terminal_(::isatty(STDERR_FILENO) == 1) {}
 
-ProgressBar::~ProgressBar() {
+void ProgressBar::end() {
     if (drawn_) std::cerr << '\n' << std::flush;
+    drawn_ = false;
 }
 
 void ProgressBar::show(std::size_t done) {

@@ -10,13 +10,15 @@ class ProgressBar {
 public:
     /// `label`: what runs (e.g. "cutaway animate"); `total`: steps to the end; `unit`: what a step is.
     ProgressBar(std::string label, std::size_t total, std::string unit);
-    /// Ends the line if anything was drawn.
-    ~ProgressBar();
+    /// end().
+    ~ProgressBar() { end(); }
     ProgressBar(const ProgressBar&) = delete;
     ProgressBar& operator=(const ProgressBar&) = delete;
 
     /// Redraws the bar with `done` of the total finished.
     void show(std::size_t done);
+    /// Ends the bar's line if anything was drawn (before other output); show() starts a new one.
+    void end();
     bool visible() const { return on_terminal_; }
 
 private:

@@ -70,7 +70,9 @@ Mp4Encoder::Mp4Encoder(std::filesystem::path path, const Mp4Settings& settings)
         settings.program, "-hide_banner", "-nostdin", "-loglevel", "error", "-y",
         "-f", "rawvideo", "-pix_fmt", "rgba", "-s", size, "-framerate", number(settings.fps), "-i", "pipe:0",
         "-an", "-c:v", "libx264", "-preset", settings.preset, "-crf", std::to_string(settings.crf),
-        "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4", path_.string()};
+        "-pix_fmt", "yuv420p", "-movflags", "+faststart", "-f", "mp4",
+        // "file:": a path with a colon ("a:b/x.mp4") is still a file, not one of ffmpeg's protocols.
+        "file:" + path_.string()};
     std::vector<char*> argv;
     for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
     argv.push_back(nullptr);
