@@ -12,6 +12,8 @@ packages=(
   libegl-dev libgl1-mesa-dri libegl-mesa0 libepoxy-dev libglfw3-dev libglm-dev libimgui-dev xvfb xauth
   # images, seismic, formats, command line
   libpng-dev libstb-dev libsegyio-dev nlohmann-json3-dev libcli11-dev
+  # animations: the ffmpeg program encodes H.264 MP4 (cutaway animate), ffprobe checks it in tests
+  ffmpeg
   # tests, benchmarks, reference checks, fuzzing
   libgtest-dev libgmock-dev libbenchmark-dev libopm-common-dev libboost-test-dev clang libclang-rt-14-dev libomp-dev
   # plots

@@ -12,6 +12,7 @@ using CommandAction = std::function<int()>;
 CommandAction add_inspect_command(CLI::App& app);
 CommandAction add_generate_command(CLI::App& app);
 CommandAction add_render_command(CLI::App& app);
+CommandAction add_animate_command(CLI::App& app);
 CommandAction add_volume_command(CLI::App& app);
 CommandAction add_generate_seismic_command(CLI::App& app);
 CommandAction add_view_command(CLI::App& app);

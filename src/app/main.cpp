@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
     const cutaway::app::CommandAction generate = cutaway::app::add_generate_command(app);
     const cutaway::app::CommandAction render = cutaway::app::add_render_command(app);
+    const cutaway::app::CommandAction animate = cutaway::app::add_animate_command(app);
     const cutaway::app::CommandAction volume = cutaway::app::add_volume_command(app);
     const cutaway::app::CommandAction generate_seismic = cutaway::app::add_generate_seismic_command(app);
     const cutaway::app::CommandAction view = cutaway::app::add_view_command(app);
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("inspect")) return inspect();
         if (app.got_subcommand("generate")) return generate();
         if (app.got_subcommand("render")) return render();
+        if (app.got_subcommand("animate")) return animate();
         if (app.got_subcommand("volume")) return volume();
         if (app.got_subcommand("generate-seismic")) return generate_seismic();
         if (app.got_subcommand("view")) return view();

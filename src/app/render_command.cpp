@@ -11,7 +11,6 @@
 
 #include "app/commands.h"
 #include "app/distributed_render.h"
-#include "app/heap_policy.h"
 #include "app/mpi_launch.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"

@@ -1,0 +1,278 @@
+// `cutaway animate MODEL --property P --range LO HI --out FILE.mp4 [--stats FILE.json] ...`: a
+// cutaway animation over report steps, encoded as H.264 MP4, with per-frame temporal metrics
+// (issue 44). The MP4 is written under a temporary name and renamed at the end: an interrupted
+// or failed run leaves none.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "app/animate_options.h"
+#include "app/animation_summary.h"
+#include "app/commands.h"
+#include "app/interrupt_guard.h"
+#include "app/model_source.h"
+#include "app/option_checks.h"
+#include "app/progress_bar.h"
+#include "app/render_report.h"
+#include "app/run_context.h"
+#include "app/run_context_json.h"
+#include "annotation/property_units.h"
+#include "cutaway/cut_surface/cut_strategy_choice.h"
+#include "cutaway/cutaway_renderer.h"
+#include "cutaway/temporal/coherence.h"
+#include "cutaway/temporal/coherent_sequence.h"
+#include "cutaway/temporal/step_values.h"
+#include "gl/gl_context.h"
+#include "gl/image.h"
+#include "grid/primary_selection.h"
+#include "io/mp4_encoder.h"
+#include "io/staged_file.h"
+#include "metrics/image_metrics.h"
+#include "metrics/temporal_metrics.h"
+
+namespace cutaway::app {
+namespace {
+
+using nlohmann::json;
+
+/// Per-cell arrays the animation holds besides the model: two report steps, their blend, the
+/// paced transition's two times and the renderer's compact copy of the colouring (4 bytes each),
+/// flags at the two steps, between them and of the frame before (1 each).
+constexpr std::size_t animation_bytes_per_cell = 6 * 4 + 4;
+/// Per-pixel arrays besides the render targets: the frame handed to ffmpeg and the one being
+/// read (4 bytes each), two frames' cut states (1 each).
+constexpr std::size_t animation_bytes_per_pixel = 4 * 2 + 2;
+
+/// The report steps to animate: --steps, or all of them. Throws std::invalid_argument naming
+/// --steps and the property's steps when out of range.
+temporal::AnimationTimeline timeline_of(const AnimateOptions& options, std::size_t step_count, const std::string& property) {
+    temporal::AnimationTimeline timeline;
+    timeline.frames_per_step = std::size_t(options.frames_per_step);
+    timeline.last_step = step_count - 1;
+    if (options.steps.size() == 2) {
+        if (options.steps[0] > options.steps[1] || std::size_t(options.steps[1]) >= step_count)
+            throw std::invalid_argument("--steps " + std::to_string(options.steps[0]) + " " + std::to_string(options.steps[1]) +
+                                        ": expected 0 <= FIRST <= LAST < " + std::to_string(step_count) + " (" + property +
+                                        "'s report steps, 0-based)");
+        timeline.first_step = std::size_t(options.steps[0]);
+        timeline.last_step = std::size_t(options.steps[1]);
+    }
+    return timeline;
+}
+
+/// What the animation's report steps hold, read once before the frames.
+struct StepSurvey {
+    grid::PrimaryRange colour_range;    ///< min and max over active cells of every step: one colour scale
+    std::size_t most_primaries = 0;     ///< the largest primary set of a step (selected anew)
+};
+
+StepSurvey survey_steps(const grid::CornerPointGrid& grid, const temporal::StepValueSource& source,
+                        const temporal::AnimationTimeline& timeline, const grid::PrimaryRange& primary_range,
+                        const std::optional<grid::IjkBox>& box) {
+    StepSurvey survey;
+    for (std::size_t step = timeline.first_step; step <= timeline.last_step; ++step) {
+        const std::vector<float> values = source.values(step);
+        const grid::PrimaryRange r = grid::active_value_range(grid, values, source.property());
+        survey.colour_range = step == timeline.first_step
+                                  ? r
+                                  : grid::PrimaryRange{std::min(survey.colour_range.min, r.min), std::max(survey.colour_range.max, r.max)};
+        survey.most_primaries = std::max(survey.most_primaries, grid::count_primaries(grid::select_primaries(
+                                                                    grid, values, source.property(), primary_range, box)));
+    }
+    return survey;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+metrics::PixelIds view(const pipeline::IdImage& ids) { return {ids.width, ids.height, ids.cell, ids.flags}; }
+
+int animate(const AnimateOptions& options) {
+    // Before any thread starts (OpenMP in the generator, llvmpipe's, the encoder's): see interrupt_guard.h.
+    const InterruptGuard interrupts;
+    const RenderOptions& scene = options.scene;
+    if (scene.property.empty()) throw std::invalid_argument("--property: expected the dynamic property to animate (e.g. SWAT)");
+    if (scene.step >= 0) throw std::invalid_argument("--step: animate shows report steps --steps FIRST LAST instead");
+    if (!scene.select_by.empty()) throw std::invalid_argument("--select-by: not available in animate");
+    std::vector<std::pair<std::string, std::string>> files;
+    for (const std::string& model : scene.model) files.emplace_back("the model", model);
+    files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}});
+    refuse_shared_outputs(files);
+    io::require_even_size(scene.width, scene.height);
+    const temporal::Coherence coherence = temporal::parse_coherence(options.coherence);
+    pipeline::FrameSettings settings = scene.frame_settings();
+
+    LoadedModel model = load_model(scene.model, scene.model_memory_limit_bytes(), scene.property);
+    interrupts.check();
+    const grid::CornerPointGrid& grid = model.grid;
+    const temporal::GridStepValues source(grid, scene.property);
+    const temporal::AnimationTimeline timeline = timeline_of(options, source.step_count(), scene.property);
+    const std::size_t needed = grid.cell_count() * animation_bytes_per_cell +
+                               std::size_t(scene.width) * std::size_t(scene.height) * animation_bytes_per_pixel;
+    if (needed > scene.model_memory_limit_bytes())
+        throw std::invalid_argument("--memory-limit-gb: " + memory_limit_problem(needed, scene.model_memory_limit_bytes(),
+                                                                                "the animation's per-cell and per-pixel arrays"));
+    PropertyChoice first_step;  // --range, or --primary-fraction of the first animated step's values
+    first_step.name = scene.property;
+    first_step.owned = source.values(timeline.first_step);
+    const std::optional<grid::IjkBox> box = choose_primary_range(grid, first_step, scene);
+    const grid::PrimaryRange primary_range = first_step.primary_range;
+    first_step.owned = std::vector<float>();
+    const StepSurvey survey = survey_steps(grid, source, timeline, primary_range, box);
+    const grid::PrimaryRange colour_range = survey.colour_range;
+    const float band = coherence == temporal::Coherence::smooth ? float(options.hysteresis) * (colour_range.max - colour_range.min) : 0.0f;
+
+    std::unique_ptr<gl::GlContext> context = gl::create_context(scene.context_options());
+    const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
+    const auto setup_started = std::chrono::steady_clock::now();
+    pipeline::CutawayRenderer renderer(shaders, grid, scene.z_scale, scene.width, scene.height,
+                                       [&model] { model.grid.release_corner_depths(); });
+    check_view(renderer.frame(), scene);
+    // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
+    // redraws the whole cut another way at once (on petra it made the first step's largest
+    // flicker). The animation keeps the one auto picks for its largest primary set.
+    settings.strategy = pipeline::resolve_cut_strategy(settings.strategy, survey.most_primaries, renderer.auto_sweep_from());
+    const annotation::ColourBarLabel label{scene.property, colour_range.min, colour_range.max,
+                                           annotation::property_unit(scene.property)};
+    const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
+
+    temporal::CoherentSequence sequence(grid, source, timeline, coherence, primary_range, band, box);
+    pipeline::FrameSettings primaries_only = settings;
+    primaries_only.ssao = false;
+    primaries_only.colour_bar = false;
+    primaries_only.only = pipeline::OnlyLayer::primaries;
+
+    io::StagedFile staged(options.out);
+    io::Mp4Settings video;
+    video.width = scene.width;
+    video.height = scene.height;
+    video.fps = options.fps;
+    video.crf = options.crf;
+    io::Mp4Encoder encoder(staged.write_path(), video);
+    if (!options.frames_dir.empty()) std::filesystem::create_directories(options.frames_dir);
+
+    const std::size_t frame_count = timeline.frame_count();
+    ProgressBar progress("cutaway animate", frame_count, "frames");
+    json frames = json::array();
+    std::vector<std::uint8_t> previous_flags;
+    std::vector<metrics::CutState> previous_states;
+    const auto frames_started = std::chrono::steady_clock::now();
+    for (std::size_t f = 0; f < frame_count; ++f) {
+        interrupts.check();
+        const auto started = std::chrono::steady_clock::now();
+        const temporal::CoherentSequence::Frame frame = sequence.next();
+        const std::vector<std::uint8_t>& flags = *frame.flags;
+        // A step held (none, between report steps) uploads nothing: the same values and primaries.
+        if (frame.values_changed) renderer.set_colouring(*frame.values, label);
+        if (f == 0 || flags != previous_flags) renderer.set_primaries(flags);
+        pipeline::OrbitPose pose = scene.camera_pose();
+        if (frame_count > 1) pose.azimuth_deg += float(options.orbit_deg * double(f) / double(frame_count - 1));
+        const float bar_width = renderer.colour_bar_reserved_width(settings);
+        const pipeline::Camera camera = pipeline::make_orbit_camera(renderer.frame(), pose, scene.width, scene.height, bar_width);
+        if (scene.freeze_pose && f == 0)
+            renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *scene.freeze_pose, scene.width, scene.height, bar_width));
+        const double upload_ms = milliseconds_since(started);
+        // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
+        const double draw_ms = renderer.render_unfenced_ms(settings, camera);
+        gl::RgbaImage image = renderer.read_image();
+        double png_ms = 0;  // an extra output, left out of the frame's time
+        if (!options.frames_dir.empty()) {
+            const auto png_started = std::chrono::steady_clock::now();
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%05zu.png", f);
+            gl::write_png(image, std::filesystem::path(options.frames_dir) / name);
+            png_ms = milliseconds_since(png_started);
+        }
+        // Waits only while ffmpeg still takes the frame before: encoding overlaps the next frame.
+        encoder.write_frame(std::move(image.pixels));
+        const double ms = milliseconds_since(started) - png_ms;
+
+        json entry{{"frame", f}, {"time_step", frame.time_step}, {"ms", ms},
+                   {"ms_by_part", {{"upload", upload_ms}, {"draw", draw_ms}, {"readback_and_encoder", ms - upload_ms - draw_ms}}},
+                   {"primary_cells", grid::count_primaries(flags)}};
+        if (options.time_against_render) entry["render_ms"] = renderer.render_unfenced_ms(settings, camera);
+        if (f > 0) {
+            const metrics::PopCounts pops = metrics::count_pops(previous_flags, flags);
+            entry["pop_in"] = pops.in;
+            entry["pop_out"] = pops.out;
+        }
+        if (options.metrics) {
+            const pipeline::IdImage ids = renderer.read_ids();
+            std::vector<metrics::CutState> states = metrics::cut_states(ids.cell, ids.flags);
+            if (f > 0) entry["cut_flicker"] = metrics::cut_flicker(previous_states, states).fraction;
+            previous_states = std::move(states);
+            renderer.render(primaries_only, camera);
+            const metrics::Exposure exposure = metrics::primary_exposure(view(renderer.read_ids()), view(ids));
+            put_metric(entry, "primary_exposure", exposure.fraction, exposure.primary_pixels,
+                       "no primary pixel in the primaries-only frame");
+        }
+        previous_flags = flags;
+        frames.push_back(std::move(entry));
+        progress.show(f + 1);
+    }
+    progress.end();
+    const auto finish_started = std::chrono::steady_clock::now();
+    encoder.finish();  // ffmpeg encodes the frames still queued and writes the index
+    const double finish_ms = milliseconds_since(finish_started);
+    interrupts.check();
+    staged.commit();
+    const double frames_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
+
+    if (!options.stats.empty()) {
+        json stats;
+        stats["frames"] = frames;
+        put_frame_summaries(stats, frames, finish_ms);
+        stats["frames_wall_s"] = frames_seconds;  // every frame, its metrics and the encoding to the end
+        stats["encoder_finish_ms"] = finish_ms;   // after the last frame: ffmpeg's queue and index
+        stats["frame_count"] = frame_count;
+        stats["report_steps_read"] = sequence.steps_read();
+        stats.update(run_context_json(current_gl_device(context->platform())));
+        stats["size"] = {scene.width, scene.height};
+        stats["cells"] = grid.cell_count();
+        stats["active_cells"] = grid.active_count();
+        stats["model"] = model.description;
+        stats["model_load_s"] = model.load_seconds;
+        stats["renderer_setup_s"] = setup_seconds;
+        stats["strategy"] = {{"requested", scene.settings.strategy}, {"drawn", settings.strategy},
+                             {"largest_step_primaries", survey.most_primaries}};
+        stats["property"] = {{"name", scene.property}, {"colour_range", {colour_range.min, colour_range.max}},
+                             {"primary_range", {primary_range.min, primary_range.max}}, {"hysteresis_band", band},
+                             {"report_steps", source.step_count()}};
+        stats["video"] = {{"codec", "h264"}, {"pixel_format", "yuv420p"}, {"encoder", "ffmpeg libx264"},
+                          {"preset", video.preset}, {"crf", video.crf}, {"fps", video.fps}};
+        stats["configuration"] = describe(options);
+        stats["memory_bytes"] = {{"peak_resident", run_context::proc_status_bytes("VmHWM")}};
+        io::write_file(options.stats, stats.dump(2) + '\n');
+    }
+    std::cout << "cutaway animate: " << options.out << " (" << frame_count << " frames, steps " << timeline.first_step << "-"
+              << timeline.last_step << ", " << temporal::to_string(coherence) << ", " << frames_seconds << " s)\n";
+    return 0;
+}
+
+}  // namespace
+
+CommandAction add_animate_command(CLI::App& app) {
+    auto options = std::make_shared<AnimateOptions>();
+    CLI::App* command = app.add_subcommand("animate", "Render a cutaway animation over report steps to an H.264 MP4");
+    add_animate_options(*command, *options);
+    return [options] {
+        try {
+            return animate(*options);
+        } catch (const Interrupted& interrupted) {
+            // Everything above has unwound: ffmpeg ended, the partial MP4 removed.
+            std::cerr << "cutaway animate: " << interrupted.what() << "; no MP4 written\n";
+            return 128 + interrupted.signal_number();
+        }
+    };
+}
+
+}  // namespace cutaway::app
