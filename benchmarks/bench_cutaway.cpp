@@ -47,6 +47,7 @@
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/cutaway_renderer.h"
+#include "cutaway/renderer_readback.h"
 #include "gl/gl_context.h"
 #include "gl/shader_library.h"
 #include "metrics/median.h"
@@ -93,13 +94,12 @@ private:
 std::size_t select_fraction(Scene& scene, double fraction) {
     app::RenderOptions options;
     options.primary_fraction = fraction;
-    scene.renderer->select_range(scene.property.primary_range,
-                                 app::choose_primary_range(scene.model->grid, scene.property, options));
-    return scene.renderer->primary_cell_count();
+    scene.renderer->select({scene.property.primary_range, app::choose_primary_range(scene.model->grid, scene.property, options)});
+    return scene.renderer->status().primary_cells;
 }
 
 std::size_t visible_primary_pixels(const pipeline::CutawayRenderer& renderer) {
-    const pipeline::IdImage ids = renderer.read_ids();
+    const pipeline::IdImage ids = pipeline::FrameReadback(renderer).read_ids();
     return std::size_t(std::count_if(ids.flags.begin(), ids.flags.end(),
                                      [](std::uint32_t f) { return (f & pipeline::flag_primary) != 0; }));
 }
@@ -112,9 +112,9 @@ std::vector<pipeline::Camera> path_cameras(const pipeline::CutawayRenderer& rend
                                            const std::vector<bench::PathPose>& path) {
     std::vector<pipeline::Camera> cameras;
     // Framed as `cutaway render` frames them: the colour bar (on in every benchmark) keeps its columns.
-    const float bar_width = renderer.colour_bar_reserved_width(pipeline::FrameSettings{});
+    const float bar_width = renderer.status(pipeline::FrameSettings{}).colour_bar_reserved_width;
     for (const bench::PathPose& pose : path)
-        cameras.push_back(pipeline::make_orbit_camera(renderer.frame(), pose.orbit, renderer.width(), renderer.height(), bar_width));
+        cameras.push_back(pipeline::make_orbit_camera(renderer.frame(), pose.orbit, renderer.status().width, renderer.status().height, bar_width));
     return cameras;
 }
 
@@ -138,7 +138,7 @@ struct BenchSetup {
 
 /// The strategy in a benchmark's label: its name, or for "auto" the one it drew ("auto:frustum-sweep").
 std::string drawn_strategy_label(const pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings) {
-    const std::string drawn = renderer.cut_strategy(settings);
+    const std::string drawn = renderer.status(settings).cut_strategy;
     return drawn == settings.strategy ? drawn : settings.strategy + ":" + drawn;
 }
 
@@ -177,7 +177,7 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     for (auto _ : state) {
         const pipeline::FrameTimes times = frame(k++ % path.size());
         state.SetIterationTime(times.total.wall_ms / 1000.0);
-        readback_bytes = std::max(readback_bytes, renderer.cut_readback_bytes());
+        readback_bytes = std::max(readback_bytes, renderer.status().cut_readback_bytes);
         primary_pixels.push_back(double(visible_primary_pixels(renderer)));
         for (const char* name : pipeline::stage_names) stage_times[name].push_back(0.0);
         for (const gl::StageTime& stage : times.stages) {
@@ -253,7 +253,7 @@ void bm_cpu_path(benchmark::State& state, const BenchSetup& setup) {
     // One sample per pose: the seed pass alone, the GPU strategy, the CPU path, interleaved.
     auto sample = [&](std::size_t k, std::map<std::string, std::vector<double>>& times) {
         settings.aperture_h_deg = settings.aperture_v_deg = path[k].aperture_deg;
-        const pipeline::CutSurfaceInputs inputs = scene.renderer->cut_inputs(settings, cameras[k]);
+        const pipeline::CutSurfaceInputs inputs = pipeline::RendererProbe(*scene.renderer).cut_inputs(settings, cameras[k]);
         no_vertices.bind();
         times["seeds_ms"].push_back(fenced_ms([&] { seed_pass.render_on_gpu(inputs); }));
         times["gpu_ms"].push_back(fenced_ms([&] { gpu->render(inputs, targets); }));

@@ -99,7 +99,7 @@ void bm_distributed_frame(benchmark::State& state, const BenchSetup& setup, cons
     rank.select_range(property.primary_range, box);
     const pipeline::FrameSettings settings;  // the main job's: the defaults
     const pipeline::Camera camera = pipeline::make_orbit_camera(
-        frame, pipeline::OrbitPose{}, o.width, o.height, rank.renderer().colour_bar_reserved_width(settings));
+        frame, pipeline::OrbitPose{}, o.width, o.height, rank.renderer().status(settings).colour_bar_reserved_width);
 
     for (int w = 0; w < o.warmup; ++w) rank.render(settings, camera);
     std::map<std::string, std::vector<double>> slowest;  // per timed frame, max over ranks
@@ -122,7 +122,7 @@ void bm_distributed_frame(benchmark::State& state, const BenchSetup& setup, cons
     state.counters["ranks"] = mpi.size();
     state.counters["active_cells"] = double(model.grid.active_count());
     state.counters["max_block_cells"] = mpi.max(double(rank.block().grid.cell_count()));
-    state.counters["primary_cells"] = double(mpi.sum(rank.renderer().primary_cell_count()));
+    state.counters["primary_cells"] = double(mpi.sum(rank.renderer().status().primary_cells));
     state.counters["max_peak_rss_bytes"] = mpi.max(double(run_context::proc_status_bytes("VmHWM")));
     state.SetLabel(preset + " " + std::to_string(mpi.size()) + " ranks, " + distributed::slab_axis_name(o.slabs) + " slabs, " +
                    settings.strategy);

@@ -60,9 +60,9 @@ void bm_select(benchmark::State& state, const std::vector<std::string>& presets,
         const grid::PrimaryRange& range = ranges[iteration++ % 2];
         const auto start = std::chrono::steady_clock::now();
         if (gpu) {
-            renderer.select_range(range);
+            renderer.select(range);
             glFinish();
-            primaries = renderer.primary_cell_count();
+            primaries = renderer.status().primary_cells;
         } else {
             primaries = select_on_cpu(grid, property, layout, range);
         }

@@ -27,6 +27,7 @@
 #include "annotation/property_units.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cutaway_renderer.h"
+#include "cutaway/renderer_readback.h"
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
 #include "cutaway/temporal/step_values.h"
@@ -140,7 +141,7 @@ int animate(const AnimateOptions& options) {
     // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
     // redraws the whole cut another way at once (on petra it made the first step's largest
     // flicker). The animation keeps the one auto picks for its largest primary set.
-    settings.strategy = pipeline::resolve_cut_strategy(settings.strategy, survey.most_primaries, renderer.auto_sweep_from());
+    settings.strategy = pipeline::resolve_cut_strategy(settings.strategy, survey.most_primaries, renderer.status().auto_sweep_from);
     const annotation::ColourBarLabel label{scene.property, colour_range.min, colour_range.max,
                                            annotation::property_unit(scene.property)};
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
@@ -173,16 +174,16 @@ int animate(const AnimateOptions& options) {
         const std::vector<std::uint8_t>& flags = *frame.flags;
         // A step held (none, between report steps) uploads nothing: the same values and primaries.
         if (frame.values_changed) renderer.set_colouring(*frame.values, label);
-        if (f == 0 || flags != previous_flags) renderer.set_primaries(flags);
+        if (f == 0 || flags != previous_flags) renderer.select(flags);
         pipeline::OrbitPose pose = scene.camera_pose();
         if (frame_count > 1) pose.azimuth_deg += float(options.orbit_deg * double(f) / double(frame_count - 1));
-        const float bar_width = renderer.colour_bar_reserved_width(settings);
+        const float bar_width = renderer.status(settings).colour_bar_reserved_width;
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer.frame(), pose, scene.width, scene.height, bar_width);
         if (scene.freeze_pose && f == 0)
             renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *scene.freeze_pose, scene.width, scene.height, bar_width));
         const double upload_ms = milliseconds_since(started);
         // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
-        const double draw_ms = renderer.render_unfenced_ms(settings, camera);
+        const double draw_ms = renderer.render(settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
         gl::RgbaImage image = renderer.read_image();
         double png_ms = 0;  // an extra output, left out of the frame's time
         if (!options.frames_dir.empty()) {
@@ -199,19 +200,19 @@ int animate(const AnimateOptions& options) {
         json entry{{"frame", f}, {"time_step", frame.time_step}, {"ms", ms},
                    {"ms_by_part", {{"upload", upload_ms}, {"draw", draw_ms}, {"readback_and_encoder", ms - upload_ms - draw_ms}}},
                    {"primary_cells", grid::count_primaries(flags)}};
-        if (options.time_against_render) entry["render_ms"] = renderer.render_unfenced_ms(settings, camera);
+        if (options.time_against_render) entry["render_ms"] = renderer.render(settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
         if (f > 0) {
             const metrics::PopCounts pops = metrics::count_pops(previous_flags, flags);
             entry["pop_in"] = pops.in;
             entry["pop_out"] = pops.out;
         }
         if (options.metrics) {
-            const pipeline::IdImage ids = renderer.read_ids();
+            const pipeline::IdImage ids = pipeline::FrameReadback(renderer).read_ids();
             std::vector<metrics::CutState> states = metrics::cut_states(ids.cell, ids.flags);
             if (f > 0) entry["cut_flicker"] = metrics::cut_flicker(previous_states, states).fraction;
             previous_states = std::move(states);
             renderer.render(primaries_only, camera);
-            const metrics::Exposure exposure = metrics::primary_exposure(view(renderer.read_ids()), view(ids));
+            const metrics::Exposure exposure = metrics::primary_exposure(view(pipeline::FrameReadback(renderer).read_ids()), view(ids));
             put_metric(entry, "primary_exposure", exposure.fraction, exposure.primary_pixels,
                        "no primary pixel in the primaries-only frame");
         }

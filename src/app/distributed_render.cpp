@@ -162,7 +162,7 @@ struct RankScene {
         property.external = nullptr;
         model.grid = {};  // the loaded block and its halo go; the renderer's block stays
         // Framed as the single-process frame is: beside the colour bar rank 0 draws.
-        const float bar_width = rank->renderer().colour_bar_reserved_width(options.frame_settings());
+        const float bar_width = rank->renderer().status(options.frame_settings()).colour_bar_reserved_width;
         camera = pipeline::make_orbit_camera(frame, options.camera_pose(), options.width, options.height, bar_width);
         if (options.freeze_pose)
             rank->renderer().freeze(
@@ -207,8 +207,8 @@ std::vector<double> rank_numbers(const RankScene& scene, const json& stages, con
     const grid::CornerPointGrid& g = rank.block().grid;
     std::vector<double> numbers{double(g.cell_count()),
                                 double(g.active_count()),
-                                double(rank.renderer().primary_cell_count()),
-                                double(rank.renderer().gpu_memory_bytes()),
+                                double(rank.renderer().status().primary_cells),
+                                double(rank.renderer().status().gpu_memory_bytes()),
                                 double(g.geometry_bytes()),
                                 double(run_context::proc_status_bytes("VmHWM")),
                                 double(run_context::proc_status_bytes("VmRSS")),
@@ -304,7 +304,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     std::vector<std::string> stage_order;
     for (const auto& [name, value] : stats["stages_ms"].items()) stage_order.push_back(name);
     const std::vector<double> gathered = mpi.gather(rank_numbers(scene, stats, exchange, stage_order));
-    const std::uint64_t primary_count = mpi.sum(rank.renderer().primary_cell_count());
+    const std::uint64_t primary_count = mpi.sum(rank.renderer().status().primary_cells);
     const pipeline::FacesDrawn drawn = rank.renderer().faces_drawn();
     const std::uint64_t faces_secondary = mpi.sum(drawn.secondary), faces_primary = mpi.sum(drawn.primary);
     if (!mpi.root()) return 0;
@@ -317,7 +317,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
                   << property.primary_range.min << ", " << property.primary_range.max << "]; rendering the context only\n";
     stats["faces_drawn"] = {{"secondary", faces_secondary}, {"primary", faces_primary}, {"summed_over_ranks", true}};
-    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(rank.renderer().cut_strategy(settings));
+    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(rank.renderer().status(settings).cut_strategy);
     stats["cut_device"] = strategy.device;
     stats["readback_bytes"] = 0;  // the strategy's own; the exchange's read-backs are in "distributed"
     stats["frame_ms_unfenced"] = nullptr;
@@ -329,7 +329,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
                 "not computed under mpirun (the metrics' extra frames are single-process; compare --cell-ids with a "
                 "single-process run instead)";
         }
-    stats["strategy"] = strategy_json(strategy, settings.strategy, rank.renderer().auto_sweep_from());
+    stats["strategy"] = strategy_json(strategy, settings.strategy, rank.renderer().status().auto_sweep_from);
     stats.update(run_context_json(current_gl_device(scene.context->platform())));
     stats["size"] = {options.width, options.height};
     stats["cells"] = scene.whole_dims.cell_count();

@@ -22,6 +22,7 @@
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cutaway_renderer.h"
 #include "cutaway/frame_metrics.h"
+#include "cutaway/renderer_readback.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
 #include "metrics/cut_error.h"
@@ -37,9 +38,9 @@ using nlohmann::json;
 /// The last frame's cut against the exact cone field from the same seeds (SPEC section 2).
 json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
                  const pipeline::Camera& camera) {
-    const cone_field::FloatImage cut = renderer.read_strategy_cut(camera);
+    const cone_field::FloatImage cut = pipeline::FrameReadback(renderer).read_strategy_cut(camera);
     const auto started = std::chrono::steady_clock::now();
-    const cone_field::FloatImage exact = renderer.exact_cut(settings, camera);
+    const cone_field::FloatImage exact = pipeline::RendererProbe(renderer).exact_cut(settings, camera);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     const metrics::CutErrorOptions compare_options;
     const metrics::CutError error = metrics::compare_cut(cut, exact, compare_options);
@@ -80,22 +81,22 @@ int run_render(const RenderOptions& options) {
     check_view(renderer.frame(), options);
     renderer.set_colouring(property.values(), property.colour_bar_label());
     if (selected_by)
-        renderer.set_primaries(selected_by->flags);
+        renderer.select(selected_by->flags);
     else
-        renderer.select_range(property.primary_range, box);
+        renderer.select({property.primary_range, box});
     // The values live on the GPU now (colouring and selection); the frames read no CPU copy.
     property.owned = std::vector<float>();
     glFinish();
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
     memory["resident_after_setup"] = run_context::proc_status_bytes("VmRSS");
-    const std::size_t primary_count = renderer.primary_cell_count();
+    const std::size_t primary_count = renderer.status().primary_cells;
     const std::string selected_name = selected_by ? selected_by->label : property.label;
     const grid::PrimaryRange selected_range = selected_by ? selected_by->range : property.primary_range;
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << selected_name << " lies in the primary range ["
                   << selected_range.min << ", " << selected_range.max << "]; rendering the context only\n";
     const pipeline::FrameSettings settings = options.frame_settings();
-    const float bar_width = renderer.colour_bar_reserved_width(settings);
+    const float bar_width = renderer.status(settings).colour_bar_reserved_width;
     const pipeline::Camera camera =
         pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height, bar_width);
     if (options.freeze_pose)
@@ -112,17 +113,17 @@ int run_render(const RenderOptions& options) {
     json stats = stage_statistics(runs);
     stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
     // Frames drawn twice because the culling's face buffer grew (cutaway_renderer.h render).
-    stats["frames_redrawn"] = renderer.frames_redrawn();
+    stats["frames_redrawn"] = renderer.status().frames_redrawn;
     // Per frame (every timed frame reads back the same amount): 0 for the strategies on the GPU.
-    stats["readback_bytes"] = renderer.cut_readback_bytes();
-    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(renderer.cut_strategy(settings));
+    stats["readback_bytes"] = renderer.status().cut_readback_bytes;
+    const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(renderer.status(settings).cut_strategy);
     stats["cut_device"] = strategy.device;
     if (stats["faces_drawn"].contains("culling")) {
         stats["bricks_culled"] = stats["faces_drawn"]["culling"]["bricks_culled"];
         stats["cells_culled"] = stats["faces_drawn"]["culling"]["cells_culled"];
     }
     std::vector<double> unfenced;
-    for (int i = 0; i < options.repeat; ++i) unfenced.push_back(renderer.render_unfenced_ms(settings, camera));
+    for (int i = 0; i < options.repeat; ++i) unfenced.push_back(renderer.render(settings, camera, pipeline::Fencing::frame_only).total.wall_ms);
     stats["frame_ms_unfenced"] = metrics::median(unfenced);
     if (options.exact_check) stats["cut_vs_exact"] = exact_check(renderer, settings, camera);
     if (options.baseline) {
@@ -146,17 +147,17 @@ int run_render(const RenderOptions& options) {
                                       {"pixels", m.border_width.pixels}};
         stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
     }
-    stats["strategy"] = strategy_json(strategy, settings.strategy, renderer.auto_sweep_from());
+    stats["strategy"] = strategy_json(strategy, settings.strategy, renderer.status().auto_sweep_from);
     stats.update(run_context_json(current_gl_device(context->platform())));
     stats["size"] = {options.width, options.height};
     stats["cells"] = grid.cell_count();
     stats["active_cells"] = grid.active_count();
     stats["primary_cells"] = primary_count;
-    stats["gpu_memory_bytes"] = renderer.gpu_memory_bytes();
+    stats["gpu_memory_bytes"] = renderer.status().gpu_memory_bytes();
     memory["peak_resident"] = run_context::proc_status_bytes("VmHWM");
-    memory["gpu_buffers"] = renderer.gpu_memory_bytes();
+    memory["gpu_buffers"] = renderer.status().gpu_memory_bytes();
     json by_part = json::object();
-    for (const auto& [part, bytes] : renderer.gpu_memory_by_part()) by_part[part] = bytes;
+    for (const auto& [part, bytes] : renderer.status().gpu_memory_by_part) by_part[part] = bytes;
     memory["gpu_buffers_by_part"] = by_part;
     memory["render_target_budget"] = options.render_target_bytes();
     stats["memory_bytes"] = memory;

@@ -105,7 +105,7 @@ struct PropertyChoice {
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer = 0);
 
 /// Sets property.primary_range from --range (or --primary-fraction) and returns the --ijk-box,
-/// if any: the selection the renderer makes on the GPU (CutawayRenderer::select_range).
+/// if any: the selection the renderer makes on the GPU (CutawayRenderer::select).
 std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
                                                  const RenderOptions& options);
 /// The checks of --range and --primary-fraction, and the --ijk-box (checked against `dims`).

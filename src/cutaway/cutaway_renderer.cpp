@@ -42,15 +42,6 @@ int checked_side(int side, const char* name) {
     return side;
 }
 
-/// The float of an RG32UI target that holds a packed normal and a float per pixel
-/// (shaders/common/packed_normal.glsl: its second word).
-FloatImage read_packed_value(const gl::Texture& texture) {
-    const std::vector<std::uint32_t> words = gl::read_texels<std::uint32_t>(texture, GL_RG_INTEGER, GL_UNSIGNED_INT, 2);
-    FloatImage image{texture.width(), texture.height(), std::vector<float>(words.size() / 2)};
-    for (std::size_t i = 0; i < image.values.size(); ++i) image.values[i] = std::bit_cast<float>(words[2 * i + 1]);
-    return image;
-}
-
 /// Depth (along the view axis) of the nearest corner of the model's box: nothing lies in front
 /// of it, so frustum walls stop there (and never nearer than the near plane).
 float nearest_model_depth(const ModelFrame& frame, const Camera& camera) {
@@ -144,7 +135,7 @@ void CutawayRenderer::resize(int width, int height) {
     reallocate(scene_, width_, height_);
     reallocate(post_, width_, height_);
     rear_shell_.resize(width_, height_);
-    unfreeze();
+    freeze(std::nullopt);
 }
 
 void CutawayRenderer::set_colouring(const std::vector<float>& values, const ColourBarLabel& label) {
@@ -189,6 +180,45 @@ void CutawayRenderer::set_primary_centroid() {
     primaries_of_all_renderers_ = centres.count;
 }
 
+void CutawayRenderer::set_hooks(FrameHooks hooks) {
+    hooks_ = std::move(hooks);
+    visible_.reserve_limit();
+}
+
+void CutawayRenderer::select(const Primaries& primaries) {
+    if (primaries.flags) set_primaries(*primaries.flags);
+    else select_range(primaries.range, primaries.box);
+}
+
+void CutawayRenderer::freeze(const std::optional<Camera>& camera) {
+    frozen_camera_ = camera;
+    frozen_valid_ = false;
+}
+
+std::size_t RendererStatus::gpu_memory_bytes() const {
+    std::size_t bytes = 0;
+    for (const auto& [part, part_bytes] : gpu_memory_by_part) bytes += part_bytes;
+    return bytes;
+}
+
+RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
+    RendererStatus status;
+    status.width = width_;
+    status.height = height_;
+    status.primary_cells = buffers_.primary_cells().count;
+    status.cut_strategy = cut_strategy(settings);
+    status.auto_sweep_from = auto_sweep_from_;
+    status.colour_bar_reserved_width = colour_bar_reserved_width(settings);
+    status.frozen = frozen_camera_.has_value();
+    status.frames_redrawn = frames_redrawn_;
+    status.cut_readback_bytes = cut_readback_bytes_;
+    status.gpu_memory_by_part = {{"grid", buffers_.memory_bytes()},
+                                 {"culling", visible_.memory_bytes()},
+                                 {"selection", selection_.memory_bytes()},
+                                 {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0}};
+    return status;
+}
+
 std::string CutawayRenderer::cut_strategy(const FrameSettings& settings) const {
     return resolve_cut_strategy(settings.strategy, primaries_of_all_renderers_, auto_sweep_from_);
 }
@@ -199,8 +229,6 @@ void CutawayRenderer::selection_changed() {
     secondary_list_built_ = false;
     frozen_valid_ = false;
 }
-
-std::size_t CutawayRenderer::primary_cell_count() const { return buffers_.primary_cells().count; }
 
 const FaceBuffer& CutawayRenderer::secondary_face_list() {
     if (!secondary_list_built_) {
@@ -257,7 +285,12 @@ const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera)
     return rear_shell_.depth();
 }
 
-FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera) {
+FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera, Fencing fencing) {
+    timer_.set_fenced(fencing == Fencing::each_stage);
+    struct FencesBack {  // stages are fenced again after this frame, even when it throws
+        gl::StageTimer& timer;
+        ~FencesBack() { timer.set_fenced(true); }
+    } fences_back{timer_};
     FrameTimes times = render_once(s, camera);
     // After the frame's fence: the culling's 4-byte face count says whether its buffer was too
     // small (faces were dropped). The grown buffer fits this frame's selection, so once is enough.
@@ -385,18 +418,6 @@ void CutawayRenderer::draw_secondaries(const FrameStep& f) {
                     f.settings.draw);
 }
 
-double CutawayRenderer::render_unfenced_ms(const FrameSettings& settings, const Camera& camera) {
-    timer_.set_fenced(false);
-    try {
-        const double total = render(settings, camera).total.wall_ms;
-        timer_.set_fenced(true);
-        return total;
-    } catch (...) {
-        timer_.set_fenced(true);
-        throw;
-    }
-}
-
 gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode draw) {
     timer_.clear();
     empty_vertex_array_.bind();
@@ -432,17 +453,6 @@ FacesDrawn CutawayRenderer::faces_drawn() const {
     return drawn;
 }
 
-std::vector<std::pair<std::string, std::size_t>> CutawayRenderer::gpu_memory_by_part() const {
-    return {{"grid", buffers_.memory_bytes()}, {"culling", visible_.memory_bytes()}, {"selection", selection_.memory_bytes()},
-            {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0}};
-}
-
-std::size_t CutawayRenderer::gpu_memory_bytes() const {
-    std::size_t bytes = 0;
-    for (const auto& [part, part_bytes] : gpu_memory_by_part()) bytes += part_bytes;
-    return bytes;
-}
-
 void CutawayRenderer::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {
     const bool same_size = x1 - x0 == width_ && y1 - y0 == height_;
     glBlitNamedFramebuffer(post_.final_framebuffer.id(), framebuffer, 0, 0, width_, height_, x0, y0, x1, y1,
@@ -470,32 +480,6 @@ std::vector<std::uint32_t> CutawayRenderer::read_eclipse_ids() const {
     for (std::uint32_t& id : ids)
         if (id != 0) id = (layout_.cells[id - 1] & 0x7fffffffu) + 1;
     return ids;
-}
-
-FloatImage CutawayRenderer::read_scene_depth() const { return read_packed_value(scene_.normal_depth); }
-
-std::vector<float> CutawayRenderer::read_window_depth() const {
-    return gl::read_texels<float>(scene_.depth, GL_DEPTH_COMPONENT, GL_FLOAT, 1);
-}
-
-FloatImage CutawayRenderer::read_cut_depth() const {
-    return {cut_.surface.width(), cut_.surface.height(), gl::read_texels<float>(cut_.surface, GL_RED, GL_FLOAT, 1)};
-}
-
-cone_field::FloatImage CutawayRenderer::read_strategy_cut(const Camera& camera) const {
-    return read_cut_depth_texture(cut_.depth, cut_camera_for(camera));
-}
-
-cone_field::FloatImage CutawayRenderer::exact_cut(const FrameSettings& settings, const Camera& camera) {
-    return cpu_cone_cut(settings, camera, exact_cone_cut);
-}
-
-cone_field::FloatImage CutawayRenderer::cpu_cone_cut(const FrameSettings& settings, const Camera& camera, const ConeFieldCut& cut) {
-    sync_selection_to_cpu();
-    const CutSurfaceInputs inputs = cut_inputs(settings, cut_camera_for(camera));
-    CutSeedPass seed_pass(shaders_);
-    empty_vertex_array_.bind();
-    return cone_field_cut_for(inputs, seed_pass.render(inputs), cut);
 }
 
 }  // namespace cutaway::pipeline

@@ -93,6 +93,41 @@ struct FrameHooks {
 
 using shared::flag_border, shared::flag_cut_fill, shared::flag_edge, shared::flag_primary, shared::flag_shell_cut;
 
+/// What select() takes: primary flags (one per Eclipse cell), or a range of the colouring values
+/// (and an IJK box) for the GPU selection.
+struct Primaries {
+    Primaries(std::vector<std::uint8_t> cell_flags) : flags(std::move(cell_flags)) {}
+    Primaries(const grid::PrimaryRange& value_range, const std::optional<grid::IjkBox>& ijk_box = std::nullopt)
+        : range(value_range), box(ijk_box) {}
+    std::optional<std::vector<std::uint8_t>> flags;
+    grid::PrimaryRange range;
+    std::optional<grid::IjkBox> box;
+};
+
+/// Whether render() fences each stage (stage times) or only the whole frame.
+enum class Fencing { each_stage, frame_only };
+
+/// The renderer's state as a run reports it (status()).
+struct RendererStatus {
+    int width = 0;
+    int height = 0;
+    std::size_t primary_cells = 0;
+    /// The registry strategy a frame with the settings draws its cut with: settings.strategy, or
+    /// for "auto" the one it picks for the primaries of every renderer (cut_strategy_choice.h).
+    std::string cut_strategy;
+    std::uint64_t auto_sweep_from = 0;  ///< primary cells from which "auto" picks frustum-sweep on this device
+    /// Columns at the image's right edge a framed camera leaves to the colour bar (0 without one):
+    /// the `reserved_right_px` of make_orbit_camera.
+    float colour_bar_reserved_width = 0;
+    bool frozen = false;
+    std::size_t frames_redrawn = 0;      ///< frames drawn twice because the culling's face buffer grew
+    std::size_t cut_readback_bytes = 0;  ///< what the last frame's strategy read back (stats.json readback_bytes)
+    /// Bytes of GL buffers and textures by part: the grid (geometry, values, face lists), the visible
+    /// path's culling, the primary selection, the plain frame's exposed surface (0 until drawn).
+    std::vector<std::pair<std::string, std::size_t>> gpu_memory_by_part;
+    std::size_t gpu_memory_bytes() const;
+};
+
 class CutawayRenderer {
 public:
     /// Called by the constructor once it has read the grid's corner depths for the last time (the
@@ -116,97 +151,49 @@ public:
 
     /// Hooks combine every rank's frame, so no rank may draw a frame again alone: the culling's
     /// face buffer is sized for every face at once (see render).
-    void set_hooks(FrameHooks hooks) {
-        hooks_ = std::move(hooks);
-        visible_.reserve_limit();
-    }
+    void set_hooks(FrameHooks hooks);
 
     const ModelFrame& frame() const { return frame_; }
     /// Renders frames of `width` x `height` from now on: the per-pixel targets are reallocated,
     /// the model's buffers and programs stay (the viewer's render size while the view moves).
     /// Freeze view ends: the caller freezes again with a camera of the new size.
     void resize(int width, int height);
-    int width() const { return width_; }
-    int height() const { return height_; }
 
-    /// Colours cells by `values` (one per Eclipse cell) mapped from `range`.
+    /// Colours cells by `values` (one per Eclipse cell) mapped from the label's range.
     void set_colouring(const std::vector<float>& values, const ColourBarLabel& label);
-    /// Columns at the image's right edge a framed camera leaves to the colour bar (0 without one):
-    /// the `reserved_right_px` of make_orbit_camera.
-    float colour_bar_reserved_width(const FrameSettings& settings) const;
-    /// Primary flags, one per Eclipse cell.
-    void set_primaries(const std::vector<std::uint8_t>& flags);
-    /// Primaries chosen on the GPU: the active cells whose colouring value lies in `range` (and
-    /// inside `box`). Uploads nothing: a range change costs a few compute passes.
-    void select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box = std::nullopt);
-    std::size_t primary_cell_count() const;
-    /// Bytes the last frame's cut-surface strategy read back from the GPU (stats.json readback_bytes).
-    std::size_t cut_readback_bytes() const { return cut_readback_bytes_; }
-    /// The registry strategy a frame with `settings` draws its cut with: settings.strategy, or for
-    /// "auto" the one it picks for the primaries of every renderer (cut_strategy_choice.h), as
-    /// of the last frame drawn.
-    std::string cut_strategy(const FrameSettings& settings) const;
-    /// The primary cells from which "auto" picks frustum-sweep on this context's GL device.
-    std::uint64_t auto_sweep_from() const { return auto_sweep_from_; }
+    /// The primary cells: given as flags (one per Eclipse cell), or chosen on the GPU as the active
+    /// cells whose colouring value lies in a range (and inside an IJK box), which uploads nothing.
+    void select(const Primaries& primaries);
 
-    /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until unfreeze().
-    void freeze(const Camera& camera) { frozen_camera_ = camera; frozen_valid_ = false; }
-    void unfreeze() { frozen_camera_.reset(); }
-    bool frozen() const { return frozen_camera_.has_value(); }
+    /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until freeze(std::nullopt).
+    void freeze(const std::optional<Camera>& camera);
 
     /// Renders one frame with the strategy named in settings. The culling's face buffer holds
     /// what frames have needed so far: a frame that selected more faces than it holds grows it
-    /// and is drawn again (counted by frames_redrawn; the times are the second drawing's).
-    FrameTimes render(const FrameSettings& settings, const Camera& camera);
-    /// Frames drawn twice because the culling's face buffer grew (see render).
-    std::size_t frames_redrawn() const { return frames_redrawn_; }
-    /// Records the culling's face buffer holds now, and a new size for it (it grows from there
-    /// as frames need; for tests and memory studies).
-    std::size_t face_buffer_capacity() const { return visible_.face_capacity(); }
-    void set_face_buffer_capacity(std::size_t faces) { visible_.set_capacity(faces); }
-    /// The same frame without per-stage fences (only `total` is timed: one glFinish at its end),
-    /// as a user's frame runs with its stages overlapping.
-    double render_unfenced_ms(const FrameSettings& settings, const Camera& camera);
+    /// and is drawn again (counted in status().frames_redrawn; the times are the second drawing's).
+    /// Fencing::frame_only: the stages are not fenced (only `total` is timed, one glFinish at its
+    /// end), as a user's frame runs with its stages overlapping.
+    FrameTimes render(const FrameSettings& settings, const Camera& camera, Fencing fencing = Fencing::each_stage);
     /// The plain shaded frame of the whole model (no cut, no post), timed: the exposed faces
     /// (`visible`) or every face of every active cell (`all_faces`).
     gl::StageTime render_baseline(const Camera& camera, DrawMode draw = DrawMode::visible);
-    /// What the last frame (render or render_baseline) drew.
+
+    /// The renderer's state for a frame with `settings` (no GPU read-back).
+    RendererStatus status(const FrameSettings& settings = {}) const;
+    /// What the last frame (render or render_baseline) drew; the culling's counts are read back.
     FacesDrawn faces_drawn() const;
-    /// Bytes of GL buffers and textures the renderer holds (llvmpipe keeps them in host memory).
-    std::size_t gpu_memory_bytes() const;
-    /// The same by part: the grid (geometry, values, face lists), the visible path's culling, the
-    /// primary selection, the plain frame's exposed surface (0 until a plain frame is drawn).
-    std::vector<std::pair<std::string, std::size_t>> gpu_memory_by_part() const;
 
     gl::RgbaImage read_image() const;
+    /// Eclipse cell index + 1 of every pixel of the last frame (0: no cell), rows bottom to top.
+    std::vector<std::uint32_t> read_eclipse_ids() const;
     /// Copies the last frame onto `framebuffer` (0: a window's) over the rectangle (x0, y0)-(x1, y1),
     /// scaled with linear filtering when the sizes differ.
     void present(unsigned framebuffer, int x0, int y0, int x1, int y1) const;
-    IdImage read_ids() const;
-    /// Eclipse cell index + 1 of every pixel of the last frame (0: no cell), rows bottom to top.
-    std::vector<std::uint32_t> read_eclipse_ids() const;
-    /// Linear depth of the visible surface in the model camera (0 = background).
-    FloatImage read_scene_depth() const;
-    /// The face records stage 2 drew in the last visible-path frame, in drawing order (tests).
-    std::vector<std::uint32_t> read_visible_faces() const { return visible_.read_faces(); }
-    /// The depth buffer of the last frame or plain frame (window depth 0..1, 1 = background),
-    /// rows bottom to top.
-    std::vector<float> read_window_depth() const;
-    /// The cut surface used by the last frame: depth along the cut camera's axis (0 = no cut).
-    FloatImage read_cut_depth() const;
-    /// The strategy's cut of the last frame, before any mean filter: depth s along the cut
-    /// camera's axis, rows top to bottom, 0 = nothing cut. `camera`: the frame's camera.
-    cone_field::FloatImage read_strategy_cut(const Camera& camera) const;
-    /// The exact cone-field cut for `settings` and `camera` from the seeds and slope every
-    /// cone-field strategy uses (cone_field_strategy.h), in read_strategy_cut's units.
-    cone_field::FloatImage exact_cut(const FrameSettings& settings, const Camera& camera);
-    /// The same with any CPU cone-field function: the references of the GPU transforms.
-    cone_field::FloatImage cpu_cone_cut(const FrameSettings& settings, const Camera& camera, const ConeFieldCut& cut);
-
-    /// What stage 1 hands the strategy for `settings` and the cut camera (tests draw with it).
-    CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
 
 private:
+    friend class FrameReadback;  // renderer_readback.h: the last frame's images for metrics and tests
+    friend class RendererProbe;
+
     /// The first constructor's work once the active cells' bounds are known (computed once: the
     /// frame and the face tolerance both need them).
     CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::CornerPointGrid& grid, const grid::Box3& bounds,
@@ -225,6 +212,15 @@ private:
         const FramePlan& plan;
     };
     FrameTimes render_once(const FrameSettings& settings, const Camera& camera);
+    /// The registry strategy a frame with `settings` draws its cut with (RendererStatus::cut_strategy).
+    std::string cut_strategy(const FrameSettings& settings) const;
+    /// What stage 1 hands the strategy for `settings` and the cut camera.
+    CutSurfaceInputs cut_inputs(const FrameSettings& settings, const Camera& cut_camera) const;
+    void set_primaries(const std::vector<std::uint8_t>& flags);
+    void select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box);
+    /// Per-pixel cell + 1 and flags of the last frame (frame_outputs.glsl).
+    IdImage read_ids() const;
+    float colour_bar_reserved_width(const FrameSettings& settings) const;
     RendererState state_for(const FrameSettings& settings) const;
     void run_pass(FramePass pass, const FrameStep& step);
     void draw_strategy_cut(const FrameStep& step);

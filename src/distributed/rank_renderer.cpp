@@ -37,19 +37,19 @@ void RankRenderer::set_colouring(const std::vector<float>& source_values, const 
 }
 
 void RankRenderer::set_primaries(const std::vector<std::uint8_t>& source_flags) {
-    renderer_.set_primaries(block_.own_values(source_flags));
+    renderer_.select(block_.own_values(source_flags));
 }
 
 void RankRenderer::select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box) {
     if (!box) {
-        renderer_.select_range(range);
+        renderer_.select(range);
         return;
     }
     // The box in slab cell indices; empty (upper below lower) where it misses the slab.
     const grid::IjkBox& s = block_.box;
-    renderer_.select_range(range, grid::IjkBox{std::max(box->i0, s.i0) - s.i0, std::max(box->j0, s.j0) - s.j0,
+    renderer_.select({range, grid::IjkBox{std::max(box->i0, s.i0) - s.i0, std::max(box->j0, s.j0) - s.j0,
                                                std::max(box->k0, s.k0) - s.k0, std::min(box->i1, s.i1) - s.i0,
-                                               std::min(box->j1, s.j1) - s.j0, std::min(box->k1, s.k1) - s.k0});
+                                               std::min(box->j1, s.j1) - s.j0, std::min(box->k1, s.k1) - s.k0}});
 }
 
 pipeline::FrameTimes RankRenderer::render(const pipeline::FrameSettings& settings, const pipeline::Camera& camera) {

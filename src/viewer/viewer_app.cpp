@@ -104,7 +104,7 @@ int ViewerApp::render_height() const { return std::max(1, int(std::lround(window
 pipeline::Camera ViewerApp::camera_for(const pipeline::OrbitPose& pose) const {
     const pipeline::CutawayRenderer& renderer = scene_->renderer();
     return pipeline::make_orbit_camera(renderer.frame(), pose, render_width(), render_height(),
-                                       renderer.colour_bar_reserved_width(settings_));
+                                       renderer.status(settings_).colour_bar_reserved_width);
 }
 
 int ViewerApp::run() {
@@ -138,7 +138,7 @@ bool ViewerApp::frame(bool last_frame_due) {
         info_.render_height = render_height();
         changes |= draw_control_panel(state_, *scene_, info_, requests);
         const pipeline::CutawayRenderer& renderer = scene_->renderer();
-        draw_timing_overlay(timings_, renderer.colour_bar_reserved_width(settings_) / float(renderer.width()));
+        draw_timing_overlay(timings_, renderer.status(settings_).colour_bar_reserved_width / float(renderer.status().width));
     }
     if (requests.reset_camera) changes |= press_key("R");
     if (requests.screenshot) changes |= press_key("F12");
@@ -153,7 +153,7 @@ bool ViewerApp::frame(bool last_frame_due) {
     bool resized = false;
     if (needs_render_ && window_fb_width_ > 0 && window_fb_height_ > 0) {
         // A new size reallocates only the per-pixel targets: the model's buffers and programs stay.
-        resized = render_width() != scene_->renderer().width() || render_height() != scene_->renderer().height();
+        resized = render_width() != scene_->renderer().status().width || render_height() != scene_->renderer().status().height;
         scene_->renderer().resize(render_width(), render_height());
         sync_freeze();
         timings_.add_render(scene_->renderer().render(settings_, camera_for(state_.pose)));
@@ -311,8 +311,8 @@ void ViewerApp::reload_shaders_if_edited() {
 
 void ViewerApp::sync_freeze() {
     pipeline::CutawayRenderer& renderer = scene_->renderer();
-    if (state_.frozen_pose && !renderer.frozen()) renderer.freeze(camera_for(*state_.frozen_pose));
-    if (!state_.frozen_pose && renderer.frozen()) renderer.unfreeze();
+    if (state_.frozen_pose && !renderer.status().frozen) renderer.freeze(camera_for(*state_.frozen_pose));
+    if (!state_.frozen_pose && renderer.status().frozen) renderer.freeze(std::nullopt);
 }
 
 void ViewerApp::write_screenshot(const std::string& path) const {

@@ -22,7 +22,7 @@ void ViewerScene::select(const app::RenderOptions& options) {
     box_ = box;
     if (!renderer_) return;
     if (!same_values) apply_colouring(*renderer_);
-    renderer_->select_range(property_.primary_range, box_);
+    renderer_->select({property_.primary_range, box_});
 }
 
 void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings) {
@@ -36,14 +36,14 @@ void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameS
 
 void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
     apply_colouring(renderer);
-    renderer.select_range(property_.primary_range, box_);
+    renderer.select({property_.primary_range, box_});
 }
 
 void ViewerScene::apply_colouring(pipeline::CutawayRenderer& renderer) const {
     renderer.set_colouring(property_.values(), property_.colour_bar_label());
 }
 
-std::size_t ViewerScene::primary_count() const { return renderer_ ? renderer_->primary_cell_count() : 0; }
+std::size_t ViewerScene::primary_count() const { return renderer_ ? renderer_->status().primary_cells : 0; }
 
 std::size_t ViewerScene::step_count() const { return model_.grid.step_count(property_.name); }
 

@@ -11,6 +11,7 @@
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/frame_metrics.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "metrics/cut_error.h"
 
@@ -32,7 +33,7 @@ TEST(CutStrategies, EveryStrategyKeepsEveryPrimaryPixelVisible) {
         std::mt19937 random(23);  // the same scenes for every strategy
         for (int trial = 0; trial < 3; ++trial) {
             SCOPED_TRACE("trial " + std::to_string(trial));
-            renderer->set_primaries(random_primaries(petra(), random));
+            renderer->select(random_primaries(petra(), random));
             const Camera camera = make_orbit_camera(renderer->frame(), random_pose(random), width, height);
             pipeline::FrameSettings settings = invariant_settings(random);
             settings.strategy = entry.name;
@@ -61,17 +62,17 @@ TEST(CutStrategies, JumpFloodingWithinItsErrorBoundsAgainstExactAt512) {
     std::mt19937 random(41);
     for (int trial = 0; trial < 3; ++trial) {
         SCOPED_TRACE("trial " + std::to_string(trial));
-        renderer->set_primaries(random_primaries(petra(), random));
+        renderer->select(random_primaries(petra(), random));
         const Camera camera = make_orbit_camera(renderer->frame(), random_pose(random), side, side);
         pipeline::FrameSettings settings = invariant_settings(random);
-        const cone_field::FloatImage exact = renderer->exact_cut(settings, camera);
+        const cone_field::FloatImage exact = pipeline::RendererProbe(*renderer).exact_cut(settings, camera);
         ASSERT_TRUE(std::any_of(exact.pixels.begin(), exact.pixels.end(), [](float d) { return d > 0; }))
             << "no cut at all: the comparison would be vacuous";
         for (const auto& [name, bound] : bounds) {
             SCOPED_TRACE(name);
             settings.strategy = name;
             renderer->render(settings, camera);
-            const metrics::CutError error = metrics::compare_cut(renderer->read_strategy_cut(camera), exact);
+            const metrics::CutError error = metrics::compare_cut(pipeline::RendererProbe(*renderer).read_strategy_cut(camera), exact);
             EXPECT_LE(error.wrong_fraction, bound) << error.pixels_wrong << " of " << error.pixels_compared;
             EXPECT_LE(error.max_signed_error, error.tolerance);
             RecordProperty(std::string(name) + "_wrong_fraction_trial_" + std::to_string(trial), std::to_string(error.wrong_fraction));
@@ -92,18 +93,18 @@ TEST(CutStrategies, AutoDrawsClustersBelowTheDevicesThresholdAndTheSweepFromTher
     const auto cut_of = [&](const std::string& strategy) {
         settings.strategy = strategy;
         renderer->render(settings, camera);
-        return renderer->read_strategy_cut(camera).pixels;
+        return pipeline::RendererProbe(*renderer).read_strategy_cut(camera).pixels;
     };
     // Petra's 35,838 active cells: 1% of them lie below either threshold (500 on llvmpipe, 10,000 on a
     // GPU), half of them above both.
     const std::pair<double, std::string> cases[] = {{0.01, "frustum-clusters"}, {0.5, "frustum-sweep"}};
     for (const auto& [fraction, chosen] : cases) {
         SCOPED_TRACE("fraction " + std::to_string(fraction));
-        renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", fraction));
+        renderer->select(grid::range_for_fraction(petra(), poro, "PORO", fraction));
         const auto automatic = cut_of(pipeline::auto_cut_strategy);
-        const std::size_t primaries = renderer->primary_cell_count();
-        EXPECT_EQ(primaries >= renderer->auto_sweep_from(), chosen == "frustum-sweep") << primaries;
-        EXPECT_EQ(renderer->cut_strategy(settings), chosen);
+        const std::size_t primaries = renderer->status().primary_cells;
+        EXPECT_EQ(primaries >= renderer->status().auto_sweep_from, chosen == "frustum-sweep") << primaries;
+        EXPECT_EQ(renderer->status(settings).cut_strategy, chosen);
         const std::string other = chosen == "frustum-sweep" ? "frustum-clusters" : "frustum-sweep";
         EXPECT_NE(cut_of(other), automatic) << other << " draws the same cut: the test cannot tell them apart";
         EXPECT_EQ(cut_of(chosen), automatic);

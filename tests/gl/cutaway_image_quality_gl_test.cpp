@@ -10,6 +10,7 @@
 #include <optional>
 #include <random>
 
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 
 namespace cutaway::test {
@@ -24,7 +25,7 @@ double background_in_silhouette(pipeline::CutawayRenderer& renderer, pipeline::F
     if (frozen) renderer.freeze(*frozen);
     renderer.render(settings, camera);
     const std::vector<std::uint32_t> cut = renderer.read_eclipse_ids();
-    renderer.unfreeze();
+    renderer.freeze(std::nullopt);
     settings.cut_enabled = false;
     renderer.render(settings, camera);
     const std::vector<std::uint32_t> uncut = renderer.read_eclipse_ids();
@@ -43,7 +44,7 @@ void check_no_see_through(const grid::CornerPointGrid& grid, unsigned seed) {
     std::mt19937 random(seed);
     double worst_clamped = 0, worst_raw = 0;
     for (int round = 0; round < 8; ++round) {
-        renderer->set_primaries(random_primaries(grid, random));
+        renderer->select(random_primaries(grid, random));
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
         pipeline::FrameSettings settings;
         settings.ssao = false;  // speed; the cut does not depend on it
@@ -75,7 +76,7 @@ TEST(CutawayImageQuality, FaultedModelWithInactiveCellsIsNotSeeThrough) {
 // background through the cut.
 TEST(CutawayImageQuality, FrozenViewFromAMovedCameraIsNotSeeThrough) {
     auto renderer = make_renderer(petra(), width, height);
-    renderer->select_range(grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01));
+    renderer->select(grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01));
     const auto camera_at = [&](float azimuth, float elevation) {
         return pipeline::make_orbit_camera(renderer->frame(), {azimuth, elevation, 0, glm::vec3(0)}, width, height);
     };
@@ -136,7 +137,7 @@ struct FillLuminance {
 FillLuminance fill_luminance(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
                              const pipeline::Camera& camera, bool cut_fill) {
     renderer.render(settings, camera);
-    const pipeline::IdImage ids = renderer.read_ids();
+    const pipeline::IdImage ids = pipeline::RendererProbe(renderer).read_ids();
     const gl::RgbaImage image = renderer.read_image();
     std::vector<double> values;
     std::size_t lines = 0;
@@ -155,7 +156,7 @@ TEST(CutawayImageQuality, CutWallsShowTheirColoursNotBlackLines) {
     constexpr int w = 800, h = 600;
     auto renderer = make_renderer(petra(), w, h);
     const std::vector<float>& poro = *petra().property("PORO");
-    renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
+    renderer->select(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
     std::mt19937 random(3);
     for (int round = 0; round < 3; ++round) {
         const pipeline::OrbitPose pose{float(random() % 360), 25.0f + float(random() % 40), 0.0f, glm::vec3(0)};

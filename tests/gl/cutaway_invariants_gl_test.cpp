@@ -7,6 +7,7 @@
 #include <random>
 
 #include "cutaway/frame_metrics.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "metrics/image_metrics.h"
 
@@ -29,17 +30,17 @@ void check_invariants(const grid::CornerPointGrid& grid, unsigned seed) {
     std::mt19937 random(seed);
     for (int trial = 0; trial < 25; ++trial) {
         SCOPED_TRACE("trial " + std::to_string(trial));
-        renderer->set_primaries(random_primaries(grid, random));
+        renderer->select(random_primaries(grid, random));
         const Camera camera = make_orbit_camera(renderer->frame(), random_pose(random), width, height);
         pipeline::FrameSettings settings = invariant_settings(random);
         renderer->render(settings, camera);
-        const pipeline::IdImage cutaway = renderer->read_ids();
+        const pipeline::IdImage cutaway = pipeline::RendererProbe(*renderer).read_ids();
         // The stored depths come from the same float world positions on both sides; 1e-5
         // relative absorbs rounding in rebuilding eye depth (a few ulps), far below any cell.
         EXPECT_EQ(pipeline::secondary_pixels_in_front_of_cut(*renderer, 1e-5), 0u);
         settings.only = pipeline::OnlyLayer::primaries;
         renderer->render(settings, camera);
-        const pipeline::IdImage primaries = renderer->read_ids();
+        const pipeline::IdImage primaries = pipeline::RendererProbe(*renderer).read_ids();
         const metrics::Exposure exposure = metrics::primary_exposure(ids_of(primaries), ids_of(cutaway));
         EXPECT_GT(exposure.primary_pixels, 0u);
         EXPECT_EQ(exposure.fraction, 1.0) << exposure.visible << " of " << exposure.primary_pixels << " primary pixels";
@@ -55,7 +56,7 @@ TEST(CutawayInvariants, NothingInFrontOfTheFilteredCutEither) {
     auto renderer = make_renderer(petra(), width, height);
     std::mt19937 random(3);
     for (int trial = 0; trial < 5; ++trial) {
-        renderer->set_primaries(random_primaries(petra(), random));
+        renderer->select(random_primaries(petra(), random));
         pipeline::FrameSettings settings = invariant_settings(random);
         settings.mean_filter = 9;
         renderer->render(settings, make_orbit_camera(renderer->frame(), random_pose(random), width, height));
@@ -68,7 +69,7 @@ TEST(CutawayBorders, RaycastLinesAreSteadierThanThresholdLines) {
     // test lines of the chosen width. Compared on the same frames, summed over 6 cameras.
     auto renderer = make_renderer(petra(), 480, 360);
     std::mt19937 random(5);
-    renderer->set_primaries(grid::select_primaries(petra(), *petra().property("PORO"), "PORO",
+    renderer->select(grid::select_primaries(petra(), *petra().property("PORO"), "PORO",
                                                    grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01)));
     double raycast_sum = 0, threshold_sum = 0;
     for (int trial = 0; trial < 6; ++trial) {
@@ -76,10 +77,10 @@ TEST(CutawayBorders, RaycastLinesAreSteadierThanThresholdLines) {
         pipeline::FrameSettings settings = invariant_settings(random);
         settings.border = pipeline::BorderMode::raycast;
         renderer->render(settings, camera);
-        const metrics::LineWidth raycast = metrics::line_width(ids_of(renderer->read_ids()), pipeline::flag_border);
+        const metrics::LineWidth raycast = metrics::line_width(ids_of(pipeline::RendererProbe(*renderer).read_ids()), pipeline::flag_border);
         settings.border = pipeline::BorderMode::threshold;
         renderer->render(settings, camera);
-        const metrics::LineWidth threshold = metrics::line_width(ids_of(renderer->read_ids()), pipeline::flag_border);
+        const metrics::LineWidth threshold = metrics::line_width(ids_of(pipeline::RendererProbe(*renderer).read_ids()), pipeline::flag_border);
         std::cout << "camera " << trial << ": raycast width " << raycast.mean << " +- " << raycast.stddev
                   << " px, threshold " << threshold.mean << " +- " << threshold.stddev << " px\n";
         raycast_sum += raycast.stddev;
@@ -92,40 +93,40 @@ TEST(CutawayBorders, RaycastLinesAreSteadierThanThresholdLines) {
 
 TEST(CutawayFreezeView, CutTextureUnchangedWhileTheModelCameraRotates) {
     auto renderer = make_renderer(petra(), width, height);
-    renderer->set_primaries(grid::select_primaries(petra(), *petra().property("PORO"), "PORO",
+    renderer->select(grid::select_primaries(petra(), *petra().property("PORO"), "PORO",
                                                    grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.02)));
     pipeline::FrameSettings settings;
     settings.ssao = false;
     const Camera frozen = make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height);
     renderer->freeze(frozen);
     renderer->render(settings, frozen);
-    const std::vector<float> cut_at_freeze = renderer->read_cut_depth().values;
-    const std::vector<std::uint32_t> ids_at_freeze = renderer->read_ids().cell;
+    const std::vector<float> cut_at_freeze = pipeline::RendererProbe(*renderer).read_cut_depth().values;
+    const std::vector<std::uint32_t> ids_at_freeze = pipeline::RendererProbe(*renderer).read_ids().cell;
     std::size_t cut_pixels = 0;
     for (float depth : cut_at_freeze) cut_pixels += depth > 0 ? 1 : 0;
     ASSERT_GT(cut_pixels, 0u);
     for (float azimuth : {45.0f, 60.0f, 80.0f}) {
         const Camera moved = make_orbit_camera(renderer->frame(), {azimuth, 35, 0, glm::vec3(0)}, width, height);
         renderer->render(settings, moved);
-        EXPECT_EQ(renderer->read_cut_depth().values, cut_at_freeze) << "azimuth " << azimuth;
-        EXPECT_NE(renderer->read_ids().cell, ids_at_freeze) << "the model camera should have moved";
+        EXPECT_EQ(pipeline::RendererProbe(*renderer).read_cut_depth().values, cut_at_freeze) << "azimuth " << azimuth;
+        EXPECT_NE(pipeline::RendererProbe(*renderer).read_ids().cell, ids_at_freeze) << "the model camera should have moved";
     }
-    renderer->unfreeze();
+    renderer->freeze(std::nullopt);
     renderer->render(settings, make_orbit_camera(renderer->frame(), {80, 35, 0, glm::vec3(0)}, width, height));
-    EXPECT_NE(renderer->read_cut_depth().values, cut_at_freeze) << "unfrozen, the cut follows the camera";
+    EXPECT_NE(pipeline::RendererProbe(*renderer).read_cut_depth().values, cut_at_freeze) << "unfrozen, the cut follows the camera";
 }
 
 TEST(CutawayFrame, EmptyPrimarySetRendersTheContext) {
     auto renderer = make_renderer(reek(), width, height);
-    renderer->set_primaries(std::vector<std::uint8_t>(reek().cell_count(), 0));
+    renderer->select(std::vector<std::uint8_t>(reek().cell_count(), 0));
     pipeline::FrameSettings settings;
     settings.ssao = false;
     renderer->render(settings, make_orbit_camera(renderer->frame(), {}, width, height));
-    const pipeline::IdImage ids = renderer->read_ids();
+    const pipeline::IdImage ids = pipeline::RendererProbe(*renderer).read_ids();
     std::size_t covered = 0;
     for (std::uint32_t cell : ids.cell) covered += cell != 0 ? 1 : 0;
     EXPECT_GT(covered, std::size_t(width * height / 10)) << "the uncut model should cover the frame";
-    EXPECT_EQ(renderer->primary_cell_count(), 0u);
+    EXPECT_EQ(renderer->status().primary_cells, 0u);
 }
 
 TEST(CutawayFrame, ImageAboveTheGlLimitIsRefused) {

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <random>
 
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 
 namespace cutaway::test {
@@ -31,7 +32,7 @@ Shaded render(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings setti
               const pipeline::Camera& camera) {
     settings.stage2_passes = passes;
     renderer.render(settings, camera);
-    return {renderer.read_image(), renderer.read_ids()};
+    return {renderer.read_image(), pipeline::RendererProbe(renderer).read_ids()};
 }
 
 void check_deferred(const grid::CornerPointGrid& grid, unsigned seed) {
@@ -40,7 +41,7 @@ void check_deferred(const grid::CornerPointGrid& grid, unsigned seed) {
     std::size_t pixels = 0, colour_off = 0, flags_off = 0, cells_off = 0;
     for (int trial = 0; trial < 8; ++trial) {
         SCOPED_TRACE("trial " + std::to_string(trial));
-        renderer->set_primaries(random_primaries(grid, random));
+        renderer->select(random_primaries(grid, random));
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
         pipeline::FrameSettings settings = invariant_settings(random);
         settings.border = trial % 2 ? pipeline::BorderMode::threshold : pipeline::BorderMode::raycast;
@@ -50,7 +51,7 @@ void check_deferred(const grid::CornerPointGrid& grid, unsigned seed) {
                                                  : camera;
         const Shaded forward = render(*renderer, settings, pipeline::Stage2Passes::one, view);
         const Shaded deferred = render(*renderer, settings, pipeline::Stage2Passes::deferred, view);
-        renderer->unfreeze();
+        renderer->freeze(std::nullopt);
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
                 const std::size_t p = std::size_t(y) * width + std::size_t(x);

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "annotation/colour_bar_layout.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "metrics/median.h"
 
@@ -39,7 +40,7 @@ const pipeline::OrbitPose poses[] = {
 void check_framing(const grid::CornerPointGrid& grid, const char* name, int width, int height) {
     auto renderer = make_renderer(grid, width, height);
     const std::vector<float>& poro = *grid.property("PORO");
-    renderer->select_range(grid::range_for_fraction(grid, poro, "PORO", 0.01));
+    renderer->select({grid::range_for_fraction(grid, poro, "PORO", 0.01)});
     pipeline::FrameSettings settings;
     settings.ssao = false;  // speed; framing does not depend on it
     const grid::PrimaryRange range = grid::active_value_range(grid, poro, "PORO");
@@ -47,7 +48,7 @@ void check_framing(const grid::CornerPointGrid& grid, const char* name, int widt
     const annotation::PixelRect bounds = bar.bounds();
     for (const pipeline::OrbitPose& pose : poses) {
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), pose, width, height,
-                                                                    renderer->colour_bar_reserved_width(settings));
+                                                                    renderer->status(settings).colour_bar_reserved_width);
         settings.cut_enabled = false;  // the whole model's extent
         renderer->render(settings, camera);
         const PixelBox box = model_pixels(renderer->read_eclipse_ids(), width, height);
@@ -97,7 +98,7 @@ TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
     constexpr int width = 640, height = 480;
     auto renderer = make_renderer(petra(), width, height);
     const std::vector<float>& poro = *petra().property("PORO");
-    renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
+    renderer->select(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
     pipeline::FrameSettings settings;
     settings.ssao = false;
     settings.colour_bar = false;
@@ -107,7 +108,7 @@ TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
     settings.silhouette = true;
     renderer->render(settings, camera);
     const gl::RgbaImage outlined = renderer->read_image();
-    const pipeline::IdImage ids = renderer->read_ids();
+    const pipeline::IdImage ids = pipeline::RendererProbe(*renderer).read_ids();
 
     // Mean colours of the silhouette (pixels the silhouette changed) and of the shell-cut lines.
     glm::dvec3 silhouette(0), shell(0);
@@ -162,14 +163,14 @@ TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
     constexpr int width = 800, height = 450;
     auto renderer = make_renderer(petra(), width, height);
     const std::vector<float>& poro = *petra().property("PORO");
-    renderer->select_range(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
+    renderer->select(grid::range_for_fraction(petra(), poro, "PORO", 0.01));
     const grid::PrimaryRange range = grid::active_value_range(petra(), poro, "PORO");
     pipeline::FrameSettings settings;  // the figures' defaults (SSAO on)
     const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height,
-                                                                renderer->colour_bar_reserved_width(settings));
+                                                                renderer->status(settings).colour_bar_reserved_width);
     renderer->render(settings, camera);
     const gl::RgbaImage image = renderer->read_image();
-    const pipeline::IdImage ids = renderer->read_ids();
+    const pipeline::IdImage ids = pipeline::RendererProbe(*renderer).read_ids();
     const std::vector<std::uint32_t> cells = renderer->read_eclipse_ids();
     std::vector<double> distances, brightness;
     for (std::size_t i = 0; i < cells.size(); ++i) {

@@ -10,6 +10,7 @@
 #include "cutaway/cut_surface/cell_boxes.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_depth_image.h"
+#include "cutaway/renderer_readback.h"
 #include "gl/uniforms.h"
 #include "gl_test_support.h"
 
@@ -26,15 +27,15 @@ TEST(FrustumSweep, EqualsTheRasterisedUnionOfEqualSlopeFrustumsWithinAPixelStep)
     std::mt19937 random(17);
     for (int trial = 0; trial < 4; ++trial) {
         SCOPED_TRACE("trial " + std::to_string(trial));
-        renderer->set_primaries(random_primaries(petra(), random));
+        renderer->select(random_primaries(petra(), random));
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
         pipeline::FrameSettings settings = invariant_settings(random);
         settings.aperture_h_deg = std::max(settings.aperture_h_deg, 10.0f);  // a slope below 1e4 per pixel
         settings.strategy = "frustum-sweep";
         renderer->render(settings, camera);
-        const cone_field::FloatImage sweep = renderer->read_strategy_cut(camera);
+        const cone_field::FloatImage sweep = pipeline::RendererProbe(*renderer).read_strategy_cut(camera);
 
-        const pipeline::CutSurfaceInputs inputs = renderer->cut_inputs(settings, camera);
+        const pipeline::CutSurfaceInputs inputs = pipeline::RendererProbe(*renderer).cut_inputs(settings, camera);
         const double m = pipeline::cut_cone_slope(inputs);  // depth units per pixel
         gl::set_uniform(raster, "wall_u_per_depth", float(1.0 / (m * camera.focal_px())));
         targets.clear();

@@ -20,6 +20,7 @@
 #include <numbers>
 
 #include "cutaway/cone_field/cone_image.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "grid/box_grid.h"
 #include "grid/cell_geometry.h"
@@ -135,7 +136,7 @@ TEST_P(FrustumWalls, DrawnCutDepthEqualsTheClosedFormWallWithinAPixel) {
     auto renderer = make_renderer(box_model(), width, height);
     std::vector<std::uint8_t> flags(std::size_t(6 * 6 * 3), 0);
     flags[std::size_t(primary_i + 6 * (primary_j + 6 * primary_k))] = 1;
-    renderer->set_primaries(flags);
+    renderer->select(flags);
     const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {0, 35, 0, glm::vec3(0)}, width, height);
     pipeline::FrameSettings settings;
     settings.strategy = "frustum";
@@ -145,7 +146,7 @@ TEST_P(FrustumWalls, DrawnCutDepthEqualsTheClosedFormWallWithinAPixel) {
     settings.ssao = false;
     settings.colour_bar = false;
     renderer->render(settings, camera);
-    const cone_field::FloatImage cut = renderer->read_strategy_cut(camera);
+    const cone_field::FloatImage cut = pipeline::RendererProbe(*renderer).read_strategy_cut(camera);
     const Frustum f = expected_frustum(*renderer, camera, settings);
     ASSERT_GT(f.back - f.rim, 0.1 * f.back) << "walls too short to test";
 

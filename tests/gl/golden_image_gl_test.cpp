@@ -39,9 +39,9 @@ void check_golden(const GoldenCase& golden) {
     const grid::CornerPointGrid& grid = golden.reek ? reek() : petra();
     auto renderer = make_renderer(grid, 320, 240);
     const std::vector<float>& poro = *grid.property("PORO");
-    renderer->set_primaries(grid::select_primaries(grid, poro, "PORO", grid::range_for_fraction(grid, poro, "PORO", 0.01)));
+    renderer->select(grid::select_primaries(grid, poro, "PORO", grid::range_for_fraction(grid, poro, "PORO", 0.01)));
     renderer->render(golden.settings, pipeline::make_orbit_camera(renderer->frame(), golden.pose, 320, 240,
-                                                                  renderer->colour_bar_reserved_width(golden.settings)));
+                                                                  renderer->status(golden.settings).colour_bar_reserved_width));
     const gl::RgbaImage image = renderer->read_image();
     const std::filesystem::path path = golden_path(golden.name);
     if (const char* update = std::getenv("CUTAWAY_UPDATE_GOLDEN"); update && std::string(update) == "1") {

@@ -17,6 +17,7 @@
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cut_surface/gpu_cone_transform.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "metrics/cut_error.h"
 
@@ -55,14 +56,14 @@ TEST(GpuConeField, EveryGpuTransformEqualsItsCpuReference) {
         std::mt19937 random(7);
         for (int trial = 0; trial < 3; ++trial) {
             SCOPED_TRACE("trial " + std::to_string(trial));
-            renderer->set_primaries(random_primaries(petra(), random));
+            renderer->select(random_primaries(petra(), random));
             const Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
             pipeline::FrameSettings settings = invariant_settings(random);
             settings.strategy = entry.name;
             settings.seeds = trial == 2 ? pipeline::SeedSource::geometry : pipeline::SeedSource::boxes;
             renderer->render(settings, camera);
-            const cone_field::FloatImage gpu = renderer->read_strategy_cut(camera);
-            const cone_field::FloatImage cpu = renderer->cpu_cone_cut(settings, camera, entry.cpu_reference);
+            const cone_field::FloatImage gpu = pipeline::RendererProbe(*renderer).read_strategy_cut(camera);
+            const cone_field::FloatImage cpu = pipeline::RendererProbe(*renderer).cpu_cone_cut(settings, camera, entry.cpu_reference);
             ASSERT_TRUE(std::any_of(cpu.pixels.begin(), cpu.pixels.end(), [](float d) { return d > 0; })) << "vacuous: nothing cut";
             const double span = camera.far_plane - camera.near_plane;
             // Same algorithm, float on the GPU (stored units t in [0, 1] of the depth range) against
@@ -87,7 +88,7 @@ TEST(GpuConeField, EveryGpuTransformEqualsItsCpuReference) {
 TEST(GpuConeField, GpuStrategiesReadNothingBack) {
     auto renderer = make_renderer(petra(), width, height);
     std::mt19937 random(3);
-    renderer->set_primaries(random_primaries(petra(), random));
+    renderer->select(random_primaries(petra(), random));
     const Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
     pipeline::FrameSettings settings = invariant_settings(random);
     for (const pipeline::CutSurfaceEntry& entry : pipeline::cut_surface_strategies()) {
@@ -95,7 +96,7 @@ TEST(GpuConeField, GpuStrategiesReadNothingBack) {
         settings.strategy = entry.name;
         renderer->render(settings, camera);
         // A CPU strategy reads the seed image back: one float per pixel.
-        EXPECT_EQ(renderer->cut_readback_bytes(), entry.device == "gpu" ? 0u : std::size_t(width) * height * sizeof(float));
+        EXPECT_EQ(renderer->status().cut_readback_bytes, entry.device == "gpu" ? 0u : std::size_t(width) * height * sizeof(float));
     }
 }
 
@@ -105,13 +106,13 @@ TEST(GpuConeField, ConeSlopeFallsAsTheApertureOpens) {
     // just above pi/2, where tan is negative, and made 180 the steepest.
     auto renderer = make_renderer(petra(), width, height);
     std::mt19937 random(11);
-    renderer->set_primaries(random_primaries(petra(), random));
+    renderer->select(random_primaries(petra(), random));
     const Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
     pipeline::FrameSettings settings;
     double previous = std::numeric_limits<double>::infinity();
     for (const float aperture : {0.0f, 10.0f, 60.0f, 120.0f, 179.0f, 180.0f}) {
         settings.aperture_h_deg = aperture;
-        const double slope = pipeline::cut_cone_slope(renderer->cut_inputs(settings, camera));
+        const double slope = pipeline::cut_cone_slope(pipeline::RendererProbe(*renderer).cut_inputs(settings, camera));
         EXPECT_LT(slope, previous) << "aperture " << aperture;
         previous = slope;
     }

@@ -11,6 +11,7 @@
 
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/post/mean_filter.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "metrics/image_metrics.h"
 
@@ -32,7 +33,7 @@ Frame render(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings settin
     settings.mean_filter = mean_filter;
     settings.mean_filter_kernel = kernel_kind;
     renderer.render(settings, camera);
-    return {renderer.read_cut_depth().values, renderer.read_ids()};
+    return {pipeline::RendererProbe(renderer).read_cut_depth().values, pipeline::RendererProbe(renderer).read_ids()};
 }
 
 /// The k x k mean with edges clamped, every `stride`-th texel along each axis from -k/2 (double).
@@ -98,7 +99,7 @@ TEST(MeanFilter, EqualsTheBoxMeanFourPixelsAtATime) { check_box_mean(96); }
 
 TEST(MeanFilterKernel, DistanceScaledIsTheFullKernelNearAndSharperOnFarWalls) {
     auto renderer = make_renderer(petra(), width, height);
-    renderer->select_range(grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01));
+    renderer->select(grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01));
     for (const float azimuth : {125.0f, 215.0f}) {
         SCOPED_TRACE("azimuth " + std::to_string(azimuth));
         const pipeline::Camera camera =
@@ -107,7 +108,7 @@ TEST(MeanFilterKernel, DistanceScaledIsTheFullKernelNearAndSharperOnFarWalls) {
         settings.ssao = false;  // speed; the cut does not depend on it
         const Frame raw = render(*renderer, settings, camera, 0, pipeline::MeanFilterKernel::full);
         // The strategy's cut before the resolve's rear-shell clamp: what sets the shader's radius.
-        const cone_field::FloatImage strategy = renderer->read_strategy_cut(camera);  // rows top to bottom
+        const cone_field::FloatImage strategy = pipeline::RendererProbe(*renderer).read_strategy_cut(camera);  // rows top to bottom
         const Frame full = render(*renderer, settings, camera, kernel, pipeline::MeanFilterKernel::full);
         const Frame scaled = render(*renderer, settings, camera, kernel, pipeline::MeanFilterKernel::distance_scaled);
         settings.only = pipeline::OnlyLayer::primaries;

@@ -16,6 +16,7 @@
 #include <iostream>
 #include <random>
 
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 
 namespace cutaway::test {
@@ -34,7 +35,7 @@ void check_plain_frame(const grid::CornerPointGrid& grid, unsigned seed) {
     std::vector<float> values(grid.cell_count());
     for (std::size_t c = 0; c < values.size(); ++c) values[c] = float(c % 97);
     renderer.set_colouring(values, {"cell mod 97", 0, 96, ""});
-    renderer.set_primaries(std::vector<std::uint8_t>(grid.cell_count(), 0));  // nothing cut
+    renderer.select(std::vector<std::uint8_t>(grid.cell_count(), 0));  // nothing cut
     std::mt19937 random(seed);
     std::size_t pixels = 0, model_pixels = 0, differing = 0, own_back_faces = 0, unexplained = 0;
     for (int trial = 0; trial < 8; ++trial) {
@@ -48,12 +49,12 @@ void check_plain_frame(const grid::CornerPointGrid& grid, unsigned seed) {
         settings.mean_filter = 0;
         renderer.render(settings, camera);
         const std::vector<std::uint32_t> reference = renderer.read_eclipse_ids();
-        const std::vector<std::uint32_t> reference_flags = renderer.read_ids().flags;
-        const std::vector<float> reference_depth = renderer.read_window_depth();
+        const std::vector<std::uint32_t> reference_flags = pipeline::RendererProbe(renderer).read_ids().flags;
+        const std::vector<float> reference_depth = pipeline::RendererProbe(renderer).read_window_depth();
         for (DrawMode draw : {DrawMode::visible, DrawMode::all_faces}) {
             renderer.render_baseline(camera, draw);
             const std::vector<std::uint32_t> plain = renderer.read_eclipse_ids();
-            const std::vector<float> plain_depth = renderer.read_window_depth();
+            const std::vector<float> plain_depth = pipeline::RendererProbe(renderer).read_window_depth();
             for (std::size_t p = 0; p < plain.size(); ++p) {
                 ++pixels;
                 model_pixels += reference[p] != 0;

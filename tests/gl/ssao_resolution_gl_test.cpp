@@ -21,7 +21,7 @@ constexpr int width = 321, height = 241;
 gl::RgbaImage render_petra(bool ssao, bool half_resolution, const pipeline::OrbitPose& pose) {
     auto renderer = make_renderer(petra(), width, height);
     const std::vector<float>& poro = *petra().property("PORO");
-    renderer->set_primaries(grid::select_primaries(petra(), poro, "PORO", grid::range_for_fraction(petra(), poro, "PORO", 0.01)));
+    renderer->select(grid::select_primaries(petra(), poro, "PORO", grid::range_for_fraction(petra(), poro, "PORO", 0.01)));
     pipeline::FrameSettings settings;  // the paper's set-up: 9x9 mean filter, ray-cast borders
     settings.colour_bar = false;
     settings.ssao = ssao;

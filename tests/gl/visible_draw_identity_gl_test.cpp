@@ -18,6 +18,7 @@
 
 #include "cutaway/frame_metrics.h"
 #include "cutaway/grid_layout.h"
+#include "cutaway/renderer_readback.h"
 #include "cutaway/visibility/cell_bricks.h"
 #include "grid/cell_geometry.h"
 #include "grid/face_classification.h"
@@ -51,7 +52,7 @@ Frame render(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings settin
              const pipeline::Camera& camera) {
     settings.draw = draw;
     renderer.render(settings, camera);
-    return {renderer.read_eclipse_ids(), renderer.read_scene_depth().values};
+    return {renderer.read_eclipse_ids(), pipeline::RendererProbe(renderer).read_scene_depth().values};
 }
 
 /// Random primaries: a random 0.5-5% of active cells, in clumps of the cells near a few seeds
@@ -85,7 +86,7 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
     std::size_t pixels = 0, differing = 0, order_ties = 0, unexplained = 0;
     for (int trial = 0; trial < 25; ++trial) {
         SCOPED_TRACE("trial " + std::to_string(trial));
-        renderer->set_primaries(random_cells(grid, random));
+        renderer->select(random_cells(grid, random));
         pipeline::OrbitPose pose = random_pose(random);
         // A third of the cameras come close (part of the model outside the frustum).
         if (trial % 3 == 2) pose.distance = renderer->frame().radius() * (1.2f + 1.5f * unit(random));
@@ -120,10 +121,10 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
         if (settings.mean_filter == 0) {
             settings.only = pipeline::OnlyLayer::primaries;
             renderer->render(settings, camera);
-            const pipeline::IdImage primaries = renderer->read_ids();
+            const pipeline::IdImage primaries = pipeline::RendererProbe(*renderer).read_ids();
             settings.only = pipeline::OnlyLayer::both;
             renderer->render(settings, camera);
-            const pipeline::IdImage cutaway = renderer->read_ids();
+            const pipeline::IdImage cutaway = pipeline::RendererProbe(*renderer).read_ids();
             const metrics::Exposure exposure = metrics::primary_exposure({primaries.width, primaries.height, primaries.cell, primaries.flags},
                                                                          {cutaway.width, cutaway.height, cutaway.cell, cutaway.flags});
             EXPECT_EQ(exposure.fraction, 1.0);
@@ -156,11 +157,11 @@ struct VisibleFrame {
 VisibleFrame draw_visible(const grid::CornerPointGrid& grid, unsigned seed, const pipeline::OrbitPose& pose) {
     VisibleFrame frame{renderer_for(grid), {}, {}, {}};
     std::mt19937 random(seed);
-    frame.renderer->set_primaries(random_cells(grid, random));
+    frame.renderer->select(random_cells(grid, random));
     frame.settings.draw = DrawMode::visible;
     frame.camera = pipeline::make_orbit_camera(frame.renderer->frame(), pose, width, height);
     frame.renderer->render(frame.settings, frame.camera);
-    frame.records = frame.renderer->read_visible_faces();
+    frame.records = pipeline::RendererProbe(*frame.renderer).read_visible_faces();
     return frame;
 }
 
@@ -251,19 +252,19 @@ TEST(VisibleFaceBuffer, AFrameThatOverflowsGrowsTheBufferAndIsDrawnAgainUnchange
     const VisibleFrame frame = draw_visible(grid, 5, {120, 40, 0});
     pipeline::CutawayRenderer* renderer = frame.renderer.get();
     const auto& [settings, camera, records] = std::tie(frame.settings, frame.camera, frame.records);
-    ASSERT_EQ(renderer->frames_redrawn(), 0u) << "petra's faces all fit the initial buffer (2M faces)";
+    ASSERT_EQ(renderer->status().frames_redrawn, 0u) << "petra's faces all fit the initial buffer (2M faces)";
     const std::vector<std::uint32_t> cells = renderer->read_eclipse_ids();
     ASSERT_GT(records.size(), 1000u);
 
-    renderer->set_face_buffer_capacity(100);
+    pipeline::RendererProbe(*renderer).set_face_buffer_capacity(100);
     renderer->render(settings, camera);
-    EXPECT_EQ(renderer->frames_redrawn(), 1u) << "100 records cannot hold the frame: it is drawn again once";
-    EXPECT_GE(renderer->face_buffer_capacity(), records.size());
+    EXPECT_EQ(renderer->status().frames_redrawn, 1u) << "100 records cannot hold the frame: it is drawn again once";
+    EXPECT_GE(pipeline::RendererProbe(*renderer).face_buffer_capacity(), records.size());
     EXPECT_EQ(renderer->faces_drawn().culling->faces_requested, records.size());
-    EXPECT_EQ(renderer->read_visible_faces(), records);
+    EXPECT_EQ(pipeline::RendererProbe(*renderer).read_visible_faces(), records);
     EXPECT_EQ(renderer->read_eclipse_ids(), cells);
     renderer->render(settings, camera);
-    EXPECT_EQ(renderer->frames_redrawn(), 1u) << "the grown buffer holds the same frame";
+    EXPECT_EQ(renderer->status().frames_redrawn, 1u) << "the grown buffer holds the same frame";
 }
 
 TEST(VisibleDrawIdentity, Zaphirus) { check_identity(generated("zaphirus"), 1); }

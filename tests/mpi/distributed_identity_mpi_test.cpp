@@ -22,6 +22,7 @@
 
 #include "annotation/property_units.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
+#include "cutaway/renderer_readback.h"
 #include "distributed/rank_blocks.h"
 #include "distributed/rank_renderer.h"
 #include "generators/generator.h"
@@ -46,7 +47,7 @@ struct Frame {
 
 Frame single_frame(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings, const pipeline::Camera& camera) {
     renderer.render(settings, camera);
-    return {renderer.read_eclipse_ids(), renderer.read_scene_depth().values, renderer.read_image()};
+    return {renderer.read_eclipse_ids(), pipeline::RendererProbe(renderer).read_scene_depth().values, renderer.read_image()};
 }
 
 struct Tally {
@@ -117,8 +118,8 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
         rank.set_primaries(flags);
         rank.render(settings, camera);
         if (!session.root()) continue;
-        const Frame distributed{rank.composited_ids(), rank.renderer().read_scene_depth().values, rank.renderer().read_image()};
-        single->set_primaries(flags);
+        const Frame distributed{rank.composited_ids(), pipeline::RendererProbe(rank.renderer()).read_scene_depth().values, rank.renderer().read_image()};
+        single->select(flags);
         const Frame first = single_frame(*single, settings, camera);
         pipeline::FrameSettings last_wins = settings;
         last_wins.depth_ties_to_last = true;
@@ -189,11 +190,11 @@ TEST(DistributedAuto, PicksByThePrimariesOfAllRanks) {
     std::mt19937 random(31);
     rank.render(settings, pipeline::make_orbit_camera(frame, random_pose(random), width, height));
 
-    const std::uint64_t own = rank.renderer().primary_cell_count();
-    const std::uint64_t sweep_from = rank.renderer().auto_sweep_from();
+    const std::uint64_t own = rank.renderer().status().primary_cells;
+    const std::uint64_t sweep_from = rank.renderer().status().auto_sweep_from;
     ASSERT_GE(session.sum(own), sweep_from);
     ASSERT_GE(session.sum(own < sweep_from ? 1u : 0u), 1u) << "no rank would pick alone";
-    EXPECT_EQ(rank.renderer().cut_strategy(settings), "frustum-sweep") << "rank " << session.rank() << ", " << own
+    EXPECT_EQ(rank.renderer().status(settings).cut_strategy, "frustum-sweep") << "rank " << session.rank() << ", " << own
                                                                         << " primaries of its own";
 }
 
