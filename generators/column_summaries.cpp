@@ -1,5 +1,6 @@
 #include "column_summaries.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "grid/cell_geometry.h"
@@ -55,6 +56,12 @@ std::vector<ColumnSummary> active_columns(const grid::CornerPointGrid& grid) {
             column.footprint /= n;
             columns.push_back(std::move(column));
         }
+    std::vector<double> kh(std::size_t(d.nx) * std::size_t(d.ny), 0.0);  // per column, i fastest; 0 without active cells
+    for (const ColumnSummary& c : columns) kh[std::size_t(c.j) * std::size_t(d.nx) + std::size_t(c.i)] = c.kh;
+    for (ColumnSummary& c : columns)
+        for (int j = std::max(c.j - 1, 0); j <= std::min(c.j + 1, d.ny - 1); ++j)
+            for (int i = std::max(c.i - 1, 0); i <= std::min(c.i + 1, d.nx - 1); ++i)
+                c.neighbourhood_kh += kh[std::size_t(j) * std::size_t(d.nx) + std::size_t(i)];
     return columns;
 }
 

@@ -14,6 +14,9 @@ struct ColumnSummary {
     double y = 0;
     double top_depth = 0;     ///< centre depth of its shallowest active cell, metres (z down)
     double kh = 0;            ///< sum of PERMX * NTG * thickness over its active cells, mD m
+    /// kh summed over the column and its (up to 8) lateral neighbours, mD m: how much the
+    /// reservoir around a well in this column carries, beyond the column itself.
+    double neighbourhood_kh = 0;
     double footprint = 0;     ///< mean horizontal area of its active cells (volume / thickness), m2
     std::vector<int> layers;  ///< k of its active cells, ascending
 };

@@ -19,7 +19,7 @@ constexpr int relperm_rows = 11;                       ///< SWOF rows from Swi t
 
 constexpr double reference_pressure_bar = 200;
 constexpr double water_viscosity_cp = 0.5;
-constexpr double oil_viscosity_cp = 2.0;
+constexpr double oil_viscosity_cp = 1.0;    ///< a light oil: water-oil mobility ratio below 1, a sharp front
 constexpr double water_formation_factor = 1.01;   ///< Bw at the reference pressure, rm3/sm3
 constexpr double oil_formation_factor = 1.05;     ///< Bo at the reference pressure, rm3/sm3
 constexpr double water_compressibility = 4.5e-5;  ///< 1/bar

@@ -29,7 +29,7 @@ struct FlowSchedule {
 /// Report steps of every generated deck: restarts are written at each.
 constexpr int kDeckReportSteps = 30;
 /// Water injected by the end of the schedule, in pore volumes (reservoir conditions).
-constexpr double kInjectedPoreVolumes = 1.0;
+constexpr double kInjectedPoreVolumes = 0.8;
 /// Bar above the initial pressure an injector may reach; bar below it a producer holds.
 constexpr double kInjectorOverpressureBar = 150;
 constexpr double kProducerDrawdownBar = 50;

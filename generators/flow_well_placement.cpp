@@ -19,8 +19,9 @@ struct Direction {
     double slope = 0;
 };
 
-/// Least-squares plane top_depth = a + b x + c y over the columns; the direction of (b, c), or the
-/// longer axis of the columns' spread when the plane is flatter than kMinimumDip (or undefined).
+/// Least-squares plane top_depth = a + b x + c y over the columns; the direction of (b, c), or,
+/// where the plane is flatter than kMinimumDip, the longer axis of the columns' spread pointing
+/// the way the plane deepens along it.
 Direction down_dip_direction(const std::vector<ColumnSummary>& columns) {
     double mx = 0, my = 0, mz = 0;
     for (const ColumnSummary& c : columns) {
@@ -42,17 +43,19 @@ Direction down_dip_direction(const std::vector<ColumnSummary>& columns) {
         syz += y * z;
     }
     const double det = sxx * syy - sxy * sxy;
+    double b = 0, c = 0;  // the plane's slopes east and north; 0 when the columns fix no plane
     if (det > 1e-12 * (sxx * syy)) {
-        const double b = (syy * sxz - sxy * syz) / det;
-        const double c = (sxx * syz - sxy * sxz) / det;
-        const double slope = std::hypot(b, c);
-        if (slope >= kMinimumDip) return {b / slope, c / slope, slope};
+        b = (syy * sxz - sxy * syz) / det;
+        c = (sxx * syz - sxy * sxz) / det;
     }
-    return sxx >= syy ? Direction{1, 0, 0} : Direction{0, 1, 0};
+    const double slope = std::hypot(b, c);
+    if (slope >= kMinimumDip) return {b / slope, c / slope, slope};
+    if (sxx >= syy) return {b < 0 ? -1.0 : 1.0, 0, std::abs(b)};
+    return {0, c < 0 ? -1.0 : 1.0, std::abs(c)};
 }
 
 /// Up to `count` wells from `candidates`: the strike range split into equal stretches, in each
-/// the column of highest k h, taken from the stretch's middle (kStretchMiddle of it) unless that
+/// the column of highest k h around it (ColumnSummary::neighbourhood_kh), taken from the stretch's middle (kStretchMiddle of it) unless that
 /// has no candidate, so wells of neighbouring stretches stand apart.
 std::vector<DeckWell> pick_wells(const std::vector<const ColumnSummary*>& candidates, const Direction& d, int count,
                                  double strike_min, double strike_extent, const std::string& prefix) {
@@ -65,7 +68,7 @@ std::vector<DeckWell> pick_wells(const std::vector<const ColumnSummary*>& candid
         for (auto* best : {&best_any, middle ? &best_middle : nullptr}) {
             if (!best) continue;
             const ColumnSummary*& chosen = (*best)[std::size_t(stretch)];
-            if (!chosen || c->kh > chosen->kh) chosen = c;
+            if (!chosen || c->neighbourhood_kh > chosen->neighbourhood_kh) chosen = c;
         }
     }
     std::vector<DeckWell> wells;

@@ -1,8 +1,8 @@
 #pragma once
 // Where the generated deck's wells go, from the model's geology: a plane fitted to the top of the
 // active columns gives the dip; water injectors stand on the down-dip flank and producers on the
-// up-dip flank, each in the column of highest k h within its stretch of the flank, completed in
-// every active layer of that column.
+// up-dip flank, each in the column of highest k h (with its neighbours) within its stretch of the
+// flank, completed in every active layer of that column.
 #include <string>
 #include <vector>
 
@@ -20,11 +20,11 @@ struct WellPlacement {
     std::vector<DeckWell> injectors;  ///< on the down-dip flank
     std::vector<DeckWell> producers;  ///< on the up-dip flank
     /// Horizontal unit vector (x, y) from the producers' flank to the injectors' flank: the
-    /// direction in which the fitted top deepens, or the field's longer axis where it is flatter
-    /// than `kMinimumDip`.
+    /// direction in which the fitted top deepens, or the field's longer axis (towards its deeper
+    /// end) where the top is flatter than `kMinimumDip`.
     double down_dip_x = 1;
     double down_dip_y = 0;
-    double dip = 0;           ///< slope of the fitted top, metres of depth per metre along down_dip
+    double dip = 0;           ///< slope of the fitted top along down_dip, metres of depth per metre
     double flank_distance = 0;  ///< metres along down_dip between the two flanks' wells (mean)
     double strike_extent = 0;   ///< metres across the field, perpendicular to down_dip
 };
