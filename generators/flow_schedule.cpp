@@ -18,13 +18,18 @@ namespace fluids = flow_fluids;
 constexpr double kDarcyMetric = 0.008527;
 constexpr double kAtmosphereBar = 1.01325;
 
-/// Peaceman's well index times mobility: m3/day per bar of drawdown for a well over k h (mD m)
-/// in cells of horizontal area `footprint` (m2), equivalent radius 0.198 of the cell size.
-double well_productivity(double kh, double footprint, double mobility) {
+/// Radial inflow to a well over k h (mD m) times mobility: m3/day per bar between the well and
+/// the radius `drainage_radius` (metres) where the flow around it turns linear, half the spacing
+/// of the wells along their flank. Peaceman's equivalent radius 0.198 of the cell size (cells of
+/// horizontal area `footprint`, m2) is the least: inside it the grid itself resolves nothing.
+double well_productivity(double kh, double footprint, double drainage_radius, double mobility) {
     const double r0 = 0.198 * std::sqrt(footprint);
     const double rw = 0.5 * fluids::wellbore_diameter_m;
-    return kDarcyMetric * 2 * std::numbers::pi * kh * mobility / std::log(std::max(r0 / rw, 2.0));
+    return kDarcyMetric * 2 * std::numbers::pi * kh * mobility / std::log(std::max(drainage_radius, r0) / rw);
 }
+
+/// Half the spacing of `count` wells along `strike_extent` metres of flank.
+double drainage_radius(double strike_extent, std::size_t count) { return 0.5 * strike_extent / double(count); }
 
 struct Volumes {
     double pore_volume = 0;
@@ -73,22 +78,19 @@ FlowSchedule plan_flow_schedule(const grid::CornerPointGrid& grid, const WellPla
     const double water_mobility = fluids::water_relperm_at_residual_oil / fluids::water_viscosity_cp;
     const double oil_mobility = fluids::oil_relperm_at_connate_water / fluids::oil_viscosity_cp;
     std::vector<double> injectivity;
-    double total_injectivity = 0, total_productivity = 0, footprint = 0;
+    double total_injectivity = 0, total_productivity = 0;
+    const double injector_radius = drainage_radius(wells.strike_extent, wells.injectors.size());
+    const double producer_radius = drainage_radius(wells.strike_extent, wells.producers.size());
     for (const DeckWell& w : wells.injectors) {
-        injectivity.push_back(well_productivity(w.column.kh, w.column.footprint, water_mobility));
+        injectivity.push_back(well_productivity(w.column.kh, w.column.footprint, injector_radius, water_mobility));
         total_injectivity += injectivity.back();
-        footprint += w.column.footprint;
     }
-    double kh = 0;
-    for (const DeckWell& w : wells.producers) {
-        total_productivity += well_productivity(w.column.kh, w.column.footprint, oil_mobility);
-        kh += w.column.kh;
-    }
-    for (const DeckWell& w : wells.injectors) kh += w.column.kh;
-    kh /= double(wells.injectors.size() + wells.producers.size());
-    // Linear flow of oil between the flanks through a section of the wells' mean k h across the strike.
-    const double section = kh * std::max(wells.strike_extent, std::sqrt(footprint / double(wells.injectors.size())));
-    const double field_resistance = wells.flank_distance / (kDarcyMetric * section * oil_mobility);
+    for (const DeckWell& w : wells.producers)
+        total_productivity += well_productivity(w.column.kh, w.column.footprint, producer_radius, oil_mobility);
+    // Linear flow of oil between the flanks through the field's mean k h across the strike (at
+    // least one cell wide).
+    const double width = std::max(wells.strike_extent, std::sqrt(wells.injectors.front().column.footprint));
+    const double field_resistance = wells.flank_distance / (kDarcyMetric * wells.mean_column_kh * width * oil_mobility);
     const double resistance = 1 / total_injectivity + 1 / total_productivity + field_resistance;  // bar per m3/day
     s.estimated_capacity_m3_day = (kInjectorOverpressureBar + kProducerDrawdownBar) / resistance;
 

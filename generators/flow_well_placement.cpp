@@ -55,8 +55,9 @@ Direction down_dip_direction(const std::vector<ColumnSummary>& columns) {
 }
 
 /// Up to `count` wells from `candidates`: the strike range split into equal stretches, in each
-/// the column of highest k h around it (ColumnSummary::neighbourhood_kh), taken from the stretch's middle (kStretchMiddle of it) unless that
-/// has no candidate, so wells of neighbouring stretches stand apart.
+/// the column of highest k h around it (ColumnSummary::neighbourhood_kh), taken from the
+/// stretch's middle (kStretchMiddle of it) unless that has no candidate, so wells of
+/// neighbouring stretches stand apart.
 std::vector<DeckWell> pick_wells(const std::vector<const ColumnSummary*>& candidates, const Direction& d, int count,
                                  double strike_min, double strike_extent, const std::string& prefix) {
     std::vector<const ColumnSummary*> best_middle(std::size_t(count), nullptr), best_any(std::size_t(count), nullptr);
@@ -104,7 +105,7 @@ WellPlacement place_wells(const grid::CornerPointGrid& grid) {
                                     "producers, found " + std::to_string(columns.size()));
     const Direction d = down_dip_direction(columns);
     constexpr double inf = std::numeric_limits<double>::infinity();
-    double s_min = inf, s_max = -inf, t_min = inf, t_max = -inf, footprint = 0;
+    double s_min = inf, s_max = -inf, t_min = inf, t_max = -inf, footprint = 0, kh = 0;
     for (const ColumnSummary& c : columns) {
         const double s = c.x * d.x + c.y * d.y, t = -c.x * d.y + c.y * d.x;
         s_min = std::min(s_min, s);
@@ -112,6 +113,7 @@ WellPlacement place_wells(const grid::CornerPointGrid& grid) {
         t_min = std::min(t_min, t);
         t_max = std::max(t_max, t);
         footprint += c.footprint;
+        kh += c.kh;
     }
     const double cell_size = std::sqrt(footprint / double(columns.size()));
     if (!(s_max - s_min > 0.5 * cell_size))
@@ -135,6 +137,7 @@ WellPlacement place_wells(const grid::CornerPointGrid& grid) {
     placement.down_dip_y = d.y;
     placement.dip = d.slope;
     placement.strike_extent = strike_extent;
+    placement.mean_column_kh = kh / double(columns.size());
     placement.injectors = pick_wells(down_dip, d, wells_per_flank, t_min, strike_extent, "INJ");
     placement.producers = pick_wells(up_dip, d, wells_per_flank, t_min, strike_extent, "PROD");
     if (placement.producers.empty())

@@ -16,7 +16,7 @@ struct GrdeclWriteOptions {
     std::vector<std::string> header_comments;
     /// Properties written (static and dynamic), when set; the rest are left out (a simulator deck
     /// takes only the keywords it knows). Unset: every property.
-    std::optional<std::vector<std::string>> only_properties;
+    std::optional<std::vector<std::string>> only_properties = std::nullopt;
 };
 
 void write_grdecl(std::ostream& out, const CornerPointGrid& grid, const GrdeclWriteOptions& options = {});
