@@ -138,8 +138,8 @@ std::vector<std::string> describe(const FlowDeckPlan& plan) {
                     std::to_string(well.column.j) + ")";
         return text;
     };
-    lines.push_back("deck injectors = " + columns(w.injectors));
-    lines.push_back("deck producers = " + columns(w.producers));
+    lines.push_back("deck injectors (column i j, 0-based) = " + columns(w.injectors));
+    lines.push_back("deck producers (column i j, 0-based) = " + columns(w.producers));
     lines.push_back("deck down-dip direction = " + deck_number(w.down_dip_x) + " " + deck_number(w.down_dip_y) +
                     " (dip " + deck_number(w.dip) + " m/m)");
     lines.push_back("deck pore volume = " + deck_number(s.pore_volume_m3) + " m3");

@@ -118,7 +118,8 @@ CommandAction add_generate_command(CLI::App& app) {
     cmd->add_option("--out", options->out, "Output GRDECL file")->check(writable_output());
     cmd->add_option("--deck", options->deck,
                     "Also write an OPM Flow waterflood deck into DIR (made if missing): NAME.DATA and the grid "
-                    "NAME.GRDECL it includes; --out is optional then")
+                    "NAME.GRDECL it includes, NAME the preset's in capitals (CUSTOM for --dims); --out is "
+                    "optional then")
         ->check(writable_output_directory());
     add_memory_limit_option(*cmd, options->memory_limit_gb, "models");
     cmd->add_flag("--quiet", options->quiet, "No progress lines or report");
