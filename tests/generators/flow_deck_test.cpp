@@ -2,11 +2,15 @@
 // opposite flanks (injectors down-dip), the schedule injects the planned pore volumes, and the
 // deck text holds what flow needs.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numeric>
 #include <set>
+#include <sstream>
 #include <utility>
 
 #include "generator_test_support.h"
@@ -132,6 +136,24 @@ TEST(FlowDeckText, HoldsTheSectionsWellsAndEveryReportStep) {
     EXPECT_NE(text.find("'INJ1' " + std::to_string(injector.column.i + 1) + ' ' + std::to_string(injector.column.j + 1) +
                         " 1 3 'OPEN'"),
               std::string::npos);
+}
+
+TEST(FlowDeckFiles, GridFileHoldsOnlyWhatFlowReads) {
+    const GeneratedModel model = testing::generate_quietly(testing::small_parameters());
+    const std::filesystem::path directory =
+        std::filesystem::temp_directory_path() / ("cutaway_flow_deck_files_" + std::to_string(::getpid()));
+    std::filesystem::remove_all(directory);
+    const FlowDeckFiles files = flow_deck_files(directory, "SMALL");
+    write_flow_deck(files, model.grid, plan_flow_deck(model.grid), {});
+    std::ostringstream grid_text;
+    grid_text << std::ifstream(files.grid).rdbuf();
+    const std::string text = grid_text.str();
+    for (const char* keyword : {"SPECGRID", "COORD", "ZCORN", "ACTNUM", "PORO", "PERMX", "NTG"})
+        EXPECT_NE(text.find(std::string(keyword) + '\n'), std::string::npos) << keyword;
+    // FACIES is no Eclipse keyword and SWAT belongs to SOLUTION, not GRID: flow would stop at either.
+    for (const char* keyword : {"FACIES", "SWAT"}) EXPECT_EQ(text.find(std::string(keyword) + '\n'), std::string::npos) << keyword;
+    EXPECT_TRUE(std::filesystem::exists(files.data));
+    std::filesystem::remove_all(directory);
 }
 
 }  // namespace
