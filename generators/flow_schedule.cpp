@@ -28,9 +28,6 @@ double well_productivity(double kh, double footprint, double drainage_radius, do
     return kDarcyMetric * 2 * std::numbers::pi * kh * mobility / std::log(std::max(drainage_radius, r0) / rw);
 }
 
-/// Half the spacing of `count` wells along `strike_extent` metres of flank.
-double drainage_radius(double strike_extent, std::size_t count) { return 0.5 * strike_extent / double(count); }
-
 struct Volumes {
     double pore_volume = 0;
     double shallowest_centre = std::numeric_limits<double>::infinity();
@@ -79,8 +76,7 @@ FlowSchedule plan_flow_schedule(const grid::CornerPointGrid& grid, const WellPla
     const double oil_mobility = fluids::oil_relperm_at_connate_water / fluids::oil_viscosity_cp;
     std::vector<double> injectivity;
     double total_injectivity = 0, total_productivity = 0;
-    const double injector_radius = drainage_radius(wells.strike_extent, wells.injectors.size());
-    const double producer_radius = drainage_radius(wells.strike_extent, wells.producers.size());
+    const double injector_radius = 0.5 * wells.injector_spacing, producer_radius = 0.5 * wells.producer_spacing;
     for (const DeckWell& w : wells.injectors) {
         injectivity.push_back(well_productivity(w.column.kh, w.column.footprint, injector_radius, water_mobility));
         total_injectivity += injectivity.back();

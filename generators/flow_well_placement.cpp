@@ -54,16 +54,30 @@ Direction down_dip_direction(const std::vector<ColumnSummary>& columns) {
     return {0, c < 0 ? -1.0 : 1.0, std::abs(c)};
 }
 
-/// Up to `count` wells from `candidates`: the strike range split into equal stretches, in each
-/// the column of highest k h around it (ColumnSummary::neighbourhood_kh), taken from the
-/// stretch's middle (kStretchMiddle of it) unless that has no candidate, so wells of
-/// neighbouring stretches stand apart.
-std::vector<DeckWell> pick_wells(const std::vector<const ColumnSummary*>& candidates, const Direction& d, int count,
-                                 double strike_min, double strike_extent, const std::string& prefix) {
+/// Position across the dip (along the strike), metres.
+double along_strike(const ColumnSummary& c, const Direction& d) { return -c.x * d.y + c.y * d.x; }
+
+struct Flank {
+    std::vector<DeckWell> wells;
+    double spacing = 0;  ///< the flank's width along the strike over its well count, metres
+};
+
+/// Wells on the flank of `candidates`: one per kWellSpacingColumns columns of its width along the
+/// strike (1 to kMaxWellsPerFlank), the width split into equal stretches, in each the column of
+/// highest k h around it (ColumnSummary::neighbourhood_kh), taken from the stretch's middle
+/// (kStretchMiddle of it) unless that has no candidate, so wells of neighbouring stretches stand apart.
+Flank pick_wells(const std::vector<const ColumnSummary*>& candidates, const Direction& d, double cell_size,
+                 const std::string& prefix) {
+    double t_min = std::numeric_limits<double>::infinity(), t_max = -t_min;
+    for (const ColumnSummary* c : candidates) {
+        t_min = std::min(t_min, along_strike(*c, d));
+        t_max = std::max(t_max, along_strike(*c, d));
+    }
+    const double width = t_max - t_min;
+    const int count = std::clamp(int(std::lround(width / (kWellSpacingColumns * cell_size))), 1, kMaxWellsPerFlank);
     std::vector<const ColumnSummary*> best_middle(std::size_t(count), nullptr), best_any(std::size_t(count), nullptr);
     for (const ColumnSummary* c : candidates) {
-        const double t = -c->x * d.y + c->y * d.x;
-        const double position = strike_extent > 0 ? count * (t - strike_min) / strike_extent : 0;
+        const double position = width > 0 ? count * (along_strike(*c, d) - t_min) / width : 0;
         const int stretch = std::clamp(int(position), 0, count - 1);
         const bool middle = std::abs(position - stretch - 0.5) <= 0.5 * kStretchMiddle;
         for (auto* best : {&best_any, middle ? &best_middle : nullptr}) {
@@ -72,11 +86,12 @@ std::vector<DeckWell> pick_wells(const std::vector<const ColumnSummary*>& candid
             if (!chosen || c->neighbourhood_kh > chosen->neighbourhood_kh) chosen = c;
         }
     }
-    std::vector<DeckWell> wells;
+    Flank flank;
+    flank.spacing = std::max(width, cell_size) / count;
     for (std::size_t n = 0; n < best_any.size(); ++n)
         if (const ColumnSummary* c = best_middle[n] ? best_middle[n] : best_any[n])
-            wells.push_back({prefix + std::to_string(wells.size() + 1), *c});
-    return wells;
+            flank.wells.push_back({prefix + std::to_string(flank.wells.size() + 1), *c});
+    return flank;
 }
 
 /// Drops the columns on the grid's outer boundary when others remain: a well there has half a
@@ -107,7 +122,7 @@ WellPlacement place_wells(const grid::CornerPointGrid& grid) {
     constexpr double inf = std::numeric_limits<double>::infinity();
     double s_min = inf, s_max = -inf, t_min = inf, t_max = -inf, footprint = 0, kh = 0;
     for (const ColumnSummary& c : columns) {
-        const double s = c.x * d.x + c.y * d.y, t = -c.x * d.y + c.y * d.x;
+        const double s = c.x * d.x + c.y * d.y, t = along_strike(c, d);
         s_min = std::min(s_min, s);
         s_max = std::max(s_max, s);
         t_min = std::min(t_min, t);
@@ -128,18 +143,19 @@ WellPlacement place_wells(const grid::CornerPointGrid& grid) {
     }
     keep_inner_columns(down_dip, grid.dims());
     keep_inner_columns(up_dip, grid.dims());
-    const double strike_extent = t_max - t_min;
-    const int wells_per_flank =
-        std::clamp(int(std::lround(strike_extent / (kWellSpacingColumns * cell_size))), 1, kMaxWellsPerFlank);
 
     WellPlacement placement;
     placement.down_dip_x = d.x;
     placement.down_dip_y = d.y;
     placement.dip = d.slope;
-    placement.strike_extent = strike_extent;
+    placement.strike_extent = t_max - t_min;
     placement.mean_column_kh = kh / double(columns.size());
-    placement.injectors = pick_wells(down_dip, d, wells_per_flank, t_min, strike_extent, "INJ");
-    placement.producers = pick_wells(up_dip, d, wells_per_flank, t_min, strike_extent, "PROD");
+    Flank injectors = pick_wells(down_dip, d, cell_size, "INJ");
+    Flank producers = pick_wells(up_dip, d, cell_size, "PROD");
+    placement.injectors = std::move(injectors.wells);
+    placement.producers = std::move(producers.wells);
+    placement.injector_spacing = injectors.spacing;
+    placement.producer_spacing = producers.spacing;
     if (placement.producers.empty())
         throw std::invalid_argument("--deck: expected active columns on the up-dip flank for producers, found none");
     placement.flank_distance = mean_along(placement.injectors, d) - mean_along(placement.producers, d);

@@ -27,6 +27,9 @@ struct WellPlacement {
     double dip = 0;           ///< slope of the fitted top along down_dip, metres of depth per metre
     double flank_distance = 0;  ///< metres along down_dip between the two flanks' wells (mean)
     double strike_extent = 0;   ///< metres across the field, perpendicular to down_dip
+    /// Metres along the strike per well on each flank (the flank's width over its well count).
+    double injector_spacing = 0;
+    double producer_spacing = 0;
     double mean_column_kh = 0;  ///< mean k h of the active columns (ColumnSummary::kh), mD m
 };
 
