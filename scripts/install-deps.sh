@@ -16,6 +16,8 @@ packages=(
   ffmpeg
   # tests, benchmarks, reference checks, fuzzing
   libgtest-dev libgmock-dev libbenchmark-dev libopm-common-dev libboost-test-dev clang libclang-rt-14-dev libomp-dev
+  # the OPM Flow simulator: runs `generate --deck` decks (tests/generators/flow_run_test.cpp)
+  libopm-simulators-bin
   # plots
   python3 python3-matplotlib python3-vtk9
   # distributed rendering (src/distributed/, CUTAWAY_MPI): OpenMPI and ParaView's IceT compositor

@@ -122,6 +122,10 @@ CLI::Validator writable_output() {
     return CLI::Validator([](std::string& path) { return io::output_path_problem(path); }, "FILE");
 }
 
+CLI::Validator writable_output_directory() {
+    return CLI::Validator([](std::string& path) { return io::output_directory_problem(path); }, "DIR");
+}
+
 void refuse_shared_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
     std::error_code error;
     for (std::size_t a = 0; a < outputs.size(); ++a)

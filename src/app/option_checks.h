@@ -31,6 +31,8 @@ CLI::Validator one_of(const std::vector<std::string>& names);
 CLI::Validator utf8_text();
 /// A path an output can be written to (checked before any work: see io::output_path_problem).
 CLI::Validator writable_output();
+/// A directory output files can be written into, made when missing (io::output_directory_problem).
+CLI::Validator writable_output_directory();
 
 /// Throws std::invalid_argument when two of the (option, path) pairs given (non-empty) name the
 /// same file: one output would silently overwrite the other (or an input, listed first).

@@ -1,5 +1,6 @@
 #include "grid/grdecl_writer.h"
 
+#include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <stdexcept>
@@ -70,6 +71,12 @@ void write_array(std::ostream& out, const char* keyword, const std::vector<T>& v
     writer.finish();
 }
 
+bool written(const GrdeclWriteOptions& options, const std::string& name) {
+    return !options.only_properties ||
+           std::find(options.only_properties->begin(), options.only_properties->end(), name) !=
+               options.only_properties->end();
+}
+
 }  // namespace
 
 void write_grdecl(std::ostream& out, const CornerPointGrid& grid, const GrdeclWriteOptions& options) {
@@ -108,9 +115,12 @@ void write_grdecl(std::ostream& out, const CornerPointGrid& grid, const GrdeclWr
         for (std::uint8_t a : grid.actnum()) writer.add(int(a));
         writer.finish();
     }
-    for (const std::string& name : grid.property_names()) write_array(out, name.c_str(), *grid.property(name));
-    for (const std::string& name : grid.int_property_names()) write_array(out, name.c_str(), *grid.int_property(name));
+    for (const std::string& name : grid.property_names())
+        if (written(options, name)) write_array(out, name.c_str(), *grid.property(name));
+    for (const std::string& name : grid.int_property_names())
+        if (written(options, name)) write_array(out, name.c_str(), *grid.int_property(name));
     for (const std::string& name : grid.dynamic_property_names()) {
+        if (!written(options, name)) continue;
         out << "-- " << name << ": " << grid.step_count(name) << " time steps, one keyword each, in order\n";
         for (std::size_t step = 0; step < grid.step_count(name); ++step)
             write_array(out, name.c_str(), *grid.dynamic_property(name, step));

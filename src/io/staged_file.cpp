@@ -121,4 +121,23 @@ std::string output_path_problem(const std::filesystem::path& path) {
     return {};
 }
 
+std::string output_directory_problem(const std::filesystem::path& path) {
+    if (path.empty()) return "expected a directory name, found an empty path";
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        if (::access(path.c_str(), W_OK | X_OK) == 0) return {};
+        return "expected a writable directory, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+    }
+    if (std::filesystem::exists(path, error))
+        return "expected a directory, found the file '" + path.string() + "'";
+    const std::filesystem::path parent = path.has_parent_path() ? path.parent_path() : ".";
+    if (!std::filesystem::is_directory(parent, error))
+        return "expected a directory that exists or can be made in an existing one, found '" + path.string() +
+               "' (no directory '" + parent.string() + "')";
+    if (::access(parent.c_str(), W_OK | X_OK) != 0)
+        return "expected a directory that can be made, found '" + path.string() + "' ('" + parent.string() +
+               "': " + std::strerror(errno) + ")";
+    return {};
+}
+
 }  // namespace cutaway::io

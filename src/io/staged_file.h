@@ -47,4 +47,8 @@ void write_stream(const std::filesystem::path& path, const std::function<void(st
 /// before any work so that a run never computes a result it cannot keep.
 std::string output_path_problem(const std::filesystem::path& path);
 
+/// Why `path` cannot take output files ("expected ..., found ..."), or empty when it can: a
+/// writable directory, or a missing one whose parent is a writable directory (it is created).
+std::string output_directory_problem(const std::filesystem::path& path);
+
 }  // namespace cutaway::io

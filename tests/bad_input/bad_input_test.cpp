@@ -151,6 +151,17 @@ TEST_F(BadInput, FullDiskIsExit2NamingThePathAndTheReason) {
                    {"/dev/full", "No space left on device"});
 }
 
+TEST_F(BadInput, DeckWriteFailingHalfWayLeavesNoDeck) {
+    // The deck's grid file of 10 x 12 x 3 cells (COORD and ZCORN) is far above the 16 kB the child
+    // may write: the deck folder it made goes with the partial file.
+    ProcessLimits limits;
+    limits.max_file_bytes = 16384;
+    const ProcessResult r =
+        cutaway({"generate", "--dims", "10", "12", "3", "--seed", "1", "--quiet", "--deck", out("deck")}, limits);
+    expect_refused(r, {"CUSTOM.GRDECL", "expected the output written whole", "File too large"});
+    expect_no_output();
+}
+
 TEST_F(BadInput, WriteFailingHalfWayLeavesNoPartialFile) {
     // 20 x 20 x 10 cells make a CSV of about 200 kB; the child may write only 4 kB.
     const ProcessResult generated =
