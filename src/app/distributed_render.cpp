@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/exit_codes.h"
 #include "app/heap_policy.h"
 #include "app/model_source.h"
 #include "app/render_report.h"
@@ -36,7 +37,7 @@
 #include "grid/grdecl_error.h"
 #include "grid/grid_box.h"
 #include "io/output_error.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 
 namespace cutaway::app {
 namespace {
@@ -59,17 +60,17 @@ int exit_code_of(const std::exception_ptr& error) {
     try {
         std::rethrow_exception(error);
     } catch (const grid::GrdeclError&) {
-        return 2;
+        return exit_bad_input;
     } catch (const io::OutputError&) {
-        return 2;
+        return exit_bad_input;
     } catch (const std::invalid_argument&) {
-        return 2;
+        return exit_bad_input;
     } catch (const gl::GlError&) {
-        return 4;
+        return exit_gl_failure;
     } catch (const std::bad_alloc&) {
-        return 3;
+        return exit_out_of_memory;
     } catch (...) {
-        return 1;
+        return exit_failure;
     }
 }
 
@@ -77,7 +78,7 @@ std::string message_of(const std::exception_ptr& error) {
     try {
         std::rethrow_exception(error);
     } catch (const std::bad_alloc&) {
-        return "out of memory (lower the input size or raise --memory-limit-gb)";
+        return out_of_memory_message;
     } catch (const std::exception& e) {
         return e.what();
     } catch (...) {
@@ -341,9 +342,13 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     const std::uint64_t faces_secondary = mpi.sum(drawn.secondary), faces_primary = mpi.sum(drawn.primary);
     if (!mpi.root()) return 0;
 
-    gl::write_png(rank.renderer().read_image(), options.out);
+    // Committed together once the stats are written too (render_command.cpp).
+    io::OutputBatch outputs;
+    outputs.write(options.out, gl::encode_png(rank.renderer().read_image(), options.out));
     if (!options.cell_ids.empty())
-        gl::write_png(pipeline::encode_cell_ids(rank.composited_ids(), options.width, options.height), options.cell_ids);
+        outputs.write(options.cell_ids,
+                      gl::encode_png(pipeline::encode_cell_ids(rank.composited_ids(), options.width, options.height),
+                                     options.cell_ids));
     const PropertyChoice& property = scene.property;
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
@@ -382,7 +387,8 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
     stats["distributed"] = distributed_json(mpi, scene, gathered, stage_order, rank.last_exchange().allreduce_bytes);
-    if (!options.stats.empty()) io::write_file(options.stats, stats.dump(2) + '\n');
+    if (!options.stats.empty()) outputs.write(options.stats, stats.dump(2) + '\n');
+    outputs.commit();
     std::cout << "cutaway render: " << options.out << " (" << primary_count << " primary cells, " << mpi.size()
               << " ranks, total " << stats["stages_ms"]["total"].get<double>() << " ms median of " << options.repeat
               << ")\n";
@@ -398,6 +404,11 @@ int run_distributed_render(const RenderOptions& options) {
     // reported once).
     RankScene scene;
     try {
+        // Before any rank reads the model: rank 0 alone checks that no output overwrites an input
+        // or another output (one file system view, one message), and every rank learns its verdict.
+        on_all_ranks(mpi, [&] {
+            if (mpi.root()) refuse_render_overwrites(options);
+        });
         scene.prepare(options, mpi);
     } catch (const AgreedFailure& failure) {
         if (mpi.root()) std::cerr << "cutaway: " << failure.message << '\n';
@@ -405,6 +416,12 @@ int run_distributed_render(const RenderOptions& options) {
     }
     try {
         return render_frames(options, mpi, scene);
+    } catch (const io::OutputError& error) {
+        // Rank 0 writes after the last collective, when the other ranks are done: it reports the
+        // failed write and ends as a single process does (its OutputBatch removed what it staged).
+        if (!mpi.root()) mpi.abort(exit_bad_input);
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return exit_bad_input;
     } catch (...) {
         // Mid-frame a rank may fail alone while the others wait in a collective: end them all.
         std::cerr << "cutaway: rank " << mpi.rank() << " of " << mpi.size() << ": " << message_of(std::current_exception())

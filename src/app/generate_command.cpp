@@ -11,7 +11,7 @@
 #include "generators/presets.h"
 #include "generators/write_progress.h"
 #include "grid/grdecl_writer.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 
 namespace cutaway::app {
 namespace {
@@ -23,7 +23,7 @@ struct GenerateOptions {
     std::vector<int> dims;
     std::vector<double> extent;
     std::string out;
-    double memory_limit_gb = double(generators::kDefaultGeneratorMemoryLimit) / double(1 << 30);
+    double memory_limit_gb = default_memory_limit_gib;
     bool quiet = false;
     bool list_presets = false;
     ParameterOverrides<GeneratorParameters> overrides;

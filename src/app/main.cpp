@@ -3,22 +3,32 @@
 #include <iostream>
 #include <new>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/commands.h"
+#include "app/exit_codes.h"
 #include "app/heap_policy.h"
 #include "app/mpi_launch.h"
 #include "gl/gl_error.h"
 #include "grid/grdecl_error.h"
+#include "io/interrupt_cleanup.h"
 #include "io/output_error.h"
 #include "volume/volume_error.h"
 
 int main(int argc, char** argv) {
     cutaway::app::keep_freed_heap_memory();
+    // Ctrl-C or kill removes the temporary files of outputs not yet committed (exit 130 or 143).
+    const cutaway::io::InterruptCleanup interrupt_cleanup;
     CLI::App app{"cutaway: corner-point reservoir grids, cutaway rendering and seismic ray casting benchmarks"};
     app.require_subcommand(1);
-    // Refused command lines read like every other refusal: "cutaway: --option: expected ..., found ...".
-    app.failure_message([](const CLI::App*, const CLI::Error& error) {
-        return "cutaway: " + std::string(error.what()) + "\n(cutaway SUBCOMMAND --help lists the options)\n";
+    // Refused command lines read like every other refusal, on one line: "cutaway: --option:
+    // expected ..., found ... (cutaway render --help lists the options)".
+    app.failure_message([](const CLI::App* top, const CLI::Error& error) {
+        const std::vector<CLI::App*> chosen = top->get_subcommands();
+        const std::string help = chosen.empty() ? "cutaway --help lists the subcommands"
+                                                : "cutaway " + chosen.front()->get_name() + " --help lists the options";
+        return "cutaway: " + std::string(error.what()) + " (" + help + ")\n";
     });
     // One line per subcommand: its registration returns the action run when it is chosen.
     const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
@@ -36,7 +46,8 @@ int main(int argc, char** argv) {
         // prints it (every rank parses the same command line).
         std::ostringstream silenced;
         const bool quiet = cutaway::app::mpi_rank_from_launcher() > 0;
-        return (quiet ? app.exit(error, silenced, silenced) : app.exit(error)) == 0 ? 0 : 2;
+        return (quiet ? app.exit(error, silenced, silenced) : app.exit(error)) == 0 ? cutaway::app::exit_success
+                                                                                   : cutaway::app::exit_bad_input;
     }
     try {
         if (app.got_subcommand("inspect")) return inspect();
@@ -47,25 +58,25 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("view")) return view();
     } catch (const cutaway::grid::GrdeclError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
+        return cutaway::app::exit_bad_input;
     } catch (const cutaway::volume::VolumeError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
+        return cutaway::app::exit_bad_input;
     } catch (const cutaway::io::OutputError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
+        return cutaway::app::exit_bad_input;
     } catch (const cutaway::gl::GlError& error) {
         std::cerr << "cutaway: OpenGL: " << error.what() << '\n';
-        return 4;
+        return cutaway::app::exit_gl_failure;
     } catch (const std::invalid_argument& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
-        return 2;
+        return cutaway::app::exit_bad_input;
     } catch (const std::bad_alloc&) {
-        std::cerr << "cutaway: out of memory (lower the input size or raise --memory-limit-gb)\n";
-        return 3;
+        std::cerr << "cutaway: " << cutaway::app::out_of_memory_message << '\n';
+        return cutaway::app::exit_out_of_memory;
     } catch (const std::exception& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
-        return 1;
+        return cutaway::app::exit_failure;
     }
-    return 1;
+    return cutaway::app::exit_failure;
 }

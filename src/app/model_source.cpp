@@ -68,6 +68,13 @@ LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory
     return loaded;
 }
 
+std::vector<io::NamedFile> model_input_files(const std::vector<std::string>& model) {
+    std::vector<io::NamedFile> files;
+    if (model.empty() || is_preset(model)) return files;
+    for (const std::string& file : model) files.push_back({"the model", file});
+    return files;
+}
+
 grid::GridDims model_dims(const std::vector<std::string>& model, std::size_t memory_limit_bytes) {
     if (is_preset(model)) return preset_parameters(model).dims;
     grid::GrdeclReadOptions options;

@@ -7,6 +7,7 @@
 
 #include "grid/corner_point_grid.h"
 #include "grid/primary_selection.h"
+#include "io/file_identity.h"
 
 namespace cutaway::app {
 
@@ -25,6 +26,9 @@ struct LoadedModel {
 /// std::nullopt keeps every property (the viewer switches between them).
 LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes,
                        const std::optional<std::string>& only_property = std::nullopt);
+
+/// The files `model` names ("the model" each), none for a preset: what no output may overwrite.
+std::vector<io::NamedFile> model_input_files(const std::vector<std::string>& model);
 
 /// The whole model's dimensions without loading it: a preset's, or the files' SPECGRID/DIMENS
 /// (read no further).

@@ -26,7 +26,7 @@
 #include "gl/image.h"
 #include "metrics/cut_error.h"
 #include "grid/primary_selection.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 
 namespace cutaway::app {
 namespace {
@@ -52,11 +52,7 @@ json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSetti
 
 int run_render(const RenderOptions& options) {
     if (launched_by_mpi()) return run_distributed_render(options);
-    // Inputs first: an output naming a model file would overwrite it.
-    std::vector<std::pair<std::string, std::string>> files;
-    for (const std::string& model : options.model) files.emplace_back("the model", model);
-    files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
-    refuse_shared_outputs(files);
+    refuse_render_overwrites(options);
     LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options));
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
@@ -104,9 +100,13 @@ int run_render(const RenderOptions& options) {
     std::vector<pipeline::FrameTimes> runs;
     for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
     memory["resident_after_frames"] = run_context::proc_status_bytes("VmRSS");
-    gl::write_png(renderer.read_image(), options.out);
+    // Committed together once the stats are written too: a failed --stats leaves no image behind.
+    io::OutputBatch outputs;
+    outputs.write(options.out, gl::encode_png(renderer.read_image(), options.out));
     if (!options.cell_ids.empty())
-        gl::write_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width, options.height), options.cell_ids);
+        outputs.write(options.cell_ids, gl::encode_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width,
+                                                                                 options.height),
+                                                       options.cell_ids));
 
     json stats = stage_statistics(runs);
     stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
@@ -172,7 +172,8 @@ int run_render(const RenderOptions& options) {
     stats["configuration"] = options.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
-    if (!options.stats.empty()) io::write_file(options.stats, stats.dump(2) + '\n');
+    if (!options.stats.empty()) outputs.write(options.stats, stats.dump(2) + '\n');
+    outputs.commit();
     std::cout << "cutaway render: " << options.out << " (" << primary_count << " primary cells, total "
               << stats["stages_ms"]["total"].get<double>() << " ms median of " << options.repeat << ")\n";
     return 0;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "app/model_source.h"
 #include "app/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 
@@ -74,6 +75,11 @@ void put_metric(json& stats, const std::string& key, double fraction, std::size_
     }
     stats[key] = nullptr;
     stats[key + "_absent"] = why_absent;
+}
+
+void refuse_render_overwrites(const RenderOptions& options) {
+    refuse_overwrites(model_input_files(options.model),
+                      {{"--out", options.out}, {"--cell-ids", options.cell_ids}, {"--stats", options.stats}});
 }
 
 void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options) {

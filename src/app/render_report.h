@@ -27,6 +27,10 @@ nlohmann::json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::
 void put_metric(nlohmann::json& stats, const std::string& key, double fraction, std::size_t denominator,
                 const std::string& why_absent);
 
+/// Refuses --out, --cell-ids and --stats naming a model file or each other, however spelled (by
+/// file identity): checked before the model is read (on rank 0 alone under mpirun).
+void refuse_render_overwrites(const RenderOptions& options);
+
 /// Refuses a camera that would see nothing: a model without extent (all pillars at one x, y, or
 /// coordinates whose extent overflows single precision) or a DIST inside the model.
 void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options);

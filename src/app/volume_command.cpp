@@ -19,7 +19,7 @@
 #include "gl/image.h"
 #include "gl/shader_library.h"
 #include "gl/stage_timer.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 #include "annotation/colour_bar_layout.h"
 #include "volume/colour_bar.h"
 #include "volume/cpu_ray_caster.h"
@@ -56,7 +56,7 @@ struct VolumeOptions {
     unsigned threads = 0;
     int warmup = 1;
     int repeat = 1;
-    double memory_limit_gb = 4;
+    double memory_limit_gb = default_memory_limit_gib;
     volume::SegyReadOptions read;
     RayCastSettings settings;
 };
@@ -207,10 +207,53 @@ void refuse_eye_inside(const volume::ViewGeometry& view) {
                                     number_text(view.distance) + " (the eye is inside the cube)");
 }
 
+/// The timed frames' median ray-cast time, ms.
+double ray_cast_ms(FrameRuns& runs) { return median(runs.stages["ray_cast"].wall_ms); }
+
+/// Samples the last frame took per second of the median ray-cast time.
+double samples_per_second(FrameRuns& runs) {
+    const double ms = ray_cast_ms(runs);
+    return ms > 0 ? double(runs.last.samples) / (ms * 1e-3) : 0;
+}
+
+/// stats.json of a volume run: input, configuration, stage medians, sample counts, machine.
+nlohmann::json volume_stats(const VolumeOptions& o, const volume::TransferFunctionSettings& tf, const volume::VolumeCube& cube,
+                            const volume::QuantisedVolume& levels, const volume::VolumeScene& scene, FrameRuns& runs,
+                            double load_ms, double prepare_ms) {
+    const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
+    nlohmann::json stats;
+    stats["command"] = "volume";
+    stats["input"] = input_json(cube, levels);
+    stats["configuration"] = configuration_json(o, tf, volume::make_view(cube.dims, o.settings), threads);
+    stats["load_ms"] = load_ms;
+    stats["prepare_ms"] = prepare_ms;
+    bool all_valid = true;
+    for (const auto& [name, series] : runs.stages) {
+        stats["stages_ms"][name] = median(series.wall_ms);
+        stats["stages_ms_all"][name] = series.wall_ms;
+        const bool valid = o.caster == "gpu" && series.gl_query_valid;
+        stats["gl_query_ms"][name] = median(series.gl_query_ms);
+        stats["gl_query_valid_by_stage"][name] = valid;
+        all_valid = all_valid && valid;
+    }
+    stats["stages_ms"]["total"] = median(runs.total_ms);
+    stats["gl_query_valid"] = all_valid;
+    stats["samples"] = runs.last.samples;
+    stats["rays"] = runs.last.rays;
+    stats["samples_per_ray"] = runs.last.rays ? double(runs.last.samples) / double(runs.last.rays) : 0.0;
+    stats["samples_per_second"] = samples_per_second(runs);
+    stats["occupied_block_fraction"] = scene.occupied_fraction();
+    stats["gl_renderer"] = runs.gl_renderer;
+    stats["lp_num_threads"] = run_context::lp_num_threads();
+    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
+    stats["git_revision"] = run_context::git_revision();
+    return stats;
+}
+
 int run_volume(VolumeOptions& o) {
     volume::TransferFunctionSettings tf;
     apply_options(o, tf);
-    refuse_shared_outputs({{"the cube", o.cube}, {"--out", o.out}, {"--stats", o.stats}});
+    refuse_overwrites({{"the cube", o.cube}}, {{"--out", o.out}, {"--stats", o.stats}});
 
     Clock::time_point start = Clock::now();
     const volume::VolumeCube cube = volume::load_segy(o.cube, o.read);
@@ -232,45 +275,17 @@ int run_volume(VolumeOptions& o) {
                                                                                         o.settings.width, o.settings.height));
     const double prepare_ms = elapsed_ms(start);
 
-    const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
     FrameRuns runs = o.caster == "gpu" ? run_gpu(scene, o) : run_cpu(scene, o);
-    gl::write_png(runs.last.image, o.out);
-
-    const double ray_cast_ms = median(runs.stages["ray_cast"].wall_ms);
-    const double samples_per_second = ray_cast_ms > 0 ? double(runs.last.samples) / (ray_cast_ms * 1e-3) : 0;
+    // Committed together with the stats: a failed --stats leaves no image behind.
+    io::OutputBatch outputs;
+    outputs.write(o.out, gl::encode_png(runs.last.image, o.out));
+    if (!o.stats.empty())
+        outputs.write(o.stats, volume_stats(o, tf, cube, levels, scene, runs, load_ms, prepare_ms).dump(2) + '\n');
+    outputs.commit();
     std::cout << o.out << ": " << o.caster << " caster, " << volume::transfer_function_name(tf.kind) << ", "
               << cube.dims.inlines << "x" << cube.dims.crosslines << "x" << cube.dims.samples << ", ray cast "
-              << ray_cast_ms << " ms (median of " << o.repeat << "), " << runs.last.samples << " samples, "
-              << samples_per_second / 1e6 << " M samples/s\n";
-    if (o.stats.empty()) return 0;
-
-    nlohmann::json stats;
-    stats["command"] = "volume";
-    stats["input"] = input_json(cube, levels);
-    stats["configuration"] = configuration_json(o, tf, volume::make_view(cube.dims, o.settings), threads);
-    stats["load_ms"] = load_ms;
-    stats["prepare_ms"] = prepare_ms;
-    bool all_valid = true;
-    for (const auto& [name, series] : runs.stages) {
-        stats["stages_ms"][name] = median(series.wall_ms);
-        stats["stages_ms_all"][name] = series.wall_ms;
-        const bool valid = o.caster == "gpu" && series.gl_query_valid;
-        stats["gl_query_ms"][name] = median(series.gl_query_ms);
-        stats["gl_query_valid_by_stage"][name] = valid;
-        all_valid = all_valid && valid;
-    }
-    stats["stages_ms"]["total"] = median(runs.total_ms);
-    stats["gl_query_valid"] = all_valid;
-    stats["samples"] = runs.last.samples;
-    stats["rays"] = runs.last.rays;
-    stats["samples_per_ray"] = runs.last.rays ? double(runs.last.samples) / double(runs.last.rays) : 0.0;
-    stats["samples_per_second"] = samples_per_second;
-    stats["occupied_block_fraction"] = scene.occupied_fraction();
-    stats["gl_renderer"] = runs.gl_renderer;
-    stats["lp_num_threads"] = run_context::lp_num_threads();
-    stats["heap_trim_threshold_bytes"] = app::heap_trim_threshold_json();
-    stats["git_revision"] = run_context::git_revision();
-    io::write_file(o.stats, stats.dump(2) + '\n');
+              << ray_cast_ms(runs) << " ms (median of " << o.repeat << "), " << runs.last.samples << " samples, "
+              << samples_per_second(runs) / 1e6 << " M samples/s\n";
     return 0;
 }
 

@@ -13,7 +13,7 @@
 #include "app/run_context.h"
 #include "gl/gl_error.h"
 #include "gl/image.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 #include "viewer/camera_controller.h"
 #include "viewer/option_tokens.h"
 #include "viewer/timing_overlay.h"

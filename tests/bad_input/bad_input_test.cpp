@@ -15,102 +15,28 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bad_input_fixture.h"
 #include "cutaway/cell_id_image.h"
-#include "cutaway_process.h"
 #include "gl/image.h"
 
 namespace {
 
-using cutaway::testing::ProcessLimits;
-using cutaway::testing::ProcessResult;
+using namespace cutaway::testing;  // the fixture, its checks and the shared inputs
 namespace fs = std::filesystem;
-
-// AddressSanitizer's shadow memory and quarantine multiply a process's resident memory, so the
-// peak-memory bounds hold only for the plain build (the exit codes and messages are checked in both).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kMeasureMemory = false;
-#else
-constexpr bool kMeasureMemory = true;
-#endif
-
-// What `cutaway` itself holds before it reads any input: the program, its libraries (Mesa, segyio,
-// CGAL-free but GL-linked) and the C++ runtime. Measured at about 25 MiB for `cutaway --help`.
-constexpr double kBaselineRssMb = 64;
-
-constexpr const char* kTinyGrid =
-    "SPECGRID\n 2 2 1 1 F /\n"
-    "COORD\n 0 0 0 0 0 1  1 0 0 1 0 1  2 0 0 2 0 1\n"
-    " 0 1 0 0 1 1  1 1 0 1 1 1  2 1 0 2 1 1\n"
-    " 0 2 0 0 2 1  1 2 0 1 2 1  2 2 0 2 2 1 /\n"
-    "ZCORN\n 16*0 16*1 /\n"
-    "PORO\n 0.1 0.2 0.3 0.4 /\n"
-    "FACIES\n 1 2 1 2 /\n";
-
-class BadInput : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        scratch_ = fs::temp_directory_path() /
-                   ("cutaway_bad_input_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(scratch_);
-        fs::create_directories(scratch_ / "out");
-    }
-    void TearDown() override { fs::remove_all(scratch_); }
-
-    fs::path file(const std::string& name, const std::string& text) const {
-        const fs::path path = scratch_ / name;
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
-    }
-    std::string out(const std::string& name) const { return (scratch_ / "out" / name).string(); }
-
-    ProcessResult cutaway(const std::vector<std::string>& args, ProcessLimits limits = {}) const {
-        return cutaway::testing::run_process(CUTAWAY_EXE, args, scratch_, limits);
-    }
-
-    /// Exit 2 and every fragment in the message; the message is one line plus CLI11's help hint.
-    static void expect_refused(const ProcessResult& r, const std::vector<std::string>& fragments) {
-        EXPECT_EQ(r.exit_code, 2) << r.err;
-        for (const std::string& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
-    }
-
-    /// `inspect` of an NX x NY x NZ grid whose ZCORN is all zeros for the first half of its values and
-    /// all ones for the rest (every layer then differs from the one above half-way, so the store must
-    /// switch to the full layout), refused under `limit_gb`; returns the child's result.
-    ProcessResult refused_half_zero_zcorn(const std::string& name, int nx, int ny, int nz, const std::string& limit_gb) const {
-        const std::size_t pillars = std::size_t(nx + 1) * std::size_t(ny + 1), half = std::size_t(4) * nx * ny * nz;
-        const fs::path grid = file(name, "SPECGRID\n " + std::to_string(nx) + " " + std::to_string(ny) + " " +
-                                                  std::to_string(nz) + " 1 F /\nCOORD\n " + std::to_string(6 * pillars) +
-                                                  "*0 /\nZCORN\n " + std::to_string(half) + "*0 " + std::to_string(half) +
-                                                  "*1 /\n");
-        ProcessResult r = cutaway({"inspect", grid, "--memory-limit-gb", limit_gb});
-        expect_refused(r, {name, "ZCORN", "full layout", "memory limit"});
-        std::printf("%s: peak %.0f MiB\n", name.c_str(), r.peak_rss_mb);
-        return r;
-    }
-
-    /// Nothing was written to out/: neither an output nor a temporary partial file.
-    void expect_no_output() const {
-        for (const auto& entry : fs::directory_iterator(scratch_ / "out"))
-            ADD_FAILURE() << "left behind: " << entry.path();
-    }
-
-    fs::path scratch_;
-};
 
 // ---- outputs -------------------------------------------------------------------------------
 
 TEST_F(BadInput, SamePathForTwoOutputsIsRefusedBeforeRendering) {
     const fs::path grid = file("tiny.grdecl", kTinyGrid);
     const ProcessResult r = cutaway({"render", grid, "--out", out("x.png"), "--stats", out("x.png")});
-    expect_refused(r, {"--stats", "--out", "same path"});
+    expect_refused(r, {"--stats", "--out", "same file"});
     expect_no_output();
     // An output naming an input would overwrite it.
-    expect_refused(cutaway({"inspect", grid, "--cells-csv", grid}), {"--cells-csv", "the model", "same path"});
+    expect_refused(cutaway({"inspect", grid, "--cells-csv", grid}), {"--cells-csv", "the model", "same file"});
     EXPECT_EQ(fs::file_size(grid), std::string(kTinyGrid).size()) << "the model was overwritten";
     // The viewer refuses before it opens a window (no display is needed to see the refusal).
     expect_refused(cutaway({"view", grid, "--screenshot", out("v.png"), "--stats", out("v.png")}),
-                   {"--stats", "--screenshot", "same path"});
+                   {"--stats", "--screenshot", "same file"});
     expect_no_output();
 }
 
@@ -439,8 +365,14 @@ protected:
 TEST_F(BadInputGl, FullDiskForTheImageOrTheStatsIsExit2) {
     const fs::path grid = file("tiny.grdecl", kTinyGrid);
     expect_refused(render(grid, {"--no-metrics", "--out", "/dev/full"}), {"/dev/full", "No space left on device"});
+    // The image is staged before the stats or the cell ids fail: none of the run's outputs stays.
     expect_refused(render(grid, {"--no-metrics", "--out", out("x.png"), "--stats", "/dev/full"}),
                    {"/dev/full", "No space left on device"});
+    expect_refused(render(grid, {"--no-metrics", "--out", out("x.png"), "--stats", out("x.json"), "--cell-ids", "/dev/full"}),
+                   {"/dev/full", "No space left on device"});
+    expect_refused(render(grid, {"--no-metrics", "--out", out("x.png"), "--stats", "/proc/cutaway-stats.json"}),
+                   {"/proc/cutaway-stats.json"});
+    expect_no_output();
 }
 
 TEST_F(BadInputGl, CameraInsideTheModelIsRefused) {
