@@ -3,6 +3,7 @@
 # (exit 2, one message); a run whose stats cannot be written leaves no image. Each case checks
 # the model's SHA-256 and that OUT holds nothing but the model afterwards.
 # -DMPIEXEC=... -DCUTAWAY=... -DOUT=dir -DRANKS=N
+include(${CMAKE_CURRENT_LIST_DIR}/refusal_checks.cmake)
 file(REMOVE_RECURSE ${OUT})
 file(MAKE_DIRECTORY ${OUT})
 set(model ${OUT}/model.grdecl)
@@ -17,17 +18,7 @@ function(expect_refused name expect)
   execute_process(COMMAND ${MPIEXEC} --oversubscribe -np ${RANKS} ${CUTAWAY} render model.grdecl --size 160 90 --repeat 1
                           --warmup 0 --no-metrics ${ARGN}
                   WORKING_DIRECTORY ${OUT} RESULT_VARIABLE code ERROR_VARIABLE err OUTPUT_VARIABLE out)
-  if(NOT code EQUAL 2)
-    message(FATAL_ERROR "${name}: expected exit code 2, found ${code}\nstderr: ${err}\nstdout: ${out}")
-  endif()
-  if(NOT err MATCHES "${expect}")
-    message(FATAL_ERROR "${name}: expected stderr to match '${expect}', found: ${err}")
-  endif()
-  string(REGEX MATCHALL "cutaway: " reports "${err}")
-  list(LENGTH reports count)
-  if(NOT count EQUAL 1)
-    message(FATAL_ERROR "${name}: expected one report (rank 0's), found ${count}: ${err}")
-  endif()
+  check_mpi_refusal(${name} "${code}" "${err}" "${out}" "${expect}")
   file(SHA256 ${model} hash)
   if(NOT hash STREQUAL model_hash)
     message(FATAL_ERROR "${name}: the model was overwritten")
