@@ -110,9 +110,10 @@ void refuse_non_finite_properties(const grid::CornerPointGrid& grid) {
 }
 
 int run_inspect(const InspectOptions& options) {
-    refuse_overwrites(model_input_files(options.files), {{"--cells-csv", options.cells_csv}});
+    const std::vector<io::NamedFile> outputs{{"--cells-csv", options.cells_csv}};
+    refuse_overwrites(model_input_files(options.files), outputs);
     using clock = std::chrono::steady_clock;
-    const LoadedModel model = load_model(options.files, gib_to_bytes(options.memory_limit_gb));
+    const LoadedModel model = load_model(options.files, gib_to_bytes(options.memory_limit_gb), std::nullopt, outputs);
     const grid::CornerPointGrid& grid = model.grid;
     refuse_non_finite_properties(grid);
     const auto t1 = clock::now();

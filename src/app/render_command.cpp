@@ -53,7 +53,8 @@ json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSetti
 int run_render(const RenderOptions& options) {
     if (launched_by_mpi()) return run_distributed_render(options);
     refuse_render_overwrites(options);
-    LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options));
+    LoadedModel model =
+        load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options), render_outputs(options));
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, options);

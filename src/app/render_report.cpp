@@ -77,9 +77,12 @@ void put_metric(json& stats, const std::string& key, double fraction, std::size_
     stats[key + "_absent"] = why_absent;
 }
 
+std::vector<io::NamedFile> render_outputs(const RenderOptions& options) {
+    return {{"--out", options.out}, {"--cell-ids", options.cell_ids}, {"--stats", options.stats}};
+}
+
 void refuse_render_overwrites(const RenderOptions& options) {
-    refuse_overwrites(model_input_files(options.model),
-                      {{"--out", options.out}, {"--cell-ids", options.cell_ids}, {"--stats", options.stats}});
+    refuse_overwrites(model_input_files(options.model), render_outputs(options));
 }
 
 void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options) {

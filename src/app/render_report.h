@@ -7,6 +7,7 @@
 
 #include "app/render_options.h"
 #include "cutaway/cutaway_renderer.h"
+#include "io/file_identity.h"
 
 namespace cutaway::app {
 
@@ -26,6 +27,9 @@ nlohmann::json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::
 /// A metric's value, or null with KEY_absent saying why when its denominator is zero (0/0 is not 1).
 void put_metric(nlohmann::json& stats, const std::string& key, double fraction, std::size_t denominator,
                 const std::string& why_absent);
+
+/// --out, --cell-ids and --stats (empty: not given), for the overwrite checks.
+std::vector<io::NamedFile> render_outputs(const RenderOptions& options);
 
 /// Refuses --out, --cell-ids and --stats naming a model file or each other, however spelled (by
 /// file identity): checked before the model is read (on rank 0 alone under mpirun).

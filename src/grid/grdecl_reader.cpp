@@ -640,6 +640,7 @@ void KeywordParser::read_include() {
     }
     if (int(stack.size()) > state_.options.max_include_depth)
         fail(line, "INCLUDE nesting of at most " + std::to_string(state_.options.max_include_depth), "deeper nesting");
+    if (state_.options.before_include) state_.options.before_include(path, file_ + ":" + std::to_string(line));
     const HeldText text(state_, read_whole_file(path, state_, file_, line));
     state_.include_stack.push_back(canonical);
     KeywordParser(state_, text.text(), path.string(), path.parent_path()).run();

@@ -44,6 +44,21 @@ TEST_F(BadInput, OutputsSpelledDifferentlyAreOneFile) {
     expect_no_output();
 }
 
+TEST_F(BadInput, OutputNamingAnIncludeIsRefusedBeforeTheIncludeIsRead) {
+    std::string grid_text = kTinyGrid;
+    const std::size_t poro = grid_text.find("PORO");
+    const std::string poro_text = grid_text.substr(poro, grid_text.find("FACIES") - poro);
+    grid_text.replace(poro, poro_text.size(), "INCLUDE\n 'poro.inc' /\n");
+    const fs::path grid = file("main.grdecl", grid_text);
+    const fs::path include = file("poro.inc", poro_text);
+    expect_refused(cutaway({"inspect", grid, "--cells-csv", include}),
+                   {"--cells-csv", "the INCLUDE at", "main.grdecl:", "same file"});
+    expect_refused(cutaway({"render", grid, "--out", out("x.png"), "--stats", (scratch_ / "." / "poro.inc").string()}),
+                   {"--stats", "the INCLUDE at", "same file"});
+    EXPECT_EQ(contents(include), poro_text) << "the INCLUDE was overwritten";
+    expect_no_output();
+}
+
 TEST_F(BadInput, ViewerOutputsNeverOverwriteTheScriptOrTheModel) {
     // Refused before a window opens (no display is needed to see the refusal).
     const fs::path grid = file("tiny.grdecl", kTinyGrid);
