@@ -50,6 +50,17 @@ json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSetti
             {"exact_seconds", seconds}};
 }
 
+/// `options` for the colouring property: --step belongs to the --select-by property when that one
+/// is dynamic and the colouring one is static (`--select-by SWAT --step 3` colours by PORO).
+RenderOptions colouring_options(const grid::CornerPointGrid& grid, const RenderOptions& options) {
+    RenderOptions colouring = options;
+    const bool selection_dynamic = !options.select_by.empty() && grid.step_count(options.select_by) > 0;
+    const bool colouring_static = options.property.empty() ? !grid.property_names().empty()
+                                                           : grid.step_count(options.property) == 0;
+    if (selection_dynamic && colouring_static) colouring.step = -1;
+    return colouring;
+}
+
 int run_render(const RenderOptions& options) {
     if (launched_by_mpi()) return run_distributed_render(options);
     refuse_render_overwrites(options);
@@ -57,7 +68,7 @@ int run_render(const RenderOptions& options) {
         load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options), render_outputs(options));
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
-    PropertyChoice property = choose_property(model.grid, options);
+    PropertyChoice property = choose_property(model.grid, colouring_options(model.grid, options));
     const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
     const std::optional<SecondPropertySelection> selected_by = select_by_second_property(model.grid, options);
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).

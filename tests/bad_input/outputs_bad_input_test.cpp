@@ -131,6 +131,18 @@ TEST_F(BadInput, EmptyNamesAndWrappingNumbersAreRefused) {
     expect_no_output();
 }
 
+TEST_F(BadInput, StepOfTheSelectingPropertyIsCheckedAgainstIt) {
+    // --step belongs to the dynamic --select-by property, not the static colouring one (PORO).
+    const fs::path grid = scratch_ / "flood.grdecl";
+    const ProcessResult generated =
+        cutaway({"generate", "--dims", "4", "4", "2", "--seed", "1", "--time-steps", "2", "--quiet", "--out", grid.string()});
+    ASSERT_EQ(generated.exit_code, 0) << generated.err;
+    const ProcessResult r = cutaway({"render", grid, "--select-by", "SWAT", "--step", "3", "--out", out("x.png")});
+    expect_refused(r, {"--select-by", "--step 3", "property SWAT has 2 time steps"});
+    EXPECT_EQ(r.err.find("PORO"), std::string::npos) << r.err;
+    expect_no_output();
+}
+
 TEST_F(BadInput, OptionErrorsAreOneLineNamingTheSubcommand) {
     const ProcessResult r = cutaway({"render", "preset:zaphirus", "--size", "2", "2", "--out", out("x.png")});
     expect_refused(r, {"--size", "cutaway render --help"});
