@@ -327,6 +327,10 @@ json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene
 int render_frames(const RenderOptions& options, const distributed::MpiSession& mpi, RankScene& scene) {
     scene.start(options);
     distributed::RankRenderer& rank = *scene.rank;
+    const std::uint64_t primary_count = mpi.sum(rank.renderer().primary_cell_count());
+    on_all_ranks(mpi, [&] {
+        refuse_nothing_to_draw(options, primary_count, scene.property.name, scene.property.primary_range);
+    });
     const pipeline::FrameSettings settings = options.frame_settings();
     for (int i = 0; i < options.warmup; ++i) rank.render(settings, scene.camera);
     std::vector<pipeline::FrameTimes> runs;
@@ -339,7 +343,6 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     std::vector<std::string> stage_order;
     for (const auto& [name, value] : stats["stages_ms"].items()) stage_order.push_back(name);
     const std::vector<double> gathered = mpi.gather(rank_numbers(scene, stats, exchange, stage_order));
-    const std::uint64_t primary_count = mpi.sum(rank.renderer().primary_cell_count());
     const pipeline::FacesDrawn drawn = rank.renderer().faces_drawn();
     const std::uint64_t faces_secondary = mpi.sum(drawn.secondary), faces_primary = mpi.sum(drawn.primary);
     if (!mpi.root()) return 0;
@@ -418,6 +421,9 @@ int run_distributed_render(const RenderOptions& options) {
     }
     try {
         return render_frames(options, mpi, scene);
+    } catch (const AgreedFailure& failure) {
+        if (mpi.root()) std::cerr << "cutaway: " << failure.message << '\n';
+        return failure.code;
     } catch (const io::OutputError& error) {
         // Rank 0 writes after the last collective, when the other ranks are done: it reports the
         // failed write and ends as a single process does (its OutputBatch removed what it staged).

@@ -98,6 +98,7 @@ int run_render(const RenderOptions& options) {
     const std::size_t primary_count = renderer.primary_cell_count();
     const std::string selected_name = selected_by ? selected_by->label : property.label;
     const grid::PrimaryRange selected_range = selected_by ? selected_by->range : property.primary_range;
+    refuse_nothing_to_draw(options, primary_count, selected_name, selected_range);
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << selected_name << " lies in the primary range ["
                   << selected_range.min << ", " << selected_range.max << "]; rendering the context only\n";

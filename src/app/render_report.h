@@ -36,7 +36,13 @@ std::vector<io::NamedFile> render_outputs(const RenderOptions& options);
 void refuse_render_overwrites(const RenderOptions& options);
 
 /// Refuses a camera that would see nothing: a model without extent (all pillars at one x, y, or
-/// coordinates whose extent overflows single precision) or a DIST inside the model.
+/// coordinates whose extent overflows single precision), a DIST inside the model, or a --camera
+/// DIST so far that the model covers under a pixel.
 void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options);
+
+/// Refuses --only primaries when no cell is a primary (`selected_name`'s cells in `range`): the
+/// frame would hold nothing but the outline.
+void refuse_nothing_to_draw(const RenderOptions& options, std::size_t primary_count, const std::string& selected_name,
+                            const grid::PrimaryRange& range);
 
 }  // namespace cutaway::app

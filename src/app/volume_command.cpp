@@ -20,6 +20,7 @@
 #include "gl/shader_library.h"
 #include "gl/stage_timer.h"
 #include "io/output_batch.h"
+#include "io/path_text.h"
 #include "annotation/colour_bar_layout.h"
 #include "volume/colour_bar.h"
 #include "volume/cpu_ray_caster.h"
@@ -199,12 +200,47 @@ void apply_options(VolumeOptions& o, volume::TransferFunctionSettings& tf) {
     o.read.memory_limit_bytes = limit - target_bytes;
 }
 
+/// The largest share of a survey's traces that may be missing (filled with --null-value): beyond
+/// it the image shows the null value almost everywhere.
+constexpr double max_missing_trace_fraction = 0.9;
+
+/// Refuses a cube whose image would be blank: almost every trace missing, or every sample equal
+/// (one transfer-function level throughout).
+void refuse_blank_cube(const volume::VolumeCube& cube, const volume::QuantisedVolume& levels) {
+    const std::size_t traces = std::size_t(cube.dims.inlines) * std::size_t(cube.dims.crosslines);
+    if (double(cube.missing_traces.size()) > max_missing_trace_fraction * double(traces))
+        throw std::invalid_argument(io::shown_path(cube.source) + ": expected a survey with at least " +
+                                    number_text(100 * (1 - max_missing_trace_fraction)) + "% of its traces present, found " +
+                                    std::to_string(cube.missing_traces.size()) + " of " + std::to_string(traces) + " missing");
+    if (!(levels.range.max > levels.range.min))
+        throw std::invalid_argument(io::shown_path(cube.source) + ": expected amplitudes that vary, found every sample equal to " +
+                                    number_text(levels.range.min) + " (the image would be blank)");
+}
+
 /// An eye inside the cube sees nothing but the voxels around it (a blank image in practice).
 void refuse_eye_inside(const volume::ViewGeometry& view) {
     const glm::vec3& eye = view.eye_voxel;
     if (eye.x >= 0 && eye.y >= 0 && eye.z >= 0 && eye.x <= view.box.x && eye.y <= view.box.y && eye.z <= view.box.z)
         throw std::invalid_argument("--camera: expected DIST 0 (frame the cube) or an eye outside the cube, found DIST " +
                                     number_text(view.distance) + " (the eye is inside the cube)");
+}
+
+/// A cube so far away that it covers less than a pixel either way: the frame would hold nothing
+/// but the colour bar.
+void refuse_cube_under_a_pixel(const volume::ViewGeometry& view, int width, int height) {
+    glm::vec2 low(FLT_MAX), high(-FLT_MAX);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 voxel(corner & 1 ? view.box.x : 0.0f, corner & 2 ? view.box.y : 0.0f, corner & 4 ? view.box.z : 0.0f);
+        const glm::vec4 clip = view.voxel_to_clip * glm::vec4(voxel, 1.0f);
+        if (!(clip.w > 0)) return;  // a corner beside or behind the eye: the cube is near, not far
+        low = glm::min(low, glm::vec2(clip) / clip.w);
+        high = glm::max(high, glm::vec2(clip) / clip.w);
+    }
+    const double across = 0.5 * double(high.x - low.x) * width, up = 0.5 * double(high.y - low.y) * height;
+    if (across < 1 && up < 1)
+        throw std::invalid_argument("--camera: expected DIST 0 (frame the cube) or one at which it covers a pixel, found DIST " +
+                                    number_text(view.distance) + " (the cube covers under a pixel: " + number_text(across) +
+                                    " x " + number_text(up) + ")");
 }
 
 /// The timed frames' median ray-cast time, ms.
@@ -258,12 +294,15 @@ int run_volume(VolumeOptions& o) {
     Clock::time_point start = Clock::now();
     const volume::VolumeCube cube = volume::load_segy(o.cube, o.read);
     const double load_ms = elapsed_ms(start);
-    refuse_eye_inside(volume::make_view(cube.dims, o.settings));
+    const volume::ViewGeometry view = volume::make_view(cube.dims, o.settings);
+    refuse_eye_inside(view);
+    refuse_cube_under_a_pixel(view, o.settings.width, o.settings.height);
+    start = Clock::now();
+    const volume::QuantisedVolume levels = volume::quantise(cube);
+    refuse_blank_cube(cube, levels);
     if (!cube.missing_traces.empty())
         std::cerr << "cutaway: " << cube.source << ": irregular survey, " << cube.missing_traces.size()
                   << " missing traces filled with " << cube.null_value << '\n';
-    start = Clock::now();
-    const volume::QuantisedVolume levels = volume::quantise(cube);
     if (o.window == "auto") tf.window = volume::percentile_window(levels);
     if (o.layer.empty()) tf.layer = volume::fitted_layer(tf.window);
     const volume::VolumeScene scene =

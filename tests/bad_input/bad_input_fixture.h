@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -39,6 +41,48 @@ constexpr const char* kTinyGrid =
     "ZCORN\n 16*0 16*1 /\n"
     "PORO\n 0.1 0.2 0.3 0.4 /\n"
     "FACIES\n 1 2 1 2 /\n";
+
+/// A trace's inline and crossline numbers.
+struct TraceLines {
+    int inline_number = 0;
+    int crossline_number = 0;
+};
+
+/// Trace `t` of a 2 x 2 survey (inlines 1-2, crosslines 1-2).
+inline TraceLines two_by_two(int t) { return {1 + t / 2, 1 + t % 2}; }
+
+/// A big-endian SEG-Y file of `traces` traces at `lines` (default 2 x 2) of `samples` IEEE floats
+/// (values from `sample`), with the binary header's sample count and format fields set to
+/// `samples_field` and `format_field`.
+inline std::string segy_bytes(int samples_field, int format_field, int samples, float (*sample)(int trace, int k),
+                              int traces = 4, TraceLines (*lines)(int trace) = two_by_two) {
+    std::string bytes(3600, '\0');
+    const auto put16 = [&bytes](std::size_t at, int v) {
+        bytes[at] = char((v >> 8) & 0xFF);
+        bytes[at + 1] = char(v & 0xFF);
+    };
+    put16(3216, 4000);          // sample interval, microseconds (bytes 3217-3218)
+    put16(3220, samples_field);  // samples per trace (bytes 3221-3222)
+    put16(3224, format_field);  // 5: IEEE float (bytes 3225-3226)
+    for (int t = 0; t < traces; ++t) {
+        std::string header(240, '\0');
+        const auto put32 = [&header](std::size_t at, std::int32_t v) {
+            for (int b = 0; b < 4; ++b) header[at + std::size_t(b)] = char((v >> (24 - 8 * b)) & 0xFF);
+        };
+        put32(188, lines(t).inline_number);      // inline (byte 189)
+        put32(192, lines(t).crossline_number);   // crossline (byte 193)
+        header[114] = char((samples >> 8) & 0xFF);
+        header[115] = char(samples & 0xFF);
+        bytes += header;
+        for (int k = 0; k < samples; ++k) {
+            const float value = sample(t, k);
+            std::uint32_t word = 0;
+            std::memcpy(&word, &value, 4);
+            for (int b = 0; b < 4; ++b) bytes += char((word >> (24 - 8 * b)) & 0xFF);
+        }
+    }
+    return bytes;
+}
 
 class BadInput : public ::testing::Test {
 protected:

@@ -295,37 +295,6 @@ TEST_F(BadInput, LongKeywordIsTruncatedInErrors) {
     EXPECT_NE(r.err.find("KKKK..."), std::string::npos) << r.err;
 }
 
-/// A big-endian SEG-Y file of 2 x 2 traces of `samples` IEEE floats (values from `sample`), with the
-/// binary header's sample count and format fields set to `samples_field` and `format_field`.
-std::string segy_bytes(int samples_field, int format_field, int samples, float (*sample)(int trace, int k)) {
-    std::string bytes(3600, '\0');
-    const auto put16 = [&bytes](std::size_t at, int v) {
-        bytes[at] = char((v >> 8) & 0xFF);
-        bytes[at + 1] = char(v & 0xFF);
-    };
-    put16(3216, 4000);          // sample interval, microseconds (bytes 3217-3218)
-    put16(3220, samples_field);  // samples per trace (bytes 3221-3222)
-    put16(3224, format_field);  // 5: IEEE float (bytes 3225-3226)
-    for (int t = 0; t < 4; ++t) {
-        std::string header(240, '\0');
-        const auto put32 = [&header](std::size_t at, std::int32_t v) {
-            for (int b = 0; b < 4; ++b) header[at + std::size_t(b)] = char((v >> (24 - 8 * b)) & 0xFF);
-        };
-        put32(188, 1 + t / 2);  // inline (byte 189)
-        put32(192, 1 + t % 2);  // crossline (byte 193)
-        header[114] = char((samples >> 8) & 0xFF);
-        header[115] = char(samples & 0xFF);
-        bytes += header;
-        for (int k = 0; k < samples; ++k) {
-            const float value = sample(t, k);
-            std::uint32_t word = 0;
-            std::memcpy(&word, &value, 4);
-            for (int b = 0; b < 4; ++b) bytes += char((word >> (24 - 8 * b)) & 0xFF);
-        }
-    }
-    return bytes;
-}
-
 TEST_F(BadInput, NonFiniteSeismicSamplesAreRefused) {
     const fs::path inf_cube = file("inf.sgy", segy_bytes(8, 5, 8, [](int t, int k) {
         return t == 3 && k == 5 ? std::numeric_limits<float>::infinity() : float(k);
@@ -380,6 +349,20 @@ TEST_F(BadInputGl, CameraInsideTheModelIsRefused) {
     expect_refused(render(grid, {"--no-metrics", "--camera", "0", "0", "1e-9", "--out", out("x.png")}),
                    {"--camera", "at least the model's radius 1.5", "found 1e-09"});
     expect_no_output();
+}
+
+TEST_F(BadInputGl, FramesThatWouldBeBlankAreRefused) {
+    // Issue 47: a camera so far that the model covers under a pixel, and primaries-only with no
+    // primary, drew an empty frame with exit 0.
+    const fs::path grid = file("tiny.grdecl", kTinyGrid);
+    expect_refused(render(grid, {"--no-metrics", "--camera", "0", "30", "1e9", "--out", out("x.png")}),
+                   {"--camera", "the model covers under a pixel", "found 1e+09"});
+    expect_refused(render(grid, {"--no-metrics", "--only", "primaries", "--range", "5", "6", "--out", out("x.png")}),
+                   {"--only primaries", "no cell of PORO in the primary range [5, 6]"});
+    expect_no_output();
+    // Both fine where the model covers pixels and has primaries.
+    EXPECT_EQ(render(grid, {"--no-metrics", "--camera", "0", "30", "100", "--only", "primaries", "--range", "0.3", "0.4",
+                            "--out", out("x.png")}).exit_code, 0);
 }
 
 TEST_F(BadInputGl, ModelWithoutHorizontalExtentIsRefused) {

@@ -208,6 +208,24 @@ TEST_F(BadInput, EveryCommandHasOneDefaultMemoryLimit) {
     }
 }
 
+// ---- no silent blanks --------------------------------------------------------------------------
+
+TEST_F(BadInput, SeismicCubesThatWouldDrawBlankAreRefused) {
+    const fs::path flat = file("flat.sgy", segy_bytes(8, 5, 8, [](int, int) { return 0.0f; }));
+    expect_refused(cutaway({"volume", flat, "--caster", "cpu", "--out", out("v.png")}),
+                   {"flat.sgy", "expected amplitudes that vary", "every sample equal to 0"});
+    // 20 traces on the diagonal of a 20 x 20 survey: 380 of 400 (95%) missing.
+    const fs::path sparse = file("sparse.sgy", segy_bytes(8, 5, 8, [](int, int k) { return float(k); }, 20,
+                                                          [](int t) { return TraceLines{1 + t, 1 + t}; }));
+    const ProcessResult r = cutaway({"volume", sparse, "--caster", "cpu", "--out", out("v.png")});
+    expect_refused(r, {"sparse.sgy", "at least 10% of its traces present", "380 of 400 missing"});
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "more than one line: " << r.err;
+    // f3.sgy is 23 x 18 x 75 voxels: a million voxels away it covers a few hundredths of a pixel.
+    expect_refused(cutaway({"volume", seismic_cube(), "--caster", "cpu", "--camera", "0", "30", "1e6", "--out", out("v.png")}),
+                   {"--camera", "covers under a pixel"});
+    expect_no_output();
+}
+
 // ---- geometry sanity before allocation ------------------------------------------------------
 
 TEST_F(BadInput, PillarsAtOnePointAreRefusedFromCoordAlone) {
