@@ -112,16 +112,27 @@ protected:
         for (const std::string& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
     }
 
-    /// `inspect` of an NX x NY x NZ grid (its last pillar at x = y = 1, the others at 0, so that the
-    /// pillars span an area) whose ZCORN is all zeros for the first half of its values and
-    /// all ones for the rest (every layer then differs from the one above half-way, so the store must
-    /// switch to the full layout), refused under `limit_gb`; returns the child's result.
+    /// COORD of an NX x NY grid of vertical unit pillars at integer x, y (pillar (i, j) at x = i,
+    /// y = j): written out in full, as a real grid's is (repeat counts cannot make pillars differ).
+    static std::string unit_coord(int nx, int ny) {
+        std::string text = "COORD\n";
+        text.reserve(std::size_t(nx + 1) * std::size_t(ny + 1) * 24);
+        for (int j = 0; j <= ny; ++j)
+            for (int i = 0; i <= nx; ++i) {
+                const std::string x = std::to_string(i), y = std::to_string(j);
+                text.append(x).append(" ").append(y).append(" 0 ").append(x).append(" ").append(y).append(" 1\n");
+            }
+        return text + "/\n";
+    }
+
+    /// `inspect` of an NX x NY x NZ grid (unit_coord) whose ZCORN is all zeros for the first half of
+    /// its values and all ones for the rest (every layer then differs from the one above half-way,
+    /// so the store must switch to the full layout), refused under `limit_gb`; returns the child's result.
     ProcessResult refused_half_zero_zcorn(const std::string& name, int nx, int ny, int nz, const std::string& limit_gb) const {
-        const std::size_t pillars = std::size_t(nx + 1) * std::size_t(ny + 1), half = std::size_t(4) * nx * ny * nz;
+        const std::size_t half = std::size_t(4) * nx * ny * nz;
         const fs::path grid = file(name, "SPECGRID\n " + std::to_string(nx) + " " + std::to_string(ny) + " " +
-                                                  std::to_string(nz) + " 1 F /\nCOORD\n " + std::to_string(6 * (pillars - 1)) +
-                                                  "*0 1 1 0 1 1 1 /\nZCORN\n " + std::to_string(half) + "*0 " + std::to_string(half) +
-                                                  "*1 /\n");
+                                             std::to_string(nz) + " 1 F /\n" + unit_coord(nx, ny) + "ZCORN\n " +
+                                             std::to_string(half) + "*0 " + std::to_string(half) + "*1 /\n");
         ProcessResult r = cutaway({"inspect", grid, "--memory-limit-gb", limit_gb});
         expect_refused(r, {name, "ZCORN", "full layout", "memory limit"});
         std::printf("%s: peak %.0f MiB\n", name.c_str(), r.peak_rss_mb);

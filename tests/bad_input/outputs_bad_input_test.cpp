@@ -247,4 +247,18 @@ TEST_F(BadInput, PillarsAtOnePointAreRefusedFromCoordAlone) {
     expect_no_output();
 }
 
+TEST_F(BadInput, GridOfCoincidingPillarsIsRefusedFromCoordAlone) {
+    // The pillars span an area (half at x = y = 0, half at 1), but almost every one equals its
+    // neighbour: 1000 x 1000 x 100 cells without width, declared in 98 bytes.
+    const fs::path grid = file("pairs.grdecl",
+                               "SPECGRID\n1000 1000 100 1 F /\nCOORD\n3006003*0 3006003*1 /\nZCORN\n800000000*0 /\n"
+                               "PORO\n100000000*0.2 /\n");
+    const ProcessResult r = cutaway({"inspect", grid.string()});
+    expect_refused(r, {"pairs.grdecl:3", "COORD", "pillars at distinct places", "equal to their neighbour along i"});
+    EXPECT_LT(r.seconds, 5);
+    if (kMeasureMemory) {
+        EXPECT_LT(r.peak_rss_mb, 48 + kBaselineRssMb);  // COORD is 48 MB as doubles
+    }
+}
+
 }  // namespace
