@@ -5,6 +5,7 @@
 #include "deck_number.h"
 #include "flow_fluid_model.h"
 #include "grid/grdecl_writer.h"
+#include "io/output_batch.h"
 #include "io/staged_file.h"
 
 namespace cutaway::generators {

@@ -35,6 +35,7 @@
 #include "gl/image.h"
 #include "grid/primary_selection.h"
 #include "io/mp4_encoder.h"
+#include "io/output_batch.h"
 #include "io/staged_file.h"
 #include "metrics/image_metrics.h"
 #include "metrics/temporal_metrics.h"
@@ -104,10 +105,9 @@ int animate(const AnimateOptions& options) {
     if (scene.property.empty()) throw std::invalid_argument("--property: expected the dynamic property to animate (e.g. SWAT)");
     if (scene.step >= 0) throw std::invalid_argument("--step: animate shows report steps --steps FIRST LAST instead");
     if (!scene.select_by.empty()) throw std::invalid_argument("--select-by: not available in animate");
-    std::vector<std::pair<std::string, std::string>> files;
-    for (const std::string& model : scene.model) files.emplace_back("the model", model);
-    files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}});
-    refuse_shared_outputs(files);
+    std::vector<io::NamedFile> inputs;
+    for (const std::string& model : scene.model) inputs.push_back({"the model", model});
+    refuse_overwrites(inputs, {{"--out", options.out}, {"--stats", options.stats}});
     io::require_even_size(scene.width, scene.height);
     const temporal::Coherence coherence = temporal::parse_coherence(options.coherence);
     pipeline::FrameSettings settings = scene.frame_settings();

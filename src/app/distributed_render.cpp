@@ -34,7 +34,8 @@
 #include "gl/image.h"
 #include "grid/face_classification.h"
 #include "grid/grid_box.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
+#include "io/output_error.h"
 #include "metrics/median.h"
 
 namespace cutaway::app {
@@ -106,7 +107,8 @@ struct RankScene {
             provisional = distributed::equal_slab(whole_dims, mpi.size(), mpi.rank(), axis);
             active_per_layer.assign(std::size_t(distributed::layer_count(whole_dims, axis)), 0);
             if (!provisional) return;
-            model = load_block(options.model, *provisional, options.model_memory_limit_bytes(), options.property);
+            model = load_block(options.model, *provisional, options.model_memory_limit_bytes(), options.property,
+                               render_outputs(options));
             active_per_layer = distributed::active_per_layer(model.grid, *provisional, whole_dims, axis);
         });
         mpi.sum(active_per_layer);
@@ -119,7 +121,8 @@ struct RankScene {
             if (!(provisional && *provisional == source)) {
                 const double first_load_s = model.load_seconds;
                 model = {};
-                model = load_block(options.model, source, options.model_memory_limit_bytes(), options.property);
+                model = load_block(options.model, source, options.model_memory_limit_bytes(), options.property,
+                                   render_outputs(options));
                 model.load_seconds += first_load_s;
             }
             property = choose_property(model.grid, options, source.k0);
@@ -292,6 +295,10 @@ json distributed_json(const distributed::MpiSession& mpi, const RankScene& scene
 int render_frames(const RenderOptions& options, const distributed::MpiSession& mpi, RankScene& scene) {
     scene.start(options);
     distributed::RankRenderer& rank = *scene.rank;
+    const std::uint64_t primary_count = mpi.sum(rank.renderer().status().primary_cells);
+    on_all_ranks(mpi, [&] {
+        refuse_nothing_to_draw(options, primary_count, scene.property.name, scene.property.primary_range);
+    });
     const pipeline::FrameSettings settings = options.frame_settings();
     for (int i = 0; i < options.warmup; ++i) rank.render(settings, scene.camera);
     std::vector<pipeline::FrameTimes> runs;
@@ -304,14 +311,17 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     std::vector<std::string> stage_order;
     for (const auto& [name, value] : stats["stages_ms"].items()) stage_order.push_back(name);
     const std::vector<double> gathered = mpi.gather(rank_numbers(scene, stats, exchange, stage_order));
-    const std::uint64_t primary_count = mpi.sum(rank.renderer().status().primary_cells);
     const pipeline::FacesDrawn drawn = rank.renderer().faces_drawn();
     const std::uint64_t faces_secondary = mpi.sum(drawn.secondary), faces_primary = mpi.sum(drawn.primary);
     if (!mpi.root()) return 0;
 
-    gl::write_png(rank.renderer().read_image(), options.out);
+    // Committed together once the stats are written too (render_command.cpp).
+    io::OutputBatch outputs;
+    outputs.write(options.out, gl::encode_png(rank.renderer().read_image(), options.out));
     if (!options.cell_ids.empty())
-        gl::write_png(pipeline::encode_cell_ids(rank.composited_ids(), options.width, options.height), options.cell_ids);
+        outputs.write(options.cell_ids,
+                      gl::encode_png(pipeline::encode_cell_ids(rank.composited_ids(), options.width, options.height),
+                                     options.cell_ids));
     const PropertyChoice& property = scene.property;
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
@@ -345,7 +355,8 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
     stats["distributed"] = distributed_json(mpi, scene, gathered, stage_order, rank.last_exchange().allreduce_bytes);
-    if (!options.stats.empty()) io::write_file(options.stats, stats.dump(2) + '\n');
+    if (!options.stats.empty()) outputs.write(options.stats, stats.dump(2) + '\n');
+    outputs.commit();
     std::cout << "cutaway render: " << options.out << " (" << primary_count << " primary cells, " << mpi.size()
               << " ranks, total " << stats["stages_ms"]["total"].get<double>() << " ms median of " << options.repeat
               << ")\n";
@@ -361,6 +372,11 @@ int run_distributed_render(const RenderOptions& options) {
     // reported once).
     RankScene scene;
     try {
+        // Before any rank reads the model: rank 0 alone checks that no output overwrites an input
+        // or another output (one file system view, one message), and every rank learns its verdict.
+        on_all_ranks(mpi, [&] {
+            if (mpi.root()) refuse_render_overwrites(options);
+        });
         scene.prepare(options, mpi);
     } catch (const AgreedFailure& failure) {
         if (mpi.root()) std::cerr << "cutaway: " << failure.message << '\n';
@@ -368,6 +384,15 @@ int run_distributed_render(const RenderOptions& options) {
     }
     try {
         return render_frames(options, mpi, scene);
+    } catch (const AgreedFailure& failure) {
+        if (mpi.root()) std::cerr << "cutaway: " << failure.message << '\n';
+        return failure.code;
+    } catch (const io::OutputError& error) {
+        // Rank 0 writes after the last collective, when the other ranks are done: it reports the
+        // failed write and ends as a single process does (its OutputBatch removed what it staged).
+        if (!mpi.root()) mpi.abort(exit_bad_input);
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return exit_bad_input;
     } catch (...) {
         // Mid-frame a rank may fail alone while the others wait in a collective: end them all.
         std::cerr << "cutaway: rank " << mpi.rank() << " of " << mpi.size() << ": " << exit_status_of(std::current_exception()).message

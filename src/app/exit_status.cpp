@@ -18,11 +18,7 @@ ExitStatus exit_status_of(const std::exception_ptr& error) {
     } catch (const gl::GlError& e) {
         return {exit_gl_failure, std::string("OpenGL: ") + e.what()};
     } catch (const std::bad_alloc&) {
-        // Budgets are checked before large allocations (--memory-limit-gb), so this is the machine
-        // (or an address-space limit) running out below the budget.
-        return {exit_out_of_memory,
-                "out of memory below the --memory-limit-gb budget: lower --memory-limit-gb to what this machine "
-                "(or its ulimit -v) can give, or use a smaller model or image"};
+        return {exit_out_of_memory, out_of_memory_message};
     } catch (const std::exception& e) {
         return {exit_failure, e.what()};
     } catch (...) {

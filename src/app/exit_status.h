@@ -4,12 +4,9 @@
 #include <exception>
 #include <string>
 
-namespace cutaway::app {
+#include "app/exit_codes.h"
 
-inline constexpr int exit_failure = 1;        ///< an unexpected error (a bug: please report it)
-inline constexpr int exit_bad_input = 2;      ///< a file, option or output refused; nothing written
-inline constexpr int exit_out_of_memory = 3;  ///< an allocation failed
-inline constexpr int exit_gl_failure = 4;     ///< no usable OpenGL context, or a GL error
+namespace cutaway::app {
 
 struct ExitStatus {
     int code = exit_failure;

@@ -15,7 +15,7 @@
 #include "generators/presets.h"
 #include "generators/write_progress.h"
 #include "grid/grdecl_writer.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 
 namespace cutaway::app {
 namespace {
@@ -28,7 +28,7 @@ struct GenerateOptions {
     std::vector<double> extent;
     std::string out;
     std::string deck;
-    double memory_limit_gb = double(generators::kDefaultGeneratorMemoryLimit) / double(1 << 30);
+    double memory_limit_gb = default_memory_limit_gib;
     bool quiet = false;
     bool list_presets = false;
     ParameterOverrides<GeneratorParameters> overrides;
@@ -69,7 +69,7 @@ int run_generate(const GenerateOptions& options) {
     const GeneratorParameters parameters = effective_parameters(options);
     const generators::FlowDeckFiles deck_files = generators::flow_deck_files(options.deck, deck_case_name(parameters));
     if (!options.deck.empty())
-        refuse_shared_outputs({{"--deck", deck_files.grid.string()}, {"--deck", deck_files.data.string()},
+        refuse_overwrites({}, {{"--deck", deck_files.grid.string()}, {"--deck", deck_files.data.string()},
                                {"--out", options.out}});
     std::ostream* log = options.quiet ? nullptr : &std::cerr;
     generators::ProgressLog progress(log);

@@ -24,7 +24,7 @@ struct GenerateSeismicOptions {
     bool little_endian = false;
     bool crossline_sorted = false;
     bool list_presets = false;
-    double memory_limit_gb = double(generators::kDefaultSeismicMemoryLimit) / double(1 << 30);
+    double memory_limit_gb = default_memory_limit_gib;
     std::string out;
     ParameterOverrides<SeismicParameters> overrides;
 };

@@ -10,7 +10,8 @@
 #include "app/model_source.h"
 #include "app/option_checks.h"
 #include "grid/grid_summary.h"
-#include "io/staged_file.h"
+#include "grid/primary_selection.h"
+#include "io/output_batch.h"
 
 namespace cutaway::app {
 namespace {
@@ -19,7 +20,7 @@ struct InspectOptions {
     std::vector<std::string> files;
     bool json = false;
     std::string cells_csv;
-    double memory_limit_gb = 16;
+    double memory_limit_gb = default_memory_limit_gib;
 };
 
 std::string shortest(double value) {
@@ -99,14 +100,22 @@ void print_text(std::ostream& out, const nlohmann::json& j) {
     for (const auto& w : j["warnings"]) out << "warning: " << w.get<std::string>() << '\n';
 }
 
+/// Refuses NaN or infinity in an active cell of any real property (every step of a dynamic one),
+/// as `render` refuses the property it colours by: a report must not call such a model usable.
+void refuse_non_finite_properties(const grid::CornerPointGrid& grid) {
+    for (const std::string& name : grid.property_names()) grid::check_finite_active(grid, *grid.property(name), name);
+    for (const std::string& name : grid.dynamic_property_names())
+        for (std::size_t step = 0; step < grid.step_count(name); ++step)
+            grid::check_finite_active(grid, *grid.dynamic_property(name, step), name + " step " + std::to_string(step));
+}
+
 int run_inspect(const InspectOptions& options) {
-    std::vector<std::pair<std::string, std::string>> files;
-    for (const std::string& model : options.files) files.emplace_back("the model", model);
-    files.emplace_back("--cells-csv", options.cells_csv);
-    refuse_shared_outputs(files);
+    const std::vector<io::NamedFile> outputs{{"--cells-csv", options.cells_csv}};
+    refuse_overwrites(model_input_files(options.files), outputs);
     using clock = std::chrono::steady_clock;
-    const LoadedModel model = load_model(options.files, gib_to_bytes(options.memory_limit_gb));
+    const LoadedModel model = load_model(options.files, gib_to_bytes(options.memory_limit_gb), std::nullopt, outputs);
     const grid::CornerPointGrid& grid = model.grid;
+    refuse_non_finite_properties(grid);
     const auto t1 = clock::now();
     const grid::GridSummary summary = grid::summarize(grid);
     const double summary_ms = std::chrono::duration<double, std::milli>(clock::now() - t1).count();

@@ -2,19 +2,28 @@
 #include <exception>
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "app/commands.h"
-#include "app/heap_policy.h"
 #include "app/exit_status.h"
+#include "app/heap_policy.h"
 #include "app/mpi_launch.h"
+#include "io/interrupt_cleanup.h"
 
 int main(int argc, char** argv) {
     cutaway::app::keep_freed_heap_memory();
+    // Ctrl-C or kill removes the temporary files of outputs not yet committed (exit 130 or 143).
+    const cutaway::io::InterruptCleanup interrupt_cleanup;
     CLI::App app{"cutaway: corner-point reservoir grids, cutaway rendering and seismic ray casting benchmarks"};
     app.require_subcommand(1);
-    // Refused command lines read like every other refusal: "cutaway: --option: expected ..., found ...".
-    app.failure_message([](const CLI::App*, const CLI::Error& error) {
-        return "cutaway: " + std::string(error.what()) + "\n(cutaway SUBCOMMAND --help lists the options)\n";
+    // Refused command lines read like every other refusal, on one line: "cutaway: --option:
+    // expected ..., found ... (cutaway render --help lists the options)".
+    app.failure_message([](const CLI::App* top, const CLI::Error& error) {
+        const std::vector<CLI::App*> chosen = top->get_subcommands();
+        const std::string help = chosen.empty() ? "cutaway --help lists the subcommands"
+                                                : "cutaway " + chosen.front()->get_name() + " --help lists the options";
+        return "cutaway: " + std::string(error.what()) + " (" + help + ")\n";
     });
     // One line per subcommand: its registration returns the action run when it is chosen.
     const cutaway::app::CommandAction inspect = cutaway::app::add_inspect_command(app);
@@ -33,7 +42,8 @@ int main(int argc, char** argv) {
         // prints it (every rank parses the same command line).
         std::ostringstream silenced;
         const bool quiet = cutaway::app::mpi_rank_from_launcher() > 0;
-        return (quiet ? app.exit(error, silenced, silenced) : app.exit(error)) == 0 ? 0 : 2;
+        return (quiet ? app.exit(error, silenced, silenced) : app.exit(error)) == 0 ? cutaway::app::exit_success
+                                                                                   : cutaway::app::exit_bad_input;
     }
     try {
         if (app.got_subcommand("inspect")) return inspect();

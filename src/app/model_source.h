@@ -7,6 +7,7 @@
 
 #include "grid/corner_point_grid.h"
 #include "grid/primary_selection.h"
+#include "io/file_identity.h"
 
 namespace cutaway::app {
 
@@ -23,8 +24,14 @@ struct LoadedModel {
 /// SWAT steps: about a quarter of a generation's time and 4 bytes per cell and step) unless SWAT is
 /// asked for; the other arrays are the same bit for bit (each stage has its own random stream).
 /// std::nullopt keeps every property (the viewer switches between them).
+/// `outputs`: the run's output files, refused (std::invalid_argument) when an INCLUDE names one,
+/// before that INCLUDE is read (the files named on the command line are checked by the caller).
 LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory_limit_bytes,
-                       const std::optional<std::string>& only_property = std::nullopt);
+                       const std::optional<std::string>& only_property = std::nullopt,
+                       const std::vector<io::NamedFile>& outputs = {});
+
+/// The files `model` names ("the model" each), none for a preset: what no output may overwrite.
+std::vector<io::NamedFile> model_input_files(const std::vector<std::string>& model);
 
 /// The whole model's dimensions without loading it: a preset's, or the files' SPECGRID/DIMENS
 /// (read no further).
@@ -36,7 +43,8 @@ grid::GridDims model_dims(const std::vector<std::string>& model, std::size_t mem
 /// values as they are parsed (grid::GrdeclReadOptions::block). `property`: the one the caller will
 /// use (empty: the default); a preset's SWAT needs the whole model's flood and throws
 /// std::invalid_argument.
+/// `outputs` as for load_model.
 LoadedModel load_block(const std::vector<std::string>& model, const grid::IjkBox& box, std::size_t memory_limit_bytes,
-                       const std::string& property);
+                       const std::string& property, const std::vector<io::NamedFile>& outputs = {});
 
 }  // namespace cutaway::app

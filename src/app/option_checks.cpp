@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
@@ -118,6 +117,16 @@ CLI::Validator utf8_text() {
         "UTF-8");
 }
 
+CLI::Validator property_name() {
+    const CLI::Validator utf8 = utf8_text();
+    return CLI::Validator(
+        [utf8](std::string& text) -> std::string {
+            if (text.empty()) return "expected a property keyword (PORO, SWAT, ...), found an empty one";
+            return utf8(text);
+        },
+        "NAME");
+}
+
 CLI::Validator writable_output() {
     return CLI::Validator([](std::string& path) { return io::output_path_problem(path); }, "FILE");
 }
@@ -126,23 +135,16 @@ CLI::Validator writable_output_directory() {
     return CLI::Validator([](std::string& path) { return io::output_directory_problem(path); }, "DIR");
 }
 
-void refuse_shared_outputs(const std::vector<std::pair<std::string, std::string>>& outputs) {
-    std::error_code error;
-    for (std::size_t a = 0; a < outputs.size(); ++a)
-        for (std::size_t b = a + 1; b < outputs.size(); ++b) {
-            if (outputs[a].second.empty() || outputs[b].second.empty()) continue;
-            const auto first = std::filesystem::weakly_canonical(outputs[a].second, error);
-            const auto second = std::filesystem::weakly_canonical(outputs[b].second, error);
-            if (first == second)
-                throw std::invalid_argument(outputs[b].first + ": expected a file other than " + outputs[a].first +
-                                            "'s, found the same path " + shown(outputs[b].second));
-        }
+void refuse_overwrites(const std::vector<io::NamedFile>& inputs, const std::vector<io::NamedFile>& outputs) {
+    if (const std::string problem = io::overwrite_problem(inputs, outputs); !problem.empty())
+        throw std::invalid_argument(problem);
 }
 
 std::size_t gib_to_bytes(double gib) { return std::size_t(gib * double(std::size_t(1) << 30)); }
 
 void add_memory_limit_option(CLI::App& command, double& gib, const std::string& what) {
     command.add_option("--memory-limit-gb", gib, "refuse " + what + " needing more memory than this (GiB)")
+        ->capture_default_str()
         ->check(finite_above(0, max_memory_limit_gib, "GiB"));
 }
 

@@ -2,8 +2,10 @@
 // Command-line options bound to fields of a generator's parameter struct: an option given on the
 // command line overrides the preset's value, one left out keeps it.
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -22,6 +24,8 @@ void add_parameter_option(CLI::App* command, ParameterOverrides<Parameters>& ove
     auto value = std::make_shared<T>();
     // NaN and infinity never reach a generator (its own checks give each value's range).
     CLI::Option* option = command->add_option(name, *value, help)->check(finite_number());
+    // An unsigned field would take -1 as its largest value (strtoull wraps): refused instead.
+    if constexpr (std::is_unsigned_v<T>) option->check(finite_in(0, double(std::numeric_limits<T>::max())));
     overrides.push_back([option, value, field](Parameters& p) {
         if (option->count() > 0) p.*field = *value;
     });

@@ -27,7 +27,7 @@
 #include "gl/image.h"
 #include "metrics/cut_error.h"
 #include "grid/primary_selection.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 #include "metrics/median.h"
 
 namespace cutaway::app {
@@ -52,17 +52,25 @@ json exact_check(pipeline::CutawayRenderer& renderer, const pipeline::FrameSetti
             {"exact_seconds", seconds}};
 }
 
+/// `options` for the colouring property: --step belongs to the --select-by property when that one
+/// is dynamic and the colouring one is static (`--select-by SWAT --step 3` colours by PORO).
+RenderOptions colouring_options(const grid::CornerPointGrid& grid, const RenderOptions& options) {
+    RenderOptions colouring = options;
+    const bool selection_dynamic = !options.select_by.empty() && grid.step_count(options.select_by) > 0;
+    const bool colouring_static = options.property.empty() ? !grid.property_names().empty()
+                                                           : grid.step_count(options.property) == 0;
+    if (selection_dynamic && colouring_static) colouring.step = -1;
+    return colouring;
+}
+
 int run_render(const RenderOptions& options) {
     if (launched_by_mpi()) return run_distributed_render(options);
-    // Inputs first: an output naming a model file would overwrite it.
-    std::vector<std::pair<std::string, std::string>> files;
-    for (const std::string& model : options.model) files.emplace_back("the model", model);
-    files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
-    refuse_shared_outputs(files);
-    LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options));
+    refuse_render_overwrites(options);
+    LoadedModel model =
+        load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options), render_outputs(options));
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
-    PropertyChoice property = choose_property(model.grid, options);
+    PropertyChoice property = choose_property(model.grid, colouring_options(model.grid, options));
     const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
     const std::optional<SecondPropertySelection> selected_by = select_by_second_property(model.grid, options);
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
@@ -92,6 +100,7 @@ int run_render(const RenderOptions& options) {
     const std::size_t primary_count = renderer.status().primary_cells;
     const std::string selected_name = selected_by ? selected_by->label : property.label;
     const grid::PrimaryRange selected_range = selected_by ? selected_by->range : property.primary_range;
+    refuse_nothing_to_draw(options, primary_count, selected_name, selected_range);
     if (primary_count == 0)
         std::cerr << "cutaway render: no cell of " << selected_name << " lies in the primary range ["
                   << selected_range.min << ", " << selected_range.max << "]; rendering the context only\n";
@@ -106,9 +115,13 @@ int run_render(const RenderOptions& options) {
     std::vector<pipeline::FrameTimes> runs;
     for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
     memory["resident_after_frames"] = run_context::proc_status_bytes("VmRSS");
-    gl::write_png(renderer.read_image(), options.out);
+    // Committed together once the stats are written too: a failed --stats leaves no image behind.
+    io::OutputBatch outputs;
+    outputs.write(options.out, gl::encode_png(renderer.read_image(), options.out));
     if (!options.cell_ids.empty())
-        gl::write_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width, options.height), options.cell_ids);
+        outputs.write(options.cell_ids, gl::encode_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width,
+                                                                                 options.height),
+                                                       options.cell_ids));
 
     json stats = stage_statistics(runs);
     stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
@@ -169,7 +182,8 @@ int run_render(const RenderOptions& options) {
     stats["configuration"] = options.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
-    if (!options.stats.empty()) io::write_file(options.stats, stats.dump(2) + '\n');
+    if (!options.stats.empty()) outputs.write(options.stats, stats.dump(2) + '\n');
+    outputs.commit();
     std::cout << "cutaway render: " << options.out << " (" << primary_count << " primary cells, total "
               << stats["stages_ms"]["total"].get<double>() << " ms median of " << options.repeat << ")\n";
     return 0;

@@ -103,7 +103,8 @@ nlohmann::json RenderOptions::describe() const {
 }
 
 void add_selection_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)")->check(utf8_text());
+    c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)")
+        ->check(property_name());
     c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2)->check(finite_in(-FLT_MAX, FLT_MAX));
     c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)")
         ->check(finite_above(0, 1));
@@ -199,7 +200,7 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--select-by", o.select_by,
                  "choose primaries by this property (its --range or --primary-fraction) while --property colours "
                  "the cells: two properties in one frame")
-        ->check(utf8_text());
+        ->check(property_name());
     c.add_flag("--baseline", o.baseline, "also time a plain shaded frame of the whole model (baseline_ms)");
     c.add_flag("!--no-metrics", o.metrics, "skip the image metrics (3 extra untimed frames)");
     c.add_flag("--exact-check", o.exact_check,

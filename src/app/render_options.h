@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "annotation/colour_bar_layout.h"
+#include "app/option_checks.h"
 #include "cutaway/camera.h"
 #include "cutaway/frame_settings.h"
 #include "gl/gl_context.h"
@@ -59,7 +60,7 @@ struct RenderOptions {
     int warmup = 1;
     int repeat = 3;
     std::string egl_platform = "auto";
-    double memory_limit_gb = 16;
+    double memory_limit_gb = default_memory_limit_gib;
     std::string rank_slabs = "k";     ///< under mpirun: the axis the model is cut along into slabs
 
     std::size_t memory_limit_bytes() const;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "app/model_source.h"
 #include "app/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "metrics/median.h"
@@ -71,6 +72,14 @@ void put_metric(json& stats, const std::string& key, double fraction, std::size_
     stats[key + "_absent"] = why_absent;
 }
 
+std::vector<io::NamedFile> render_outputs(const RenderOptions& options) {
+    return {{"--out", options.out}, {"--cell-ids", options.cell_ids}, {"--stats", options.stats}};
+}
+
+void refuse_render_overwrites(const RenderOptions& options) {
+    refuse_overwrites(model_input_files(options.model), render_outputs(options));
+}
+
 void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options) {
     const glm::vec3 extent = frame.render_max - frame.render_min;
     const bool finite = std::isfinite(extent.x) && std::isfinite(extent.y) && std::isfinite(extent.z) &&
@@ -79,11 +88,25 @@ void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options)
         throw std::invalid_argument(
             options.model.front() + ": expected a model with a finite, non-zero horizontal extent in single precision " +
             "(render units), found " + number_text(extent.x) + " x " + number_text(extent.y) + " x " + number_text(extent.z));
+    // Beyond this distance the model's radius spans less than a pixel of the frame's height: an
+    // empty frame (the cut camera alone may be that far: it draws no pixel of its own).
+    const double farthest = frame.radius() * 0.5 * options.height / std::tan(0.5 * double(glm::radians(pipeline::default_fovy_deg)));
     for (const auto& [option, pose] : {std::pair{"--camera", std::optional(options.camera_pose())},
-                                       std::pair{"--freeze-camera", options.freeze_pose}})
+                                       std::pair{"--freeze-camera", options.freeze_pose}}) {
         if (pose && pose->distance > 0 && pose->distance < frame.radius())
             throw std::invalid_argument(std::string(option) + ": expected DIST 0 (frame the model) or at least the model's radius " +
                                         number_text(frame.radius()) + " (outside it), found " + number_text(pose->distance));
+        if (pose && std::string(option) == "--camera" && pose->distance > farthest)
+            throw std::invalid_argument("--camera: expected DIST 0 (frame the model) or at most " + number_text(farthest) +
+                                        " (farther, the model covers under a pixel), found " + number_text(pose->distance));
+    }
+}
+
+void refuse_nothing_to_draw(const RenderOptions& options, std::size_t primary_count, const std::string& selected_name,
+                            const grid::PrimaryRange& range) {
+    if (primary_count == 0 && options.frame_settings().only == pipeline::OnlyLayer::primaries)
+        throw std::invalid_argument("--only primaries: expected primary cells to draw, found no cell of " + selected_name +
+                                    " in the primary range [" + number_text(range.min) + ", " + number_text(range.max) + "]");
 }
 
 }  // namespace cutaway::app

@@ -7,6 +7,7 @@
 
 #include "app/render_options.h"
 #include "cutaway/cutaway_renderer.h"
+#include "io/file_identity.h"
 
 namespace cutaway::app {
 
@@ -26,8 +27,21 @@ nlohmann::json strategy_json(const pipeline::CutSurfaceEntry& drawn, const std::
 void put_metric(nlohmann::json& stats, const std::string& key, double fraction, std::size_t denominator,
                 const std::string& why_absent);
 
+/// --out, --cell-ids and --stats (empty: not given), for the overwrite checks.
+std::vector<io::NamedFile> render_outputs(const RenderOptions& options);
+
+/// Refuses --out, --cell-ids and --stats naming a model file or each other, however spelled (by
+/// file identity): checked before the model is read (on rank 0 alone under mpirun).
+void refuse_render_overwrites(const RenderOptions& options);
+
 /// Refuses a camera that would see nothing: a model without extent (all pillars at one x, y, or
-/// coordinates whose extent overflows single precision) or a DIST inside the model.
+/// coordinates whose extent overflows single precision), a DIST inside the model, or a --camera
+/// DIST so far that the model covers under a pixel.
 void check_view(const pipeline::ModelFrame& frame, const RenderOptions& options);
+
+/// Refuses --only primaries when no cell is a primary (`selected_name`'s cells in `range`): the
+/// frame would hold nothing but the outline.
+void refuse_nothing_to_draw(const RenderOptions& options, std::size_t primary_count, const std::string& selected_name,
+                            const grid::PrimaryRange& range);
 
 }  // namespace cutaway::app

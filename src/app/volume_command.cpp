@@ -20,7 +20,8 @@
 #include "gl/image.h"
 #include "gl/shader_library.h"
 #include "gl/stage_timer.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
+#include "io/path_text.h"
 #include "annotation/colour_bar_layout.h"
 #include "volume/colour_bar.h"
 #include "volume/cpu_ray_caster.h"
@@ -59,7 +60,7 @@ struct VolumeOptions {
     unsigned threads = 0;
     int warmup = 1;
     int repeat = 1;
-    double memory_limit_gb = 4;
+    double memory_limit_gb = default_memory_limit_gib;
     volume::SegyReadOptions read;
     RayCastSettings settings;
 };
@@ -195,6 +196,23 @@ void apply_options(VolumeOptions& o, volume::TransferFunctionSettings& tf) {
     o.read.memory_limit_bytes = limit - target_bytes;
 }
 
+/// The largest share of a survey's traces that may be missing (filled with --null-value): beyond
+/// it the image shows the null value almost everywhere.
+constexpr double max_missing_trace_fraction = 0.9;
+
+/// Refuses a cube whose image would be blank: almost every trace missing, or every sample equal
+/// (one transfer-function level throughout).
+void refuse_blank_cube(const volume::VolumeCube& cube, const volume::QuantisedVolume& levels) {
+    const std::size_t traces = std::size_t(cube.dims.inlines) * std::size_t(cube.dims.crosslines);
+    if (double(cube.missing_traces.size()) > max_missing_trace_fraction * double(traces))
+        throw std::invalid_argument(io::shown_path(cube.source) + ": expected a survey with at least " +
+                                    number_text(100 * (1 - max_missing_trace_fraction)) + "% of its traces present, found " +
+                                    std::to_string(cube.missing_traces.size()) + " of " + std::to_string(traces) + " missing");
+    if (!(levels.range.max > levels.range.min))
+        throw std::invalid_argument(io::shown_path(cube.source) + ": expected amplitudes that vary, found every sample equal to " +
+                                    number_text(levels.range.min) + " (the image would be blank)");
+}
+
 /// An eye inside the cube sees nothing but the voxels around it (a blank image in practice).
 void refuse_eye_inside(const volume::ViewGeometry& view) {
     const glm::vec3& eye = view.eye_voxel;
@@ -203,43 +221,38 @@ void refuse_eye_inside(const volume::ViewGeometry& view) {
                                     number_text(view.distance) + " (the eye is inside the cube)");
 }
 
-int run_volume(VolumeOptions& o) {
-    volume::TransferFunctionSettings tf;
-    apply_options(o, tf);
-    refuse_shared_outputs({{"the cube", o.cube}, {"--out", o.out}, {"--stats", o.stats}});
+/// A cube so far away that it covers less than a pixel either way: the frame would hold nothing
+/// but the colour bar.
+void refuse_cube_under_a_pixel(const volume::ViewGeometry& view, int width, int height) {
+    glm::vec2 low(FLT_MAX), high(-FLT_MAX);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 voxel(corner & 1 ? view.box.x : 0.0f, corner & 2 ? view.box.y : 0.0f, corner & 4 ? view.box.z : 0.0f);
+        const glm::vec4 clip = view.voxel_to_clip * glm::vec4(voxel, 1.0f);
+        if (!(clip.w > 0)) return;  // a corner beside or behind the eye: the cube is near, not far
+        low = glm::min(low, glm::vec2(clip) / clip.w);
+        high = glm::max(high, glm::vec2(clip) / clip.w);
+    }
+    const double across = 0.5 * double(high.x - low.x) * width, up = 0.5 * double(high.y - low.y) * height;
+    if (across < 1 && up < 1)
+        throw std::invalid_argument("--camera: expected DIST 0 (frame the cube) or one at which it covers a pixel, found DIST " +
+                                    number_text(view.distance) + " (the cube covers under a pixel: " + number_text(across) +
+                                    " x " + number_text(up) + ")");
+}
 
-    Clock::time_point start = Clock::now();
-    const volume::VolumeCube cube = volume::load_segy(o.cube, o.read);
-    const double load_ms = elapsed_ms(start);
-    refuse_eye_inside(volume::make_view(cube.dims, o.settings));
-    if (!cube.missing_traces.empty())
-        std::cerr << "cutaway: " << cube.source << ": irregular survey, " << cube.missing_traces.size()
-                  << " missing traces filled with " << cube.null_value << '\n';
-    start = Clock::now();
-    const volume::QuantisedVolume levels = volume::quantise(cube);
-    if (o.window == "auto") tf.window = volume::percentile_window(levels);
-    if (o.layer.empty()) tf.layer = volume::fitted_layer(tf.window);
-    const volume::VolumeScene scene =
-        volume::make_scene(levels, volume::build_transfer_table(tf), o.settings.block_size, tf.window);
-    // The cube is framed left of the colour bar it will carry (never more than half the width).
-    if (o.settings.colour_bar)
-        o.settings.reserved_right_px =
-            std::min(0.5f * float(o.settings.width), annotation::colour_bar_reserved_width(volume::colour_bar_label(scene),
-                                                                                        o.settings.width, o.settings.height));
-    const double prepare_ms = elapsed_ms(start);
+/// The timed frames' median ray-cast time, ms.
+double ray_cast_ms(FrameRuns& runs) { return median(runs.stages["ray_cast"].wall_ms); }
 
+/// Samples the last frame took per second of the median ray-cast time.
+double samples_per_second(FrameRuns& runs) {
+    const double ms = ray_cast_ms(runs);
+    return ms > 0 ? double(runs.last.samples) / (ms * 1e-3) : 0;
+}
+
+/// stats.json of a volume run: input, configuration, stage medians, sample counts, machine.
+nlohmann::json volume_stats(const VolumeOptions& o, const volume::TransferFunctionSettings& tf, const volume::VolumeCube& cube,
+                            const volume::QuantisedVolume& levels, const volume::VolumeScene& scene, FrameRuns& runs,
+                            double load_ms, double prepare_ms) {
     const unsigned threads = o.threads > 0 ? o.threads : std::max(1u, std::thread::hardware_concurrency());
-    FrameRuns runs = o.caster == "gpu" ? run_gpu(scene, o) : run_cpu(scene, o);
-    gl::write_png(runs.last.image, o.out);
-
-    const double ray_cast_ms = median(runs.stages["ray_cast"].wall_ms);
-    const double samples_per_second = ray_cast_ms > 0 ? double(runs.last.samples) / (ray_cast_ms * 1e-3) : 0;
-    std::cout << o.out << ": " << o.caster << " caster, " << volume::transfer_function_name(tf.kind) << ", "
-              << cube.dims.inlines << "x" << cube.dims.crosslines << "x" << cube.dims.samples << ", ray cast "
-              << ray_cast_ms << " ms (median of " << o.repeat << "), " << runs.last.samples << " samples, "
-              << samples_per_second / 1e6 << " M samples/s\n";
-    if (o.stats.empty()) return 0;
-
     nlohmann::json stats;
     stats["command"] = "volume";
     stats["input"] = input_json(cube, levels);
@@ -260,10 +273,51 @@ int run_volume(VolumeOptions& o) {
     stats["samples"] = runs.last.samples;
     stats["rays"] = runs.last.rays;
     stats["samples_per_ray"] = runs.last.rays ? double(runs.last.samples) / double(runs.last.rays) : 0.0;
-    stats["samples_per_second"] = samples_per_second;
+    stats["samples_per_second"] = samples_per_second(runs);
     stats["occupied_block_fraction"] = scene.occupied_fraction();
     stats.update(run_context_json(runs.gl_device));
-    io::write_file(o.stats, stats.dump(2) + '\n');
+    return stats;
+}
+
+int run_volume(VolumeOptions& o) {
+    volume::TransferFunctionSettings tf;
+    apply_options(o, tf);
+    refuse_overwrites({{"the cube", o.cube}}, {{"--out", o.out}, {"--stats", o.stats}});
+
+    Clock::time_point start = Clock::now();
+    const volume::VolumeCube cube = volume::load_segy(o.cube, o.read);
+    const double load_ms = elapsed_ms(start);
+    const volume::ViewGeometry view = volume::make_view(cube.dims, o.settings);
+    refuse_eye_inside(view);
+    refuse_cube_under_a_pixel(view, o.settings.width, o.settings.height);
+    start = Clock::now();
+    const volume::QuantisedVolume levels = volume::quantise(cube);
+    refuse_blank_cube(cube, levels);
+    if (!cube.missing_traces.empty())
+        std::cerr << "cutaway: " << cube.source << ": irregular survey, " << cube.missing_traces.size()
+                  << " missing traces filled with " << cube.null_value << '\n';
+    if (o.window == "auto") tf.window = volume::percentile_window(levels);
+    if (o.layer.empty()) tf.layer = volume::fitted_layer(tf.window);
+    const volume::VolumeScene scene =
+        volume::make_scene(levels, volume::build_transfer_table(tf), o.settings.block_size, tf.window);
+    // The cube is framed left of the colour bar it will carry (never more than half the width).
+    if (o.settings.colour_bar)
+        o.settings.reserved_right_px =
+            std::min(0.5f * float(o.settings.width), annotation::colour_bar_reserved_width(volume::colour_bar_label(scene),
+                                                                                        o.settings.width, o.settings.height));
+    const double prepare_ms = elapsed_ms(start);
+
+    FrameRuns runs = o.caster == "gpu" ? run_gpu(scene, o) : run_cpu(scene, o);
+    // Committed together with the stats: a failed --stats leaves no image behind.
+    io::OutputBatch outputs;
+    outputs.write(o.out, gl::encode_png(runs.last.image, o.out));
+    if (!o.stats.empty())
+        outputs.write(o.stats, volume_stats(o, tf, cube, levels, scene, runs, load_ms, prepare_ms).dump(2) + '\n');
+    outputs.commit();
+    std::cout << o.out << ": " << o.caster << " caster, " << volume::transfer_function_name(tf.kind) << ", "
+              << cube.dims.inlines << "x" << cube.dims.crosslines << "x" << cube.dims.samples << ", ray cast "
+              << ray_cast_ms(runs) << " ms (median of " << o.repeat << "), " << runs.last.samples << " samples, "
+              << samples_per_second(runs) / 1e6 << " M samples/s\n";
     return 0;
 }
 

@@ -9,7 +9,8 @@
 
 #include "gl/gl_error.h"
 #include "io/output_error.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
+#include "io/path_text.h"
 
 namespace cutaway::gl {
 
@@ -31,7 +32,7 @@ RgbaImage read_rgba(unsigned framebuffer, unsigned attachment, int width, int he
     return image;
 }
 
-void write_png(const RgbaImage& image, const std::filesystem::path& path) {
+std::string encode_png(const RgbaImage& image, const std::filesystem::path& path) {
     // Encoded in memory first: stb's file writer ignores failed writes (a full disk gave an empty
     // file and success).
     std::string png;
@@ -39,10 +40,12 @@ void write_png(const RgbaImage& image, const std::filesystem::path& path) {
         static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
     };
     if (!stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.pixels.data(), image.width * 4))
-        throw io::OutputError(path.string() + ": cannot encode a " + std::to_string(image.width) + "x" +
+        throw io::OutputError(io::shown_path(path) + ": cannot encode a " + std::to_string(image.width) + "x" +
                               std::to_string(image.height) + " PNG");
-    io::write_file(path, png);
+    return png;
 }
+
+void write_png(const RgbaImage& image, const std::filesystem::path& path) { io::write_file(path, encode_png(image, path)); }
 
 RgbaImage read_png(const std::filesystem::path& path) {
     int width = 0, height = 0, channels = 0;

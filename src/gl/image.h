@@ -2,6 +2,7 @@
 // 8-bit RGBA images read back from GL and written as PNG (stb_image_write).
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace cutaway::gl {
@@ -18,6 +19,10 @@ struct RgbaImage {
 /// Reads colour attachment `attachment` of framebuffer `framebuffer` (0: default), flipping GL's
 /// bottom-up rows.
 RgbaImage read_rgba(unsigned framebuffer, unsigned attachment, int width, int height);
+
+/// The PNG file's bytes; throws io::OutputError naming `path` (where they are going) if the image
+/// cannot be encoded.
+std::string encode_png(const RgbaImage& image, const std::filesystem::path& path);
 
 /// Written under a temporary name and renamed (io::write_file); throws io::OutputError naming the
 /// path and the reason if it cannot be written, leaving no partial file.

@@ -9,6 +9,8 @@
 #include <set>
 
 #include "grid/grdecl_lexer.h"
+#include "io/input_file.h"
+#include "io/path_text.h"
 
 namespace cutaway::grid {
 namespace {
@@ -106,6 +108,13 @@ std::optional<long long> parse_integer(std::string_view text) {
 std::string byte_text(double bytes) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "%.3g GB", bytes / 1e9);
+    return buffer;
+}
+
+/// A coordinate in messages (%g).
+std::string number_text(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
     return buffer;
 }
 
@@ -400,6 +409,44 @@ private:
         read_values(dims.coord_value_count(), [&](const Token& token, std::string_view text, std::size_t count) {
             state_.coord.insert(state_.coord.end(), count, coordinate_value(token, text));
         });
+        refuse_pillars_without_area(state_.coord);
+        refuse_coinciding_pillars(state_.coord, dims);
+    }
+
+    /// Pillars equal to their neighbour along i (all six coordinates) make cells without width.
+    /// When most pillars do, the grid is no reservoir but a handful of repeat counts (COORD
+    /// 3003003*0 3003003*1 for 1000 x 1000 columns): refused before ZCORN and the properties are
+    /// allocated for it. A real grid collapses a few pillars at most (pinched edges).
+    void refuse_coinciding_pillars(const std::vector<double>& coord, const GridDims& dims) const {
+        if (coord.size() != dims.coord_value_count() || dims.nx < 1) return;
+        std::size_t coinciding = 0;
+        for (int pj = 0; pj <= dims.ny; ++pj)
+            for (int pi = 1; pi <= dims.nx; ++pi) {
+                const double* pillar = &coord[6 * dims.pillar_index(pi, pj)];
+                coinciding += std::equal(pillar, pillar + 6, pillar - 6);
+            }
+        const std::size_t pairs = std::size_t(dims.nx) * std::size_t(dims.ny + 1);
+        if (2 * coinciding > pairs)
+            fail(keyword_line_, "pillars at distinct places (cells with a width)",
+                 std::to_string(coinciding) + " of " + std::to_string(pairs) + " pillars equal to their neighbour along i");
+    }
+
+    /// Pillars whose ends all share one x or one y span no horizontal area: every cell would have
+    /// no area and no volume, and nothing could be drawn. Refused from COORD alone, before ZCORN
+    /// and the properties are allocated for cells that cannot exist.
+    void refuse_pillars_without_area(const std::vector<double>& coord) const {
+        if (coord.size() < 6) return;  // a short COORD is reported at its end
+        double x0 = coord[0], x1 = coord[0], y0 = coord[1], y1 = coord[1];
+        for (std::size_t n = 0; n + 2 < coord.size(); n += 3) {
+            x0 = std::min(x0, coord[n]);
+            x1 = std::max(x1, coord[n]);
+            y0 = std::min(y0, coord[n + 1]);
+            y1 = std::max(y1, coord[n + 1]);
+        }
+        if (x1 > x0 && y1 > y0) return;
+        fail(keyword_line_, "pillars spanning a horizontal area (a non-zero horizontal extent in x and in y)",
+             "all " + std::to_string(coord.size() / 6) + " pillars within x [" + number_text(x0) + ", " + number_text(x1) +
+                 "], y [" + number_text(y0) + ", " + number_text(y1) + "]");
     }
 
     void read_zcorn() {
@@ -573,26 +620,25 @@ private:
 std::string read_whole_file(const std::filesystem::path& path, GrdeclReader::State& state, const std::string& from,
                             int from_line) {
     auto fail = [&](std::string expected, std::string found) -> std::string {
-        throw GrdeclError({from.empty() ? path.string() : from, from_line, from.empty() ? "" : "INCLUDE",
+        throw GrdeclError({from.empty() ? io::shown_path(path) : from, from_line, from.empty() ? "" : "INCLUDE",
                            std::move(expected), std::move(found)});
     };
+    const std::string readable = "a readable GRDECL file " + io::shown_path(path);
+    if (const std::string found = io::input_file_problem(path); !found.empty()) return fail(readable, found);
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error))
-        return fail("a readable GRDECL file " + path.string(),
-                    std::filesystem::exists(path, error) ? "not a regular file" : "no such file");
     const auto size = std::filesystem::file_size(path, error);
-    if (error) return fail("a readable GRDECL file " + path.string(), error.message());
+    if (error) return fail(readable, error.message());
     const std::size_t limit = state.options.memory_limit_bytes;
     const std::size_t left = limit - std::min(limit, state.bytes_reserved);
     if (size > left)
         return fail("a file within the memory limit of " + byte_text(double(limit)) + " (" +
                         byte_text(double(state.bytes_reserved)) + " already held)",
-                    path.string() + " of " + byte_text(double(size)));
+                    io::shown_path(path) + " of " + byte_text(double(size)));
     state.bytes_reserved += size;
     std::ifstream in(path, std::ios::binary);
     std::string text(size, '\0');
     if (!in.read(text.data(), std::streamsize(size)))
-        return fail("a readable GRDECL file " + path.string(), "a read error");
+        return fail(readable, "a read error");
     return text;
 }
 
@@ -613,6 +659,7 @@ void KeywordParser::read_include() {
     }
     if (int(stack.size()) > state_.options.max_include_depth)
         fail(line, "INCLUDE nesting of at most " + std::to_string(state_.options.max_include_depth), "deeper nesting");
+    if (state_.options.before_include) state_.options.before_include(path, file_ + ":" + std::to_string(line));
     const HeldText text(state_, read_whole_file(path, state_, file_, line));
     state_.include_stack.push_back(canonical);
     KeywordParser(state_, text.text(), path.string(), path.parent_path()).run();

@@ -4,6 +4,7 @@
 // Every malformed input raises GrdeclError naming file, line, keyword, expected and found.
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -29,6 +30,9 @@ struct GrdeclReadOptions {
     /// values are ever held; COORD is read whole (one line per pillar) and narrowed at finish().
     /// The grid finish() returns is the box's, equal to grid::extract_box of the whole grid.
     std::optional<IjkBox> block;
+    /// Called with each INCLUDE's path (resolved against its file) and where it is named
+    /// ("FILE:LINE") before the file is read: a caller refuses one its outputs would overwrite.
+    std::function<void(const std::filesystem::path& include, const std::string& where)> before_include;
 };
 
 /// Reads GRDECL files into one grid. Files after the first may add properties only.

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 
 namespace cutaway::grid {
 namespace {

@@ -14,20 +14,22 @@ void require_values(const CornerPointGrid& grid, const std::vector<float>& value
                                     " values, expected one per cell (" + std::to_string(grid.cell_count()) + ")");
 }
 
-[[noreturn]] void throw_nan(const CornerPointGrid& grid, const std::string& name, std::size_t cell) {
+/// `value` (NaN or an infinity) in active cell `cell`: no colour or selection can hold it.
+[[noreturn]] void throw_non_finite(const CornerPointGrid& grid, const std::string& name, std::size_t cell, float value) {
     const CellIjk c = cell_ijk(grid.dims(), cell);
-    throw std::invalid_argument("property " + name + ": NaN in active cell (i,j,k) = (" + std::to_string(c.i) + "," +
-                                std::to_string(c.j) + "," + std::to_string(c.k) + "), expected a number");
+    const std::string shown = std::isnan(value) ? "NaN" : value > 0 ? "inf" : "-inf";
+    throw std::invalid_argument("property " + name + ": " + shown + " in active cell (i,j,k) = (" + std::to_string(c.i) +
+                                "," + std::to_string(c.j) + "," + std::to_string(c.k) + "), expected a finite number");
 }
 
-/// Active cells' values, checked for NaN.
+/// Active cells' values, checked to be finite.
 std::vector<float> active_values(const CornerPointGrid& grid, const std::vector<float>& values, const std::string& name) {
     require_values(grid, values, name);
     std::vector<float> out;
     out.reserve(grid.active_count());
     for (std::size_t cell = 0; cell < values.size(); ++cell) {
         if (!grid.active(cell)) continue;
-        if (std::isnan(values[cell])) throw_nan(grid, name, cell);
+        if (!std::isfinite(values[cell])) throw_non_finite(grid, name, cell, values[cell]);
         out.push_back(values[cell]);
     }
     return out;
@@ -43,7 +45,7 @@ std::vector<std::uint8_t> select_primaries(const CornerPointGrid& grid, const st
     for (std::size_t cell = 0; cell < values.size(); ++cell) {
         if (!grid.active(cell)) continue;
         const float v = values[cell];
-        if (std::isnan(v)) throw_nan(grid, property_name, cell);
+        if (!std::isfinite(v)) throw_non_finite(grid, property_name, cell, v);
         if (v < range.min || v > range.max) continue;
         if (box && !box->contains(cell_ijk(grid.dims(), cell))) continue;
         flags[cell] = 1;
@@ -70,6 +72,12 @@ PrimaryRange range_for_fraction(const CornerPointGrid& grid, const std::vector<f
     std::nth_element(active.begin(), nth, active.end());
     const float top = *std::max_element(nth, active.end());
     return {*nth, top};
+}
+
+void check_finite_active(const CornerPointGrid& grid, const std::vector<float>& values, const std::string& property_name) {
+    require_values(grid, values, property_name);
+    for (std::size_t cell = 0; cell < values.size(); ++cell)
+        if (grid.active(cell) && !std::isfinite(values[cell])) throw_non_finite(grid, property_name, cell, values[cell]);
 }
 
 PrimaryRange active_value_range(const CornerPointGrid& grid, const std::vector<float>& values,

@@ -46,7 +46,11 @@ void check_fraction(double fraction);
 /// How many of `active` cells range_for_fraction aims at (at least 1).
 std::size_t primary_count_for_fraction(double fraction, std::size_t active);
 
-/// Min and max of `values` over active cells (throws on NaN, naming the property and cell).
+/// Throws std::invalid_argument naming the property and the cell when an active cell's value is
+/// NaN or infinite (inactive cells may hold anything: nothing reads them).
+void check_finite_active(const CornerPointGrid& grid, const std::vector<float>& values, const std::string& property_name);
+
+/// Min and max of `values` over active cells (throws on NaN or infinity, naming the property and cell).
 PrimaryRange active_value_range(const CornerPointGrid& grid, const std::vector<float>& values,
                                 const std::string& property_name);
 

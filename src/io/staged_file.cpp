@@ -5,13 +5,14 @@
 #include <unistd.h>
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
-#include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "io/interrupt_cleanup.h"
 #include "io/output_error.h"
+#include "io/path_text.h"
 
 namespace cutaway::io {
 namespace {
@@ -26,7 +27,7 @@ bool is_special_file(const std::filesystem::path& path) {
 
 void fail_output(const std::filesystem::path& path, int error_number) {
     const std::string reason = error_number != 0 ? std::strerror(error_number) : "unknown reason";
-    throw OutputError(path.string() + ": expected the output written whole, found an error: " + reason);
+    throw OutputError(shown_path(path) + ": expected the output written whole, found an error: " + reason);
 }
 
 StagedFile::StagedFile(std::filesystem::path target) : target_(std::move(target)) {
@@ -43,7 +44,10 @@ StagedFile::StagedFile(std::filesystem::path target) : target_(std::move(target)
     const std::string name = (directory / hidden_name).string();
     std::vector<char> buffer(name.begin(), name.end());
     buffer.push_back('\0');
-    const int fd = ::mkstemp(buffer.data());
+    const int fd = create_interrupt_file(buffer.data(), interrupt_slot_);
+    if (fd == interrupt_table_full)
+        throw OutputError(shown_path(target_) + ": expected at most " + std::to_string(max_interrupt_files) +
+                          " outputs staged at once, found more");
     if (fd < 0) fail_output(target_, errno);
     // mkstemp makes 0600; an output gets what open(..., 0666) would give under the umask.
     const mode_t mask = ::umask(0);
@@ -55,69 +59,38 @@ StagedFile::StagedFile(std::filesystem::path target) : target_(std::move(target)
 
 StagedFile::~StagedFile() {
     if (!in_place_ && !committed_) ::unlink(write_path_.c_str());
+    release_interrupt_file(interrupt_slot_);
 }
 
 void StagedFile::commit() {
     if (in_place_) return;
     if (::rename(write_path_.c_str(), target_.c_str()) != 0) fail_output(target_, errno);
     committed_ = true;
-}
-
-void write_file(const std::filesystem::path& path, std::string_view bytes) {
-    StagedFile staged(path);
-    const int fd = ::open(staged.write_path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
-    if (fd < 0) fail_output(path, errno);
-    std::size_t written = 0;
-    while (written < bytes.size()) {
-        const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            const int error_number = n < 0 ? errno : ENOSPC;
-            ::close(fd);
-            fail_output(path, error_number);
-        }
-        written += std::size_t(n);
-    }
-    if (::close(fd) != 0) fail_output(path, errno);
-    staged.commit();
-}
-
-void write_stream(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
-    StagedFile staged(path);
-    std::ofstream out(staged.write_path(), std::ios::binary | std::ios::trunc);
-    if (!out) fail_output(path, errno);
-    write(out);
-    if (!out) fail_output(path, errno);  // a write failed: its errno is still the last one set
-    errno = 0;
-    out.flush();
-    if (!out) fail_output(path, errno);
-    out.close();
-    if (!out) fail_output(path, errno);
-    staged.commit();
+    release_interrupt_file(std::exchange(interrupt_slot_, -1));
 }
 
 std::string output_path_problem(const std::filesystem::path& path) {
     if (path.empty()) return "expected a file name, found an empty path";
     std::error_code error;
-    if (std::filesystem::is_directory(path, error)) return "expected a file, found the directory '" + path.string() + "'";
+    if (std::filesystem::is_directory(path, error)) return "expected a file, found the directory '" + shown_path(path) + "'";
     if (is_special_file(path)) {  // written in place (/dev/null): only the file itself must be writable
         if (::access(path.c_str(), W_OK) == 0) return {};
-        return "expected a writable file, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+        return "expected a writable file, found '" + shown_path(path) + "' (" + std::strerror(errno) + ")";
     }
     const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
     if (!std::filesystem::is_directory(directory, error)) {
         std::string text("expected a file in an existing directory, found '");
-        text.append(path.string()).append("' (");
+        text.append(shown_path(path)).append("' (");
         if (std::filesystem::exists(directory, error))
-            text.append("'").append(directory.string()).append("' is not a directory)");
+            text.append("'").append(shown_path(directory)).append("' is not a directory)");
         else
-            text.append("no directory '").append(directory.string()).append("')");
+            text.append("no directory '").append(shown_path(directory)).append("')");
         return text;
     }
     if (::access(directory.c_str(), W_OK | X_OK) != 0)
-        return "expected a file in a writable directory, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+        return "expected a file in a writable directory, found '" + shown_path(path) + "' (" + std::strerror(errno) + ")";
     if (std::filesystem::exists(path, error) && ::access(path.c_str(), W_OK) != 0)
-        return "expected a writable file, found '" + path.string() + "' (" + std::strerror(errno) + ")";
+        return "expected a writable file, found '" + shown_path(path) + "' (" + std::strerror(errno) + ")";
     return {};
 }
 

@@ -1,13 +1,12 @@
 #pragma once
 // Output files written under a temporary name in the target's directory and renamed onto the
-// target only when every write succeeded, so a failed run never leaves a partial file. Targets
-// that are not regular files (/dev/null, /dev/full, a FIFO) are written in place: renaming onto
-// them would replace the device node.
+// target only when every write succeeded, so a failed run never leaves a partial file; the
+// temporary file is registered for removal on SIGINT/SIGTERM (interrupt_cleanup.h). Targets that
+// are not regular files (/dev/null, /dev/full, a FIFO) are written in place: renaming onto them
+// would replace the device node. Several outputs of one run are committed together by an
+// OutputBatch (output_batch.h).
 #include <filesystem>
-#include <functional>
-#include <iosfwd>
 #include <string>
-#include <string_view>
 
 namespace cutaway::io {
 
@@ -31,17 +30,12 @@ private:
     std::filesystem::path write_path_;
     bool in_place_ = false;
     bool committed_ = false;
+    int interrupt_slot_ = -1;  ///< register_interrupt_file's slot of the temporary file
 };
 
 /// Throws OutputError "PATH: expected the output written whole, found an error: REASON" with
 /// REASON from errno (or "unknown reason").
 [[noreturn]] void fail_output(const std::filesystem::path& path, int error_number);
-
-/// Writes `bytes` to `path` through a StagedFile, checking every write and the close.
-void write_file(const std::filesystem::path& path, std::string_view bytes);
-
-/// Opens a StagedFile, lets `write` fill the stream, then checks the flush and close and commits.
-void write_stream(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
 
 /// Why `path` cannot take an output ("expected ..., found ..."), or empty when it can: checked
 /// before any work so that a run never computes a result it cannot keep.

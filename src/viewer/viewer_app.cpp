@@ -14,7 +14,7 @@
 #include "app/run_context_json.h"
 #include "gl/gl_error.h"
 #include "gl/image.h"
-#include "io/staged_file.h"
+#include "io/output_batch.h"
 #include "viewer/camera_controller.h"
 #include "viewer/option_tokens.h"
 #include "viewer/timing_overlay.h"
@@ -89,7 +89,10 @@ ViewerApp::ViewerApp(ViewerOptions options)
     info_.gl_renderer = gl::gl_renderer() + " (" + window_.platform() + ")";
     window_fb_width_ = window_.framebuffer_width();
     window_fb_height_ = window_.framebuffer_height();
-    scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.model_memory_limit_bytes()),
+    // An INCLUDE the screenshot or the stats would overwrite is refused before it is read.
+    const std::vector<io::NamedFile> outputs{{"--screenshot", options_.screenshot}, {"--stats", options_.stats}};
+    scene_ = std::make_unique<ViewerScene>(app::load_model(options_.render.model, options_.render.model_memory_limit_bytes(),
+                                                           std::nullopt, outputs),
                                            shaders_, state_.options, render_width(), render_height());
     if (scene_->primary_count() == 0)
         info_.message = "no cell lies in the primary range; showing the context only";

@@ -11,6 +11,9 @@
 #include <string_view>
 #include <system_error>
 
+#include "io/input_file.h"
+#include "io/path_text.h"
+
 namespace cutaway::viewer {
 
 namespace {
@@ -191,12 +194,14 @@ ViewerScript parse_viewer_script_text(const std::string& text, const std::string
 }
 
 ViewerScript parse_viewer_script(const std::filesystem::path& path) {
-    const std::string name = path.string();
+    const std::string name = io::shown_path(path);
+    // Checked before opening: a FIFO's open would wait for a writer that may never come.
+    if (const std::string found = io::input_file_problem(path); !found.empty())
+        throw std::invalid_argument(name + ": expected a readable script file, found " + found);
     std::error_code error;
-    const bool regular = std::filesystem::is_regular_file(path, error);
-    const std::uintmax_t bytes = regular ? std::filesystem::file_size(path, error) : 0;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, error);
     std::ifstream file(path, std::ios::binary);
-    if (!regular || error || !file) throw std::invalid_argument(name + ": cannot open");
+    if (error || !file) throw std::invalid_argument(name + ": cannot open");
     if (bytes > max_script_bytes)
         throw std::invalid_argument(name + ": " + std::to_string(bytes) + " bytes; expected a script of at most 1 MiB");
     std::ostringstream text;

@@ -12,6 +12,8 @@
 #include <system_error>
 #include <vector>
 
+#include "io/input_file.h"
+#include "io/path_text.h"
 #include "volume/volume_error.h"
 
 namespace cutaway::volume {
@@ -84,7 +86,7 @@ private:
 
     /// "PATH: WHERE: expected EXPECTED, found FOUND" (WHERE names the header field, trace or sample).
     [[noreturn]] void fail(const std::string& where, const std::string& expected, const std::string& found) const {
-        std::string text = path_.string();
+        std::string text = io::shown_path(path_);
         text.append(": ");
         if (!where.empty()) text.append(where).append(": ");
         text.append("expected ").append(expected).append(", found ").append(found);
@@ -92,10 +94,8 @@ private:
     }
 
     void open() {
+        if (const std::string found = io::input_file_problem(path_); !found.empty()) fail("", "a SEG-Y file", found);
         std::error_code error;
-        const auto status = std::filesystem::status(path_, error);
-        if (!std::filesystem::exists(status)) fail("", "a SEG-Y file", "no such file");
-        if (!std::filesystem::is_regular_file(status)) fail("", "a SEG-Y file", "not a regular file");
         file_bytes_ = std::uint64_t(std::filesystem::file_size(path_, error));
         if (error) fail("", "a readable SEG-Y file", "its size unreadable (" + error.message() + ")");
         if (file_bytes_ < std::uint64_t(kHeadersBytes))

@@ -15,102 +15,28 @@
 
 #include <nlohmann/json.hpp>
 
+#include "bad_input_fixture.h"
 #include "cutaway/cell_id_image.h"
-#include "cutaway_process.h"
 #include "gl/image.h"
 
 namespace {
 
-using cutaway::testing::ProcessLimits;
-using cutaway::testing::ProcessResult;
+using namespace cutaway::testing;  // the fixture, its checks and the shared inputs
 namespace fs = std::filesystem;
-
-// AddressSanitizer's shadow memory and quarantine multiply a process's resident memory, so the
-// peak-memory bounds hold only for the plain build (the exit codes and messages are checked in both).
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kMeasureMemory = false;
-#else
-constexpr bool kMeasureMemory = true;
-#endif
-
-// What `cutaway` itself holds before it reads any input: the program, its libraries (Mesa, segyio,
-// CGAL-free but GL-linked) and the C++ runtime. Measured at about 25 MiB for `cutaway --help`.
-constexpr double kBaselineRssMb = 64;
-
-constexpr const char* kTinyGrid =
-    "SPECGRID\n 2 2 1 1 F /\n"
-    "COORD\n 0 0 0 0 0 1  1 0 0 1 0 1  2 0 0 2 0 1\n"
-    " 0 1 0 0 1 1  1 1 0 1 1 1  2 1 0 2 1 1\n"
-    " 0 2 0 0 2 1  1 2 0 1 2 1  2 2 0 2 2 1 /\n"
-    "ZCORN\n 16*0 16*1 /\n"
-    "PORO\n 0.1 0.2 0.3 0.4 /\n"
-    "FACIES\n 1 2 1 2 /\n";
-
-class BadInput : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        scratch_ = fs::temp_directory_path() /
-                   ("cutaway_bad_input_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-        fs::remove_all(scratch_);
-        fs::create_directories(scratch_ / "out");
-    }
-    void TearDown() override { fs::remove_all(scratch_); }
-
-    fs::path file(const std::string& name, const std::string& text) const {
-        const fs::path path = scratch_ / name;
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
-    }
-    std::string out(const std::string& name) const { return (scratch_ / "out" / name).string(); }
-
-    ProcessResult cutaway(const std::vector<std::string>& args, ProcessLimits limits = {}) const {
-        return cutaway::testing::run_process(CUTAWAY_EXE, args, scratch_, limits);
-    }
-
-    /// Exit 2 and every fragment in the message; the message is one line plus CLI11's help hint.
-    static void expect_refused(const ProcessResult& r, const std::vector<std::string>& fragments) {
-        EXPECT_EQ(r.exit_code, 2) << r.err;
-        for (const std::string& f : fragments) EXPECT_NE(r.err.find(f), std::string::npos) << "'" << f << "' not in: " << r.err;
-    }
-
-    /// `inspect` of an NX x NY x NZ grid whose ZCORN is all zeros for the first half of its values and
-    /// all ones for the rest (every layer then differs from the one above half-way, so the store must
-    /// switch to the full layout), refused under `limit_gb`; returns the child's result.
-    ProcessResult refused_half_zero_zcorn(const std::string& name, int nx, int ny, int nz, const std::string& limit_gb) const {
-        const std::size_t pillars = std::size_t(nx + 1) * std::size_t(ny + 1), half = std::size_t(4) * nx * ny * nz;
-        const fs::path grid = file(name, "SPECGRID\n " + std::to_string(nx) + " " + std::to_string(ny) + " " +
-                                                  std::to_string(nz) + " 1 F /\nCOORD\n " + std::to_string(6 * pillars) +
-                                                  "*0 /\nZCORN\n " + std::to_string(half) + "*0 " + std::to_string(half) +
-                                                  "*1 /\n");
-        ProcessResult r = cutaway({"inspect", grid, "--memory-limit-gb", limit_gb});
-        expect_refused(r, {name, "ZCORN", "full layout", "memory limit"});
-        std::printf("%s: peak %.0f MiB\n", name.c_str(), r.peak_rss_mb);
-        return r;
-    }
-
-    /// Nothing was written to out/: neither an output nor a temporary partial file.
-    void expect_no_output() const {
-        for (const auto& entry : fs::directory_iterator(scratch_ / "out"))
-            ADD_FAILURE() << "left behind: " << entry.path();
-    }
-
-    fs::path scratch_;
-};
 
 // ---- outputs -------------------------------------------------------------------------------
 
 TEST_F(BadInput, SamePathForTwoOutputsIsRefusedBeforeRendering) {
     const fs::path grid = file("tiny.grdecl", kTinyGrid);
     const ProcessResult r = cutaway({"render", grid, "--out", out("x.png"), "--stats", out("x.png")});
-    expect_refused(r, {"--stats", "--out", "same path"});
+    expect_refused(r, {"--stats", "--out", "same file"});
     expect_no_output();
     // An output naming an input would overwrite it.
-    expect_refused(cutaway({"inspect", grid, "--cells-csv", grid}), {"--cells-csv", "the model", "same path"});
+    expect_refused(cutaway({"inspect", grid, "--cells-csv", grid}), {"--cells-csv", "the model", "same file"});
     EXPECT_EQ(fs::file_size(grid), std::string(kTinyGrid).size()) << "the model was overwritten";
     // The viewer refuses before it opens a window (no display is needed to see the refusal).
     expect_refused(cutaway({"view", grid, "--screenshot", out("v.png"), "--stats", out("v.png")}),
-                   {"--stats", "--screenshot", "same path"});
+                   {"--stats", "--screenshot", "same file"});
     expect_no_output();
 }
 
@@ -380,37 +306,6 @@ TEST_F(BadInput, LongKeywordIsTruncatedInErrors) {
     EXPECT_NE(r.err.find("KKKK..."), std::string::npos) << r.err;
 }
 
-/// A big-endian SEG-Y file of 2 x 2 traces of `samples` IEEE floats (values from `sample`), with the
-/// binary header's sample count and format fields set to `samples_field` and `format_field`.
-std::string segy_bytes(int samples_field, int format_field, int samples, float (*sample)(int trace, int k)) {
-    std::string bytes(3600, '\0');
-    const auto put16 = [&bytes](std::size_t at, int v) {
-        bytes[at] = char((v >> 8) & 0xFF);
-        bytes[at + 1] = char(v & 0xFF);
-    };
-    put16(3216, 4000);          // sample interval, microseconds (bytes 3217-3218)
-    put16(3220, samples_field);  // samples per trace (bytes 3221-3222)
-    put16(3224, format_field);  // 5: IEEE float (bytes 3225-3226)
-    for (int t = 0; t < 4; ++t) {
-        std::string header(240, '\0');
-        const auto put32 = [&header](std::size_t at, std::int32_t v) {
-            for (int b = 0; b < 4; ++b) header[at + std::size_t(b)] = char((v >> (24 - 8 * b)) & 0xFF);
-        };
-        put32(188, 1 + t / 2);  // inline (byte 189)
-        put32(192, 1 + t % 2);  // crossline (byte 193)
-        header[114] = char((samples >> 8) & 0xFF);
-        header[115] = char(samples & 0xFF);
-        bytes += header;
-        for (int k = 0; k < samples; ++k) {
-            const float value = sample(t, k);
-            std::uint32_t word = 0;
-            std::memcpy(&word, &value, 4);
-            for (int b = 0; b < 4; ++b) bytes += char((word >> (24 - 8 * b)) & 0xFF);
-        }
-    }
-    return bytes;
-}
-
 TEST_F(BadInput, NonFiniteSeismicSamplesAreRefused) {
     const fs::path inf_cube = file("inf.sgy", segy_bytes(8, 5, 8, [](int t, int k) {
         return t == 3 && k == 5 ? std::numeric_limits<float>::infinity() : float(k);
@@ -450,8 +345,14 @@ protected:
 TEST_F(BadInputGl, FullDiskForTheImageOrTheStatsIsExit2) {
     const fs::path grid = file("tiny.grdecl", kTinyGrid);
     expect_refused(render(grid, {"--no-metrics", "--out", "/dev/full"}), {"/dev/full", "No space left on device"});
+    // The image is staged before the stats or the cell ids fail: none of the run's outputs stays.
     expect_refused(render(grid, {"--no-metrics", "--out", out("x.png"), "--stats", "/dev/full"}),
                    {"/dev/full", "No space left on device"});
+    expect_refused(render(grid, {"--no-metrics", "--out", out("x.png"), "--stats", out("x.json"), "--cell-ids", "/dev/full"}),
+                   {"/dev/full", "No space left on device"});
+    expect_refused(render(grid, {"--no-metrics", "--out", out("x.png"), "--stats", "/proc/cutaway-stats.json"}),
+                   {"/proc/cutaway-stats.json"});
+    expect_no_output();
 }
 
 TEST_F(BadInputGl, CameraInsideTheModelIsRefused) {
@@ -459,6 +360,20 @@ TEST_F(BadInputGl, CameraInsideTheModelIsRefused) {
     expect_refused(render(grid, {"--no-metrics", "--camera", "0", "0", "1e-9", "--out", out("x.png")}),
                    {"--camera", "at least the model's radius 1.5", "found 1e-09"});
     expect_no_output();
+}
+
+TEST_F(BadInputGl, FramesThatWouldBeBlankAreRefused) {
+    // Issue 47: a camera so far that the model covers under a pixel, and primaries-only with no
+    // primary, drew an empty frame with exit 0.
+    const fs::path grid = file("tiny.grdecl", kTinyGrid);
+    expect_refused(render(grid, {"--no-metrics", "--camera", "0", "30", "1e9", "--out", out("x.png")}),
+                   {"--camera", "the model covers under a pixel", "found 1e+09"});
+    expect_refused(render(grid, {"--no-metrics", "--only", "primaries", "--range", "5", "6", "--out", out("x.png")}),
+                   {"--only primaries", "no cell of PORO in the primary range [5, 6]"});
+    expect_no_output();
+    // Both fine where the model covers pixels and has primaries.
+    EXPECT_EQ(render(grid, {"--no-metrics", "--camera", "0", "30", "100", "--only", "primaries", "--range", "0.3", "0.4",
+                            "--out", out("x.png")}).exit_code, 0);
 }
 
 TEST_F(BadInputGl, ModelWithoutHorizontalExtentIsRefused) {

@@ -10,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <system_error>
 
 namespace cutaway::testing {
 namespace {
@@ -19,6 +21,14 @@ std::string read_all(const std::filesystem::path& path) {
     std::ostringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+/// Whether a file of `directory` has `fragment` in its name.
+bool watched_file_exists(const std::filesystem::path& directory, const std::string& fragment) {
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(directory, error))
+        if (entry.path().filename().string().find(fragment) != std::string::npos) return true;
+    return false;
 }
 
 }  // namespace
@@ -51,8 +61,23 @@ ProcessResult run_process(const std::string& program, const std::vector<std::str
     }
     int status = 0;
     rusage usage{};
-    if (::wait4(pid, &status, 0, &usage) != pid) throw std::runtime_error("wait4 failed");
     ProcessResult result;
+    if (limits.interrupt_signal != 0) {
+        // Polls for the watched file while the child runs (every millisecond: a staged output of a
+        // small run lives for a few milliseconds only).
+        while (true) {
+            const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
+            if (done == pid) break;
+            if (done < 0) throw std::runtime_error("wait4 failed");
+            if (!result.interrupted && watched_file_exists(limits.interrupt_watch, limits.interrupt_when_named)) {
+                ::kill(pid, limits.interrupt_signal);
+                result.interrupted = true;
+            }
+            ::usleep(1000);
+        }
+    } else if (::wait4(pid, &status, 0, &usage) != pid) {
+        throw std::runtime_error("wait4 failed");
+    }
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "grid/box_grid.h"
@@ -48,9 +49,16 @@ TEST(PrimarySelection, NaNInAnActiveCellNamesPropertyAndCell) {
         select_primaries(grid, values, "PORO", {0, 100});
         FAIL() << "NaN accepted";
     } catch (const std::invalid_argument& error) {
-        EXPECT_STREQ(error.what(), "property PORO: NaN in active cell (i,j,k) = (1,2,3), expected a number");
+        EXPECT_STREQ(error.what(), "property PORO: NaN in active cell (i,j,k) = (1,2,3), expected a finite number");
     }
     EXPECT_THROW(range_for_fraction(grid, values, "PORO", 0.1), std::invalid_argument);
+    values[grid.dims().cell_index(1, 2, 3)] = -std::numeric_limits<float>::infinity();
+    try {
+        check_finite_active(grid, values, "PORO");
+        FAIL() << "-inf accepted";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_STREQ(error.what(), "property PORO: -inf in active cell (i,j,k) = (1,2,3), expected a finite number");
+    }
 }
 
 TEST(PrimarySelection, BadFractionAndSizeAreRefused) {

@@ -1,5 +1,6 @@
 // Viewer scripts: a full script, every class of error with its location and expected form, files.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <random>
 #include <stdexcept>
@@ -173,7 +174,19 @@ TEST_F(ViewerScriptFileTest, MissingFileCannotBeOpened) {
         parse_viewer_script(path);
         FAIL() << "missing file accepted";
     } catch (const std::invalid_argument& error) {
-        EXPECT_EQ(std::string(error.what()), path.string() + ": cannot open");
+        EXPECT_EQ(std::string(error.what()), path.string() + ": expected a readable script file, found no such file");
+    }
+}
+
+TEST_F(ViewerScriptFileTest, FifoIsRefusedWithoutWaitingForAWriter) {
+    // Opening a FIFO blocks until a writer opens it: the script is refused before any open.
+    const auto path = dir_.path() / "script.fifo";
+    ASSERT_EQ(::mkfifo(path.c_str(), 0600), 0);
+    try {
+        parse_viewer_script(path);
+        FAIL() << "FIFO accepted";
+    } catch (const std::invalid_argument& error) {
+        EXPECT_NE(std::string(error.what()).find("found a FIFO"), std::string::npos) << error.what();
     }
 }
 
