@@ -13,7 +13,10 @@ packages=(
   # images, seismic, formats, command line
   libpng-dev libstb-dev libsegyio-dev nlohmann-json3-dev libcli11-dev
   # tests, benchmarks, reference checks, fuzzing
-  libgtest-dev libgmock-dev libbenchmark-dev libopm-common-dev libboost-test-dev clang libclang-rt-14-dev libomp-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libboost-test-dev clang libclang-rt-14-dev libomp-dev
+  # simulator results (src/eclipse/: opm-common's EclIO; also the reference checks against EclipseGrid)
+  # and OPM Flow, which writes the test cases
+  libopm-common-dev libopm-simulators-bin
   # plots
   python3 python3-matplotlib python3-vtk9
   # distributed rendering (src/distributed/, CUTAWAY_MPI): OpenMPI and ParaView's IceT compositor

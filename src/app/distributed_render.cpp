@@ -138,7 +138,8 @@ struct RankScene {
             provisional = distributed::equal_slab(whole_dims, mpi.size(), mpi.rank(), axis);
             active_per_layer.assign(std::size_t(distributed::layer_count(whole_dims, axis)), 0);
             if (!provisional) return;
-            model = load_block(options.model, *provisional, options.model_memory_limit_bytes(), options.property);
+            model = load_block(options.model, *provisional, options.model_memory_limit_bytes(), options.property,
+                               options.step);
             active_per_layer = distributed::active_per_layer(model.grid, *provisional, whole_dims, axis);
         });
         mpi.sum(active_per_layer);
@@ -151,7 +152,8 @@ struct RankScene {
             if (!(provisional && *provisional == source)) {
                 const double first_load_s = model.load_seconds;
                 model = {};
-                model = load_block(options.model, source, options.model_memory_limit_bytes(), options.property);
+                model = load_block(options.model, source, options.model_memory_limit_bytes(), options.property,
+                               options.step);
                 model.load_seconds += first_load_s;
             }
             property = choose_property(model.grid, options, source.k0);

@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/heap_policy.h"
 #include "app/mpi_launch.h"
+#include "eclipse/eclipse_error.h"
 #include "gl/gl_error.h"
 #include "grid/grdecl_error.h"
 #include "io/output_error.h"
@@ -46,6 +47,9 @@ int main(int argc, char** argv) {
         if (app.got_subcommand("generate-seismic")) return generate_seismic();
         if (app.got_subcommand("view")) return view();
     } catch (const cutaway::grid::GrdeclError& error) {
+        std::cerr << "cutaway: " << error.what() << '\n';
+        return 2;
+    } catch (const cutaway::eclipse::EclipseError& error) {
         std::cerr << "cutaway: " << error.what() << '\n';
         return 2;
     } catch (const cutaway::volume::VolumeError& error) {

@@ -58,6 +58,9 @@ int run_render(const RenderOptions& options) {
     files.insert(files.end(), {{"--out", options.out}, {"--stats", options.stats}, {"--cell-ids", options.cell_ids}});
     refuse_shared_outputs(files);
     LoadedModel model = load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options));
+    // A simulator case's report step (and any INIT array not read yet) for what the frame shows.
+    hold_property(model, options.property, options.step, options.model_memory_limit_bytes());
+    if (!options.select_by.empty()) hold_property(model, options.select_by, options.step, options.model_memory_limit_bytes());
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, options);

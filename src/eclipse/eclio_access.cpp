@@ -1,0 +1,18 @@
+#include "eclipse/eclio_access.h"
+
+namespace cutaway::eclipse {
+
+std::string first_line(const std::string& message) {
+    const std::string line = message.substr(0, message.find('\n'));
+    return line.empty() ? "an unreadable file" : line;
+}
+
+void require_within_memory(const std::filesystem::path& file, const std::string& array, std::size_t needed_bytes,
+                           std::size_t limit_bytes) {
+    if (needed_bytes > limit_bytes)
+        throw EclipseError({file.string(), array,
+                            "at most " + std::to_string(limit_bytes) + " bytes to read it (--memory-limit-gb)",
+                            std::to_string(needed_bytes) + " bytes needed"});
+}
+
+}  // namespace cutaway::eclipse
