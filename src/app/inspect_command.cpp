@@ -123,6 +123,7 @@ nlohmann::json summary_json(const InspectOptions& options, const LoadedModel& mo
     j["mapaxes"] = meta.mapaxes ? nlohmann::json(*meta.mapaxes) : nlohmann::json(nullptr);
     j["grid_unit"] = meta.grid_unit;
     j["map_units"] = meta.map_units;
+    j["unit_system"] = meta.unit_system;
     j["gdorient"] = meta.gdorient;
     j["zcorn_layout"] = s.zcorn_compact ? "compact" : "full";
     j["memory"] = {{"geometry_bytes", s.geometry_bytes},
@@ -151,7 +152,8 @@ void print_text(std::ostream& out, const nlohmann::json& j) {
     if (j.contains("bounds")) out << "bounds:       " << j["bounds"]["min"].dump() << " .. " << j["bounds"]["max"].dump() << '\n';
     out << "properties:   " << j["properties"].dump() << " integer " << j["int_properties"].dump() << " dynamic "
         << j["dynamic_properties"].dump() << "\nunits:        grid '" << j["grid_unit"].get<std::string>() << "', map '"
-        << j["map_units"].get<std::string>() << "', mapaxes " << j["mapaxes"].dump() << "\nmemory:       "
+        << j["map_units"].get<std::string>() << "', system '" << j["unit_system"].get<std::string>() << "', mapaxes "
+        << j["mapaxes"].dump() << "\nmemory:       "
         << j["memory"]["geometry_bytes"] << " bytes geometry (" << j["memory"]["geometry_bytes_per_cell"]
         << " per cell, ZCORN " << j["zcorn_layout"].get<std::string>() << "), " << j["memory"]["property_bytes"]
         << " bytes properties\ntimes:        load " << j["times_ms"]["load"] << " ms, summary "

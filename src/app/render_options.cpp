@@ -211,7 +211,7 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
 }
 
 annotation::ColourBarLabel PropertyChoice::colour_bar_label() const {
-    return {label, colour_range.min, colour_range.max, annotation::property_unit(name)};
+    return {label, colour_range.min, colour_range.max, annotation::property_unit(name, unit_system)};
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer) {
@@ -251,6 +251,7 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
                                     names_of(dynamics) + ")");
     }
     choice.colour_range = grid::active_value_range(grid, choice.values(), choice.name);
+    choice.unit_system = grid.metadata().unit_system;
     return choice;
 }
 

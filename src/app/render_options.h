@@ -94,8 +94,9 @@ struct PropertyChoice {
     std::vector<float> owned;         ///< storage for a derived property (layer index)
     grid::PrimaryRange colour_range;  ///< active min and max
     grid::PrimaryRange primary_range;
+    std::string unit_system;          ///< the grid's (GridMetadata::unit_system), for the unit
     const std::vector<float>& values() const { return external ? *external : owned; }
-    /// The colour bar's title (the label), unit (by the property's keyword) and colour range.
+    /// The colour bar's title (the label), unit (by the property's keyword and unit system) and colour range.
     annotation::ColourBarLabel colour_bar_label() const;
 };
 

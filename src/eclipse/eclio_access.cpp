@@ -7,6 +7,16 @@ std::string first_line(const std::string& message) {
     return line.empty() ? "an unreadable file" : line;
 }
 
+std::string unit_system_name(int code) {
+    switch (code) {
+        case 1: return "METRIC";
+        case 2: return "FIELD";
+        case 3: return "LAB";
+        case 4: return "PVT-M";
+        default: return {};
+    }
+}
+
 void require_within_memory(const std::filesystem::path& file, const std::string& array, std::size_t needed_bytes,
                            std::size_t limit_bytes) {
     if (needed_bytes > limit_bytes)

@@ -37,6 +37,10 @@ auto read_checked(const std::filesystem::path& file, const std::string& array, c
 void require_within_memory(const std::filesystem::path& file, const std::string& array, std::size_t needed_bytes,
                            std::size_t limit_bytes);
 
+/// Eclipse's name of INTEHEAD's unit convention item (1 METRIC, 2 FIELD, 3 LAB, 4 PVT-M); empty
+/// for another code.
+std::string unit_system_name(int code);
+
 /// One value per cell from one per active cell (`actnum` order), inactive cells 0: simulators write
 /// INIT and restart arrays for active cells only. `active_values.size()` must equal the active count.
 template <typename Out, typename In>

@@ -6,6 +6,7 @@
 #include <tuple>
 
 #include <opm/io/eclipse/EInit.hpp>
+#include <opm/output/eclipse/VectorItems/intehead.hpp>
 
 #include "eclipse/eclio_access.h"
 
@@ -15,6 +16,7 @@ namespace {
 namespace fs = std::filesystem;
 using Opm::EclIO::EInit;
 using Opm::EclIO::eclArrType;
+using Head = Opm::RestartIO::Helpers::VectorItems::intehead;
 
 /// Header and table arrays whose length may equal a small grid's cell count by chance.
 const std::array<std::string, 5> non_cell_arrays = {"INTEHEAD", "LOGIHEAD", "DOUBHEAD", "TABDIMS", "TAB"};
@@ -74,6 +76,9 @@ const std::vector<T>& init_data(EInit& file, const fs::path& init, const CellArr
 void add_init_properties(grid::CornerPointGrid& grid, const fs::path& init, std::size_t memory_limit_bytes,
                          const std::optional<std::string>& only) {
     const std::unique_ptr<EInit> file = open_init(init, grid);
+    const auto& head = read_checked(init, "INTEHEAD", "a readable header",
+                                    [&]() -> const std::vector<int>& { return file->getInitData<int>("INTEHEAD"); });
+    if (head.size() > std::size_t(Head::UNIT)) grid.metadata().unit_system = unit_system_name(head[Head::UNIT]);
     std::vector<CellArray> arrays = cell_arrays(*file, grid);
     if (only) std::erase_if(arrays, [&](const CellArray& array) { return array.name != *only; });
     // EclIO keeps every array it read until the file closes, beside our one-per-cell copies.

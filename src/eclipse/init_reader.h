@@ -14,6 +14,7 @@ namespace cutaway::eclipse {
 /// arrays integer properties, one value per cell (INIT holds one per active cell for most arrays,
 /// spread over the cells with 0 in inactive ones; PORV and others already hold one per cell).
 /// `only`: the one array wanted (absent from the file: nothing is added); std::nullopt: all.
+/// Sets the grid's metadata().unit_system from INTEHEAD.
 /// Throws EclipseError for a missing, truncated or foreign file, an INIT of another grid
 /// (dimensions or active count differ from `grid`'s), or arrays needing more than
 /// `memory_limit_bytes` (checked before they are read).

@@ -137,6 +137,7 @@ ReportSteps::ReportSteps(fs::path unrst, const grid::CornerPointGrid& grid, std:
                                 std::to_string(head[Head::NX]) + " x " + std::to_string(head[Head::NY]) + " x " +
                                     std::to_string(head[Head::NZ]) + " cells, " +
                                     std::to_string(head[Head::NACTIV]) + " active"});
+        if (steps_.empty()) unit_system_ = unit_system_name(head[Head::UNIT]);
         ReportStep step;
         step.index = steps_.size();
         step.report_number = report_number;

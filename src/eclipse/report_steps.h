@@ -44,6 +44,8 @@ public:
     /// when derived.
     const std::vector<std::string>& property_names() const { return names_; }
     bool has_property(const std::string& name) const;
+    /// The first step's INTEHEAD unit convention: METRIC, FIELD, LAB or PVT-M (empty: unknown).
+    const std::string& unit_system() const { return unit_system_; }
     /// SOIL computed as 1 - SWAT - SGAS (1 - SWAT without SGAS): the file holds SWAT but no SOIL.
     bool soil_derived() const { return soil_derived_; }
 
@@ -64,6 +66,7 @@ private:
     std::vector<ReportStep> steps_;
     std::vector<std::string> names_;
     bool soil_derived_ = false;
+    std::string unit_system_;
 };
 
 }  // namespace cutaway::eclipse

@@ -23,6 +23,7 @@ SimulatorCase load_simulator_case(const CaseFiles& files, std::size_t memory_lim
     if (files.unrst) {
         auto steps = std::make_shared<const ReportSteps>(*files.unrst, grid, memory_left(grid, memory_limit_bytes));
         for (const std::string& name : steps->property_names()) grid.declare_dynamic_steps(name, steps->step_count());
+        if (grid.metadata().unit_system.empty()) grid.metadata().unit_system = steps->unit_system();
         loaded.report_steps = std::move(steps);
     }
     return loaded;

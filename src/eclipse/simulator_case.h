@@ -19,7 +19,8 @@ struct SimulatorCase {
 
 /// Reads `files.egrid`, then `files.init`'s cell arrays (`only_property`: the one wanted, empty
 /// for PORO; std::nullopt: all), then `files.unrst`'s step list, declaring each restart array on
-/// the grid with the file's step count (grid::CornerPointGrid::declare_dynamic_steps). Everything
+/// the grid with the file's step count (grid::CornerPointGrid::declare_dynamic_steps), and the unit
+/// system (INIT's INTEHEAD, else UNRST's) in the grid's metadata. Everything
 /// within `memory_limit_bytes` (what the grid holds counts against what follows). Throws EclipseError.
 SimulatorCase load_simulator_case(const CaseFiles& files, std::size_t memory_limit_bytes,
                                   const std::optional<std::string>& only_property);

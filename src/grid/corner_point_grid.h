@@ -26,6 +26,7 @@ struct GridMetadata {
     std::string grid_unit;                          // GRIDUNIT first item, e.g. "METRES"
     std::string map_units;                          // MAPUNITS, e.g. "METRES"
     std::vector<std::string> gdorient;              // GDORIENT items, e.g. INC INC INC DOWN RIGHT
+    std::string unit_system;                        // a simulator case's INTEHEAD: METRIC, FIELD, LAB, PVT-M; empty when unknown
 };
 
 class CornerPointGrid {

@@ -37,6 +37,8 @@ TEST(CaseModel, LoadsTheGridInitArraysAndDeclaresTheStepsWithoutReadingThem) {
         EXPECT_EQ(model.grid.dynamic_property(name, 0), nullptr) << name;
     }
     EXPECT_EQ(default_property_name(model.grid), "PORO");
+    EXPECT_EQ(model.grid.metadata().unit_system, "FIELD");  // SPE1CASE2.DATA's RUNSPEC: FIELD
+    EXPECT_EQ(model.grid.metadata().grid_unit, "FEET");
     EXPECT_EQ(model_dims({spe9}, memory_limit), (grid::GridDims{24, 25, 15}));
 }
 
@@ -66,6 +68,7 @@ TEST(CaseModel, WithoutInitTheDefaultPropertyIsTheFirstRestartArray) {
     LoadedModel model = load_model({spe9}, memory_limit, std::string());
     EXPECT_FALSE(model.init_file);
     EXPECT_EQ(default_property_name(model.grid), "PRESSURE");
+    EXPECT_EQ(model.grid.metadata().unit_system, "FIELD") << "from the restart's INTEHEAD without an INIT";
     hold_property(model, "", -1, memory_limit);
     EXPECT_NE(model.grid.dynamic_property("PRESSURE", 0), nullptr);
 }

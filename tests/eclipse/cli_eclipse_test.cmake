@@ -39,11 +39,12 @@ string(JSON last_report GET "${out}" report_steps 89 report)
 string(JSON last_date GET "${out}" report_steps 89 date)
 string(JSON swat_steps GET "${out}" dynamic_properties SWAT)
 string(JSON soil_steps GET "${out}" dynamic_properties SOIL)
+string(JSON unit_system GET "${out}" unit_system)
 # SPE9.DATA: 26 wells (INJE1 and PRODU2..PRODU26), TSTEP 90*10 days from 1 JAN 2015.
 if(NOT wells EQUAL 26 OR NOT steps EQUAL 90 OR NOT last_report EQUAL 90 OR NOT last_date STREQUAL "2017-06-19"
-   OR NOT swat_steps EQUAL 90 OR NOT soil_steps EQUAL 90)
+   OR NOT swat_steps EQUAL 90 OR NOT soil_steps EQUAL 90 OR NOT unit_system STREQUAL "FIELD")
   message(FATAL_ERROR "inspect SPE9: ${wells} wells, ${steps} steps, last report ${last_report} on ${last_date}, "
-                      "SWAT ${swat_steps} steps, SOIL ${soil_steps}")
+                      "SWAT ${swat_steps} steps, SOIL ${soil_steps}, units ${unit_system}")
 endif()
 
 execute_process(COMMAND ${CUTAWAY} inspect ${spe1}.EGRID --cells-csv ${OUT}/spe1_cells.csv --property PORO
