@@ -37,7 +37,12 @@ generators::GeneratorParameters preset_parameters(const std::vector<std::string>
 
 /// The simulator case `model` names (one CASE.EGRID or CASE argument), if it names one.
 std::optional<eclipse::CaseFiles> simulator_case(const std::vector<std::string>& model) {
-    return model.size() == 1 ? eclipse::find_case_files(model.front()) : std::nullopt;
+    if (model.size() == 1) return eclipse::find_case_files(model.front());
+    for (const std::string& file : model)
+        if (const auto files = eclipse::find_case_files(file); files && files->egrid == std::filesystem::path(file))
+            throw std::invalid_argument(file + ": a simulator case takes no further files (CASE.INIT and CASE.UNRST "
+                                               "are read from beside it)");
+    return std::nullopt;
 }
 
 std::string case_description(const eclipse::CaseFiles& files, const LoadedModel& loaded) {

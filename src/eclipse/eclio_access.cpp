@@ -3,7 +3,9 @@
 namespace cutaway::eclipse {
 
 std::string first_line(const std::string& message) {
-    const std::string line = message.substr(0, message.find('\n'));
+    std::string line = message.substr(0, message.find('\n'));
+    if (const std::size_t end = line.find("] "); !line.empty() && line.front() == '[' && end != std::string::npos)
+        line.erase(0, end + 2);
     return line.empty() ? "an unreadable file" : line;
 }
 

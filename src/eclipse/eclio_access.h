@@ -13,7 +13,8 @@
 
 namespace cutaway::eclipse {
 
-/// The first line of an EclIO message (OPM's exceptions may carry a trace on further lines).
+/// The first line of an EclIO message (OPM's exceptions may carry a trace on further lines),
+/// without the "[source.cpp:line] " OPM_THROW puts before it.
 std::string first_line(const std::string& message);
 
 /// Runs `read` (calls into opm-common's EclIO on `file`) and rethrows whatever EclIO throws as an

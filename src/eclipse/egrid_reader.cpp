@@ -20,6 +20,9 @@ const std::string egrid_expected = "an Eclipse binary grid (EGRID with GRIDHEAD,
 std::unique_ptr<EGrid> open_egrid(const fs::path& egrid) {
     if (!fs::is_regular_file(egrid)) throw EclipseError({egrid.string(), "", "an EGRID file", "no such file"});
     auto file = read_checked(egrid, "", egrid_expected, [&] { return std::make_unique<EGrid>(egrid.string()); });
+    if (!file->hasKey("GRIDHEAD"))
+        throw EclipseError({egrid.string(), "", egrid_expected,
+                            "no GRIDHEAD (first array " + (file->arrayNames().empty() ? std::string("none") : file->arrayNames().front()) + ")"});
     if (file->is_radial()) throw EclipseError({egrid.string(), "GRIDHEAD", "a corner-point grid", "a radial grid"});
     return file;
 }

@@ -64,6 +64,19 @@ TEST(CaseModel, HoldPropertyReadsAnInitArrayOrOneReportStep) {
     EXPECT_NE(model.grid.dynamic_property("SWAT", 6), nullptr) << "a refused step releases nothing";
 }
 
+TEST(CaseModel, ACaseTakesNoFurtherFiles) {
+    for (const std::vector<std::string>& model : {std::vector<std::string>{spe1 + ".EGRID", spe9 + ".DATA"},
+                                                  std::vector<std::string>{spe9 + ".DATA", spe1 + ".EGRID"}})
+        try {
+            load_model(model, memory_limit);
+            FAIL() << "accepted a case with a further file";
+        } catch (const std::invalid_argument& error) {
+            EXPECT_NE(std::string(error.what()).find("SPE1CASE2.EGRID: a simulator case takes no further files"),
+                      std::string::npos)
+                << error.what();
+        }
+}
+
 TEST(CaseModel, WithoutInitTheDefaultPropertyIsTheFirstRestartArray) {
     LoadedModel model = load_model({spe9}, memory_limit, std::string());
     EXPECT_FALSE(model.init_file);

@@ -273,10 +273,13 @@ TEST(BadInput, MissingTruncatedAndForeignEgrid) {
         copy_bytes(egrid, dir / "CUT.EGRID", keep);
         const std::string message = eclipse_error_of([&] { read_egrid(dir / "CUT.EGRID", memory_limit); });
         EXPECT_NE(message.find("CUT.EGRID: "), std::string::npos) << keep << " bytes: " << message;
+        EXPECT_EQ(message.find(".cpp:"), std::string::npos) << "OPM's source location is dropped: " << message;
         EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     }
     copy_bytes(with_extension(spe1, ".INIT"), dir / "INIT_AS.EGRID");
-    EXPECT_NE(eclipse_error_of([&] { read_egrid(dir / "INIT_AS.EGRID", memory_limit); }).find("INIT_AS.EGRID: "),
+    EXPECT_NE(eclipse_error_of([&] { read_egrid(dir / "INIT_AS.EGRID", memory_limit); })
+                  .find("INIT_AS.EGRID: expected an Eclipse binary grid (EGRID with GRIDHEAD, COORD, ZCORN), found no "
+                        "GRIDHEAD (first array INTEHEAD)"),
               std::string::npos);
     std::ofstream(dir / "TEXT.EGRID") << "SPECGRID\n 1 1 1 /\n";
     EXPECT_NE(eclipse_error_of([&] { read_egrid(dir / "TEXT.EGRID", memory_limit); }).find("TEXT.EGRID: expected an Eclipse binary grid"),
