@@ -153,7 +153,7 @@ struct RankScene {
                 const double first_load_s = model.load_seconds;
                 model = {};
                 model = load_block(options.model, source, options.model_memory_limit_bytes(), options.property,
-                               options.step);
+                                   options.step);
                 model.load_seconds += first_load_s;
             }
             property = choose_property(model.grid, options, source.k0);
