@@ -153,7 +153,9 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
 }
 
 void add_scene_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")
+    c.add_option("model", o.model,
+                 "GRDECL file(s) loaded onto one grid (grid first, then properties), preset:NAME, or a simulator case "
+                 "CASE.EGRID (or CASE) with CASE.INIT and CASE.UNRST beside it")
         ->required()
         ->check(utf8_text());
     add_selection_options(c, o);

@@ -25,11 +25,11 @@ namespace cutaway::app {
 constexpr std::size_t render_target_bytes_per_pixel = 160;
 
 struct RenderOptions {
-    std::vector<std::string> model;   ///< GRDECL file(s) loaded onto one grid, or preset:NAME
+    std::vector<std::string> model;   ///< GRDECL file(s) loaded onto one grid, preset:NAME, or CASE.EGRID
     std::string property;             ///< empty: PORO, else the first property
     std::vector<float> range;         ///< LO HI
     double primary_fraction = 0;      ///< 0: --range or the default 1%
-    int step = -1;                    ///< time step of a dynamic property
+    int step = -1;                    ///< --time-step: report step of a dynamic property (-1: none given)
     std::vector<int> ijk_box;         ///< I0 J0 K0 I1 J1 K1
     std::string select_by;            ///< render only: primaries by this property, colours by `property`
     pipeline::FrameSettings settings;

@@ -19,11 +19,11 @@ std::string unit_system_name(int code) {
     }
 }
 
-void require_within_memory(const std::filesystem::path& file, const std::string& array, std::size_t needed_bytes,
+void require_within_memory(const std::filesystem::path& file, const std::string& what, std::size_t needed_bytes,
                            std::size_t limit_bytes) {
     if (needed_bytes > limit_bytes)
-        throw EclipseError({file.string(), array,
-                            "at most " + std::to_string(limit_bytes) + " bytes to read it (--memory-limit-gb)",
+        throw EclipseError({file.string(), "",
+                            "at most " + std::to_string(limit_bytes) + " bytes (--memory-limit-gb) to read " + what,
                             std::to_string(needed_bytes) + " bytes needed"});
 }
 

@@ -33,9 +33,10 @@ auto read_checked(const std::filesystem::path& file, const std::string& array, c
     }
 }
 
-/// Throws EclipseError naming `file` and `array` when reading needs more than `limit_bytes`
-/// (the --memory-limit-gb budget left for it), before anything is allocated.
-void require_within_memory(const std::filesystem::path& file, const std::string& array, std::size_t needed_bytes,
+/// Throws EclipseError naming `file` and `what` is read (e.g. "COORD, ZCORN and ACTNUM") when
+/// reading needs more than `limit_bytes` (the --memory-limit-gb budget left for it), before
+/// anything is allocated.
+void require_within_memory(const std::filesystem::path& file, const std::string& what, std::size_t needed_bytes,
                            std::size_t limit_bytes);
 
 /// Eclipse's name of INTEHEAD's unit convention item (1 METRIC, 2 FIELD, 3 LAB, 4 PVT-M); empty

@@ -82,7 +82,7 @@ grid::CornerPointGrid read_egrid(const fs::path& egrid, std::size_t memory_limit
     const std::size_t needed = sizeof(float) * (dims.coord_value_count() + dims.zcorn_value_count()) +
                                sizeof(int) * dims.cell_count() + sizeof(double) * dims.coord_value_count() +
                                grid::ZcornStore::full_bytes(dims) + dims.cell_count();
-    require_within_memory(egrid, "COORD, ZCORN, ACTNUM", needed, memory_limit_bytes);
+    require_within_memory(egrid, "COORD, ZCORN and ACTNUM", needed, memory_limit_bytes);
 
     const std::vector<float>& coord_values = read_array<float>(*file, egrid, "COORD", dims.coord_value_count());
     std::vector<double> coord(coord_values.begin(), coord_values.end());

@@ -86,7 +86,7 @@ void add_init_properties(grid::CornerPointGrid& grid, const fs::path& init, std:
     for (const CellArray& array : arrays)
         needed += array.size * (array.type == eclArrType::DOUB ? sizeof(double) : sizeof(float)) +
                   grid.cell_count() * sizeof(float);
-    require_within_memory(init, only ? *only : "all cell arrays", needed, memory_limit_bytes);
+    require_within_memory(init, only ? *only : "every cell array", needed, memory_limit_bytes);
     for (const CellArray& array : arrays) {
         if (array.type == eclArrType::INTE)
             grid.set_int_property(array.name, per_cell<std::int32_t>(init_data<int>(*file, init, array), grid));

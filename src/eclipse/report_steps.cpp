@@ -120,7 +120,7 @@ std::string ReportStep::date() const {
 ReportSteps::ReportSteps(fs::path unrst, const grid::CornerPointGrid& grid, std::size_t memory_limit_bytes)
     : file_(std::move(unrst)), actnum_(grid.actnum()), active_count_(grid.active_count()),
       memory_limit_bytes_(memory_limit_bytes) {
-    require_within_memory(file_, "one report step", read_bytes(), memory_limit_bytes_);
+    require_within_memory(file_, "a report step's arrays", read_bytes(), memory_limit_bytes_);
     const std::unique_ptr<ERst> file = open_unrst(file_);
     const grid::GridDims& d = grid.dims();
     std::set<std::string> names;
@@ -179,7 +179,7 @@ std::vector<float> ReportSteps::values(const std::string& name, std::size_t inde
                             std::to_string(index)});
     if (!has_property(name))
         throw EclipseError({file_.string(), name, "a per-cell restart array (one of the steps' arrays)", "none"});
-    require_within_memory(file_, name, read_bytes(), memory_limit_bytes_);
+    require_within_memory(file_, name + " at a report step", read_bytes(), memory_limit_bytes_);
     // A fresh ERst per read: EclIO keeps every array it has read until the file is closed.
     const std::unique_ptr<ERst> file = open_unrst(file_);
     const int report_number = steps_[index].report_number;
