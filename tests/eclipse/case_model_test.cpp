@@ -107,8 +107,8 @@ TEST(CaseModel, ReadingEveryStepHoldsOneStep) {
     GTEST_SKIP() << "AddressSanitizer's allocator does not report to mallinfo2";
 #else
     // glibc's count of bytes in use (mallinfo2().uordblks) after each step: EclIO keeps every array
-    // it reads until its file closes, so a reader that kept one ERst open would grow by SPE9's
-    // restart arrays (about 4 x 36 kB per step) at every step; ours reads each step from a fresh
+    // it reads until its file closes, so a reader that kept one ERst open would grow by the step's
+    // restart arrays (4 bytes per active cell each) at every step; ours reads each step from a fresh
     // ERst and the grid releases the step before. Allowed growth: one step's arrays (read_bytes),
     // for allocator slack.
     LoadedModel model = load_model({spe9}, memory_limit, std::string("SWAT"));
