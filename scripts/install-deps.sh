@@ -15,9 +15,10 @@ packages=(
   # animations: the ffmpeg program encodes H.264 MP4 (cutaway animate), ffprobe checks it in tests
   ffmpeg
   # tests, benchmarks, reference checks, fuzzing
-  libgtest-dev libgmock-dev libbenchmark-dev libopm-common-dev libboost-test-dev clang libclang-rt-14-dev libomp-dev
-  # the OPM Flow simulator: runs `generate --deck` decks (tests/generators/flow_run_test.cpp)
-  libopm-simulators-bin
+  libgtest-dev libgmock-dev libbenchmark-dev libboost-test-dev clang libclang-rt-14-dev libomp-dev
+  # simulator results (src/eclipse/: opm-common's EclIO; also the reference checks against EclipseGrid)
+  # and OPM Flow, which writes the test cases and runs `generate --deck` decks
+  libopm-common-dev libopm-simulators-bin
   # plots
   python3 python3-matplotlib python3-vtk9
   # distributed rendering (src/distributed/, CUTAWAY_MPI): OpenMPI and ParaView's IceT compositor

@@ -108,7 +108,7 @@ struct RankScene {
             active_per_layer.assign(std::size_t(distributed::layer_count(whole_dims, axis)), 0);
             if (!provisional) return;
             model = load_block(options.model, *provisional, options.model_memory_limit_bytes(), options.property,
-                               render_outputs(options));
+                               options.step, render_outputs(options));
             active_per_layer = distributed::active_per_layer(model.grid, *provisional, whole_dims, axis);
         });
         mpi.sum(active_per_layer);
@@ -122,7 +122,7 @@ struct RankScene {
                 const double first_load_s = model.load_seconds;
                 model = {};
                 model = load_block(options.model, source, options.model_memory_limit_bytes(), options.property,
-                                   render_outputs(options));
+                                   options.step, render_outputs(options));
                 model.load_seconds += first_load_s;
             }
             property = choose_property(model.grid, options, source.k0);

@@ -4,9 +4,14 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "eclipse/case_files.h"
+#include "eclipse/egrid_reader.h"
+#include "eclipse/init_reader.h"
+#include "eclipse/simulator_case.h"
 #include "generators/generator.h"
 #include "generators/presets.h"
 #include "grid/grdecl_reader.h"
+#include "grid/grid_box.h"
 
 namespace cutaway::app {
 namespace {
@@ -28,6 +33,45 @@ generators::GeneratorParameters preset_parameters(const std::vector<std::string>
         throw std::invalid_argument(model.front() + ": expected preset:NAME with NAME one of " +
                                     generators::preset_names() + ", found '" + name + "'");
     return *preset;
+}
+
+/// The simulator case `model` names (one CASE.EGRID or CASE argument), if it names one.
+std::optional<eclipse::CaseFiles> simulator_case(const std::vector<std::string>& model) {
+    if (model.size() == 1) return eclipse::find_case_files(model.front());
+    for (const std::string& file : model)
+        if (const auto files = eclipse::find_case_files(file); files && files->egrid == std::filesystem::path(file))
+            throw std::invalid_argument(file + ": a simulator case takes no further files (CASE.INIT and CASE.UNRST "
+                                               "are read from beside it)");
+    return std::nullopt;
+}
+
+std::string case_description(const eclipse::CaseFiles& files, const LoadedModel& loaded) {
+    std::string text = files.egrid.string();
+    text += files.init ? " + " + files.init->filename().string() : std::string(" (no INIT)");
+    if (loaded.report_steps)
+        text += " + " + files.unrst->filename().string() + " (" + std::to_string(loaded.report_steps->step_count()) +
+                " report steps)";
+    else
+        text += " (no UNRST)";
+    return text;
+}
+
+LoadedModel load_case(const eclipse::CaseFiles& files, std::size_t memory_limit_bytes,
+                      const std::optional<std::string>& only_property) {
+    eclipse::SimulatorCase simulator = eclipse::load_simulator_case(files, memory_limit_bytes, only_property);
+    LoadedModel loaded;
+    loaded.grid = std::move(simulator.grid);
+    loaded.report_steps = std::move(simulator.report_steps);
+    loaded.init_file = files.init;
+    loaded.description = case_description(files, loaded);
+    return loaded;
+}
+
+/// The restart array `property` (empty: the default) names in `model`, or empty when it is none.
+std::string restart_array(const LoadedModel& model, const std::string& property) {
+    if (!model.report_steps) return {};
+    const std::string name = property.empty() ? default_property_name(model.grid) : property;
+    return model.report_steps->has_property(name) ? name : std::string();
 }
 
 std::vector<std::filesystem::path> files_of(const std::vector<std::string>& model) {
@@ -63,7 +107,9 @@ LoadedModel load_model(const std::vector<std::string>& model, std::size_t memory
                        const std::optional<std::string>& only_property, const std::vector<io::NamedFile>& outputs) {
     const auto started = std::chrono::steady_clock::now();
     LoadedModel loaded;
-    if (is_preset(model)) {
+    if (const auto files = simulator_case(model)) {
+        loaded = load_case(*files, memory_limit_bytes, only_property);
+    } else if (is_preset(model)) {
         generators::GeneratorParameters parameters = preset_parameters(model);
         const bool without_flood = only_property && *only_property != generators::generated_dynamic_property;
         if (without_flood) parameters.time_steps = 0;
@@ -86,16 +132,62 @@ std::vector<io::NamedFile> model_input_files(const std::vector<std::string>& mod
     return files;
 }
 
+std::string default_property_name(const grid::CornerPointGrid& grid) {
+    if (grid.property("PORO")) return "PORO";
+    if (const auto statics = grid.property_names(); !statics.empty()) return statics.front();
+    if (const auto dynamics = grid.dynamic_property_names(); !dynamics.empty()) return dynamics.front();
+    return {};
+}
+
+bool holds_time_step(const LoadedModel& model, const std::string& property, int time_step) {
+    const std::string array = restart_array(model, property);
+    return array.empty() || model.grid.dynamic_property(array, std::size_t(std::max(time_step, 0))) != nullptr;
+}
+
+void hold_property(LoadedModel& model, const std::string& property, int time_step, std::size_t memory_limit_bytes) {
+    const std::string name = property.empty() ? default_property_name(model.grid) : property;
+    const bool unread = !model.grid.property(name) && !model.grid.int_property(name) && restart_array(model, name).empty();
+    if (model.init_file && unread)
+        eclipse::add_init_properties(model.grid, *model.init_file, eclipse::memory_left(model.grid, memory_limit_bytes), name);
+    if (holds_time_step(model, property, time_step)) return;
+    const std::size_t step = std::size_t(std::max(time_step, 0));
+    const eclipse::ReportSteps& steps = *model.report_steps;
+    if (step >= steps.step_count())
+        throw std::invalid_argument("--time-step " + std::to_string(step) + ": expected a report step 0.." +
+                                    std::to_string(steps.step_count() - 1) + " of " + steps.file().string() + " (" +
+                                    std::to_string(steps.step_count()) + " steps)");
+    eclipse::hold_report_step(model.grid, steps, restart_array(model, property), step);
+}
+
 grid::GridDims model_dims(const std::vector<std::string>& model, std::size_t memory_limit_bytes) {
+    if (const auto files = simulator_case(model)) return eclipse::read_egrid_dims(files->egrid);
     if (is_preset(model)) return preset_parameters(model).dims;
     return grid::read_grdecl_dims(files_of(model), read_options(memory_limit_bytes, {}));
 }
 
 LoadedModel load_block(const std::vector<std::string>& model, const grid::IjkBox& box, std::size_t memory_limit_bytes,
-                       const std::string& property, const std::vector<io::NamedFile>& outputs) {
+                       const std::string& property, int time_step, const std::vector<io::NamedFile>& outputs) {
     const auto started = std::chrono::steady_clock::now();
     LoadedModel loaded;
-    if (is_preset(model)) {
+    if (const auto files = simulator_case(model)) {
+        LoadedModel whole = load_case(*files, memory_limit_bytes, property);
+        hold_property(whole, property, time_step, memory_limit_bytes);
+        loaded.grid = grid::extract_box(whole.grid, box);
+        const grid::GridDims& dims = whole.grid.dims();
+        for (const std::string& name : whole.grid.property_names())
+            loaded.grid.set_property(name, grid::box_values(*whole.grid.property(name), dims, box));
+        for (const std::string& name : whole.grid.int_property_names())
+            loaded.grid.set_int_property(name, grid::box_values(*whole.grid.int_property(name), dims, box));
+        for (const std::string& name : whole.grid.dynamic_property_names()) {
+            const std::size_t steps = whole.grid.step_count(name);
+            loaded.grid.declare_dynamic_steps(name, steps);
+            for (std::size_t step = 0; step < steps; ++step)
+                if (const std::vector<float>* values = whole.grid.dynamic_property(name, step))
+                    loaded.grid.set_dynamic_step(name, step, grid::box_values(*values, dims, box));
+        }
+        // No report_steps: they spread values over the whole grid's cells, not the box's.
+        loaded.description = whole.description + " (box cut from the whole grid)";
+    } else if (is_preset(model)) {
         const generators::GeneratorParameters parameters = preset_parameters(model);
         if (property == generators::generated_dynamic_property)
             throw std::invalid_argument("--property " + property + ": a preset's " + property +

@@ -68,6 +68,9 @@ int run_render(const RenderOptions& options) {
     refuse_render_overwrites(options);
     LoadedModel model =
         load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options), render_outputs(options));
+    // A simulator case's report step (and any INIT array not read yet) for what the frame shows.
+    hold_property(model, options.property, options.step, options.model_memory_limit_bytes());
+    if (!options.select_by.empty()) hold_property(model, options.select_by, options.step, options.model_memory_limit_bytes());
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, colouring_options(model.grid, options));

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "annotation/property_units.h"
+#include "app/model_source.h"
 #include "app/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/setting_names.h"
@@ -108,7 +109,9 @@ void add_selection_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2)->check(finite_in(-FLT_MAX, FLT_MAX));
     c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)")
         ->check(finite_above(0, 1));
-    c.add_option("--step", o.step, "time step of a dynamic property (0-based)")->check(finite_in(0, 1e6));
+    c.add_option("--time-step,--step", o.step,
+                 "report step of a dynamic property: the K-th in the file, 0-based (--step: the same)")
+        ->check(finite_in(0, 1e6));
     // Dimensions are at most 1e8 (the GRDECL reader's bound); the box is checked against the grid's.
     c.add_option("--ijk-box", o.ijk_box, "restrict primaries to I0 J0 K0 I1 J1 K1 (0-based, inclusive)")
         ->expected(6)
@@ -158,7 +161,9 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
 }
 
 void add_scene_options(CLI::App& c, RenderOptions& o) {
-    c.add_option("model", o.model, "GRDECL file(s) loaded onto one grid (grid first, then properties), or preset:NAME")
+    c.add_option("model", o.model,
+                 "GRDECL file(s) loaded onto one grid (grid first, then properties), preset:NAME, or a simulator case "
+                 "CASE.EGRID (or CASE) with CASE.INIT and CASE.UNRST beside it")
         ->required()
         ->check(utf8_text());
     add_selection_options(c, o);
@@ -216,19 +221,14 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
 }
 
 annotation::ColourBarLabel PropertyChoice::colour_bar_label() const {
-    return {label, colour_range.min, colour_range.max, annotation::property_unit(name)};
+    return {label, colour_range.min, colour_range.max, annotation::property_unit(name, unit_system)};
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer) {
     PropertyChoice choice;
     const std::vector<std::string> statics = grid.property_names();
     const std::vector<std::string> dynamics = grid.dynamic_property_names();
-    std::string name = options.property;
-    if (name.empty()) {
-        if (grid.property("PORO")) name = "PORO";
-        else if (!statics.empty()) name = statics.front();
-        else if (!dynamics.empty()) name = dynamics.front();
-    }
+    const std::string name = options.property.empty() ? default_property_name(grid) : options.property;
     if (name.empty()) {
         // No property in the model: colour and select by layer index so the frame still says something.
         choice.name = choice.label = "K (layer index; the model has no property)";
@@ -240,13 +240,16 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
     } else if (grid.step_count(name) > 0) {
         const int step = std::max(options.step, 0);
         if (std::size_t(step) >= grid.step_count(name))
-            throw std::invalid_argument("--step " + std::to_string(step) + ": property " + name + " has " +
+            throw std::invalid_argument("--time-step " + std::to_string(step) + ": property " + name + " has " +
                                         std::to_string(grid.step_count(name)) + " time steps (0-based)");
         choice.name = name;
         choice.label = name + " step " + std::to_string(step);
         choice.external = grid.dynamic_property(name, std::size_t(step));
+        // A simulator case's step is read on demand (hold_time_step) before a property is chosen.
+        if (!choice.external)
+            throw std::logic_error("--time-step " + std::to_string(step) + ": step of " + name + " not read before use");
     } else if (values) {
-        throw std::invalid_argument("--step: property " + name + " is static (dynamic ones: " + names_of(dynamics) + ")");
+        throw std::invalid_argument("--time-step: property " + name + " is static (dynamic ones: " + names_of(dynamics) + ")");
     } else if (const std::vector<std::int32_t>* integers = grid.int_property(name); integers && options.step < 0) {
         // Integer properties (FACIES, *NUM) colour and select as reals: every int32 class is exact
         // up to 2^24, far beyond any class count.
@@ -258,6 +261,7 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
                                     names_of(dynamics) + ")");
     }
     choice.colour_range = grid::active_value_range(grid, choice.values(), choice.name);
+    choice.unit_system = grid.metadata().unit_system;
     return choice;
 }
 

@@ -26,11 +26,11 @@ namespace cutaway::app {
 constexpr std::size_t render_target_bytes_per_pixel = 160;
 
 struct RenderOptions {
-    std::vector<std::string> model;   ///< GRDECL file(s) loaded onto one grid, or preset:NAME
+    std::vector<std::string> model;   ///< GRDECL file(s) loaded onto one grid, preset:NAME, or CASE.EGRID
     std::string property;             ///< empty: PORO, else the first property
     std::vector<float> range;         ///< LO HI
     double primary_fraction = 0;      ///< 0: --range or the default 1%
-    int step = -1;                    ///< time step of a dynamic property
+    int step = -1;                    ///< --time-step: report step of a dynamic property (-1: none given)
     std::vector<int> ijk_box;         ///< I0 J0 K0 I1 J1 K1
     std::string select_by;            ///< render only: primaries by this property, colours by `property`
     pipeline::FrameSettings settings;
@@ -95,8 +95,9 @@ struct PropertyChoice {
     std::vector<float> owned;         ///< storage for a derived property (layer index)
     grid::PrimaryRange colour_range;  ///< active min and max
     grid::PrimaryRange primary_range;
+    std::string unit_system;          ///< the grid's (GridMetadata::unit_system), for the unit
     const std::vector<float>& values() const { return external ? *external : owned; }
-    /// The colour bar's title (the label), unit (by the property's keyword) and colour range.
+    /// The colour bar's title (the label), unit (by the property's keyword and unit system) and colour range.
     annotation::ColourBarLabel colour_bar_label() const;
 };
 

@@ -80,6 +80,21 @@ void CornerPointGrid::add_dynamic_step(const std::string& name, std::vector<floa
     dynamic_properties_[name].push_back(std::move(values));
 }
 
+void CornerPointGrid::declare_dynamic_steps(const std::string& name, std::size_t step_count) {
+    auto& steps = dynamic_properties_[name];
+    steps.clear();
+    steps.resize(step_count);
+}
+
+void CornerPointGrid::set_dynamic_step(const std::string& name, std::size_t step, std::vector<float> values) {
+    require_cell_sized(name, values.size());
+    const auto found = dynamic_properties_.find(name);
+    if (found == dynamic_properties_.end() || step >= found->second.size())
+        throw std::invalid_argument(name + ": step " + std::to_string(step) + " of a property not declared with that many steps");
+    for (auto& held : found->second) held = std::vector<float>();
+    found->second[step] = std::move(values);
+}
+
 std::size_t CornerPointGrid::step_count(const std::string& name) const {
     const auto* steps = find_or_null(dynamic_properties_, name);
     return steps ? steps->size() : 0;
@@ -87,7 +102,7 @@ std::size_t CornerPointGrid::step_count(const std::string& name) const {
 
 const std::vector<float>* CornerPointGrid::dynamic_property(const std::string& name, std::size_t step) const {
     const auto* steps = find_or_null(dynamic_properties_, name);
-    return steps && step < steps->size() ? &(*steps)[step] : nullptr;
+    return steps && step < steps->size() && !(*steps)[step].empty() ? &(*steps)[step] : nullptr;
 }
 
 std::size_t CornerPointGrid::geometry_bytes() const {

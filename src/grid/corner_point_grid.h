@@ -26,6 +26,7 @@ struct GridMetadata {
     std::string grid_unit;                          // GRIDUNIT first item, e.g. "METRES"
     std::string map_units;                          // MAPUNITS, e.g. "METRES"
     std::vector<std::string> gdorient;              // GDORIENT items, e.g. INC INC INC DOWN RIGHT
+    std::string unit_system;                        // a simulator case's INTEHEAD: METRIC, FIELD, LAB, PVT-M; empty when unknown
 };
 
 class CornerPointGrid {
@@ -63,7 +64,14 @@ public:
 
     // Dynamic properties: one array per time step, in the order the steps were added.
     void add_dynamic_step(const std::string& name, std::vector<float> values);
+    /// A dynamic property read on demand (a simulator's restart file): `name` gets `step_count`
+    /// steps, none of them held (dynamic_property gives null) until set_dynamic_step holds one.
+    void declare_dynamic_steps(const std::string& name, std::size_t step_count);
+    /// Holds `values` (one per cell) as step `step` of a declared property and releases the step
+    /// held before, so a property read on demand costs one step's array.
+    void set_dynamic_step(const std::string& name, std::size_t step, std::vector<float> values);
     std::size_t step_count(const std::string& name) const;
+    /// Null for an unknown name or step, or a declared step not held.
     const std::vector<float>* dynamic_property(const std::string& name, std::size_t step) const;
     std::vector<std::string> dynamic_property_names() const;
 

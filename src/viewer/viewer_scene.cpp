@@ -1,5 +1,7 @@
 #include "viewer/viewer_scene.h"
 
+#include <utility>
+
 #include "cutaway/camera.h"
 #include "grid/primary_selection.h"
 
@@ -13,6 +15,11 @@ ViewerScene::ViewerScene(app::LoadedModel model, const gl::ShaderLibrary& shader
 }
 
 void ViewerScene::select(const app::RenderOptions& options) {
+    // Holding another report step releases the array shown now: the shown values stay valid (a
+    // copy) in case the new selection is refused.
+    if (!app::holds_time_step(model_, options.property, options.step) && property_.external)
+        property_.owned = *std::exchange(property_.external, nullptr);
+    app::hold_property(model_, options.property, options.step, options.model_memory_limit_bytes());
     app::PropertyChoice property = app::choose_property(model_.grid, options);
     std::optional<grid::IjkBox> box = app::choose_primary_range(model_.grid, property, options);
     // A new range over the same values re-uploads nothing: the renderer selects on the GPU.

@@ -124,7 +124,8 @@ TEST_F(BadInput, RenderOptionsOutsideTheirRangeAreRefusedWithTheRange) {
         {{"--primary-fraction", "0"}, {"--primary-fraction", "(0, 1]"}},
         {{"--primary-fraction", "-0.5"}, {"--primary-fraction", "(0, 1]"}},
         {{"--primary-fraction", "nan"}, {"--primary-fraction", "(0, 1]"}},
-        {{"--step", "-1"}, {"--step", "[0, 1e+06]"}},
+        {{"--time-step", "-1"}, {"--time-step", "[0, 1e+06]"}},
+        {{"--step", "-1"}, {"--time-step", "[0, 1e+06]"}},  // --step: the older name of --time-step
         {{"--memory-limit-gb", "-1"}, {"--memory-limit-gb", "GiB"}},
         {{"--memory-limit-gb", "nan"}, {"--memory-limit-gb", "GiB"}},
         {{"--silhouette-width", "100000"}, {"--silhouette-width", "[1, 64] pixels"}},

@@ -138,7 +138,7 @@ TEST_F(BadInput, StepOfTheSelectingPropertyIsCheckedAgainstIt) {
         cutaway({"generate", "--dims", "4", "4", "2", "--seed", "1", "--time-steps", "2", "--quiet", "--out", grid.string()});
     ASSERT_EQ(generated.exit_code, 0) << generated.err;
     const ProcessResult r = cutaway({"render", grid, "--select-by", "SWAT", "--step", "3", "--out", out("x.png")});
-    expect_refused(r, {"--select-by", "--step 3", "property SWAT has 2 time steps"});
+    expect_refused(r, {"--select-by", "--time-step 3", "property SWAT has 2 time steps"});
     EXPECT_EQ(r.err.find("PORO"), std::string::npos) << r.err;
     expect_no_output();
 }

@@ -135,6 +135,11 @@ TEST(PropertyUnits, TheKeywordsOfOurModels) {
     EXPECT_EQ(property_unit("PERMX"), "mD");
     EXPECT_EQ(property_unit("SWAT"), "frac");
     EXPECT_EQ(property_unit("NOT_A_KEYWORD"), "");
+    EXPECT_EQ(property_unit("PRESSURE"), "bar");
+    EXPECT_EQ(property_unit("PRESSURE", "FIELD"), "psia");
+    EXPECT_EQ(property_unit("DEPTH", "FIELD"), "ft");
+    EXPECT_EQ(property_unit("DX", "LAB"), "cm");
+    EXPECT_EQ(property_unit("SWAT", "FIELD"), "frac");
 }
 
 TEST(AxisTicks, RoundStepsAndDigits) {
