@@ -3,15 +3,15 @@
 //     load each)
 //     preset: index into --presets; draw: index into --draws (visible | all-faces, the paper's path);
 //     fraction_bp: primary fraction in basis points (100 = 1%);
-//     strategy: index into the cut-surface registry (filtered by --strategies); border: 0 raycast,
-//     1 threshold; mean_filter: k (0 = off); aperture: full opening angle in degrees (--apertures; -1 =
+//     strategy: index into the cut-surface registry (filtered by --strategies); border: index into
+//     the BorderMode name table (0 raycast, 1 threshold); mean_filter: k (0 = off); aperture: full opening angle in degrees (--apertures; -1 =
 //     each pose's own along the path); pose: -1 = the whole path, else one pose (--per_pose).
 //     Each iteration renders one pose of the path (warm-up passes first); the manual time is the
 //     fenced wall time of the whole frame. Counters: median over the timed frames of the fenced
-//     ms per stage, baseline (median plain shaded frame of the same poses, same draw mode; not with
+//     ms per stage and of its GL timer query beside it (`gpu_ms_<stage>`, stage_counters.h), baseline (median plain shaded frame of the same poses, same draw mode; not with
 //     --baseline=0),
 //     faces_secondary / faces_baseline (faces stage 2 and the plain frame drew, last pose),
-//     gl_query_valid (1 only if every GL query agreed), primary_pixels (the primaries' screen
+//     gpu_query_valid (1 only if every GL query agreed), primary_pixels (the primaries' screen
 //     footprint: visible primary pixels of each timed frame, median; read after the frame's fence,
 //     outside its time), readback_bytes (the cut stage's read-back per frame, the largest seen).
 //   BM_baseline/preset: the plain shaded frame over the same path (not with --baseline=0).
@@ -32,6 +32,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,7 @@
 #include "app/render_options.h"
 #include "app/run_context.h"
 #include "bench_cutaway_options.h"
+#include "stage_counters.h"
 #include "camera_path.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_seeds.h"
@@ -104,10 +106,6 @@ std::size_t visible_primary_pixels(const pipeline::CutawayRenderer& renderer) {
                                      [](std::uint32_t f) { return (f & pipeline::flag_primary) != 0; }));
 }
 
-pipeline::DrawMode draw_mode(const std::string& name) {
-    return name == "all-faces" ? pipeline::DrawMode::all_faces : pipeline::DrawMode::visible;
-}
-
 std::vector<pipeline::Camera> path_cameras(const pipeline::CutawayRenderer& renderer,
                                            const std::vector<bench::PathPose>& path) {
     std::vector<pipeline::Camera> cameras;
@@ -153,11 +151,11 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
     pipeline::CutawayRenderer& renderer = *scene.renderer;
     pipeline::FrameSettings settings;
     settings.strategy = setup.strategies.at(std::size_t(state.range(4)));
-    settings.border = state.range(3) ? pipeline::BorderMode::threshold : pipeline::BorderMode::raycast;
+    settings.border = pipeline::choices_of(pipeline::BorderMode{})[std::size_t(state.range(3))].value;
     settings.mean_filter = int(state.range(2));
     settings.line_width_px = 1;
     settings.ssao = options.ssao;
-    settings.draw = draw_mode(options.draws.at(std::size_t(state.range(6))));
+    settings.draw = *pipeline::find_choice(pipeline::choices_of(pipeline::DrawMode{}), options.draws.at(std::size_t(state.range(6))));
     // The paper's path keeps the paper's full-resolution SSAO; ours computes it for one pixel in four.
     settings.ssao_half_resolution = settings.draw == pipeline::DrawMode::visible;
     const std::vector<bench::PathPose> path = poses_for(options, state.range(0), state.range(1));
@@ -169,37 +167,33 @@ void bm_cutaway(benchmark::State& state, const BenchSetup& setup) {
 
     for (int w = 0; w < options.warmup; ++w)
         for (std::size_t k = 0; k < path.size(); ++k) frame(k);
-    std::map<std::string, std::vector<double>> stage_times;  // one entry per timed frame (0: stage not run)
-    std::vector<double> primary_pixels;                       // per timed frame
+    bench::StageCounters stage_times;
+    std::vector<double> primary_pixels;  // per timed frame
     std::size_t readback_bytes = 0;
-    bool queries_valid = true;
     std::size_t k = 0;
     for (auto _ : state) {
         const pipeline::FrameTimes times = frame(k++ % path.size());
         state.SetIterationTime(times.total.wall_ms / 1000.0);
         readback_bytes = std::max(readback_bytes, renderer.status().cut_readback_bytes);
         primary_pixels.push_back(double(visible_primary_pixels(renderer)));
-        for (const char* name : pipeline::stage_names) stage_times[name].push_back(0.0);
-        for (const gl::StageTime& stage : times.stages) {
-            stage_times[stage.stage].back() += stage.wall_ms;
-            queries_valid = queries_valid && stage.gl_query_valid;
-        }
-        stage_times["total"].push_back(times.total.wall_ms);
+        bench::FrameStageTimes stages = bench::sum_by_stage(pipeline::stage_names, times.stages);
+        stages.wall_ms["total"] = times.total.wall_ms;
+        stages.gpu_ms["total"] = times.total.gl_query_ms;
+        stage_times.add(stages);
     }
     if (primary_pixels.back() == 0) state.SkipWithError("no primary pixel visible in the last frame");
     const double faces_secondary = double(renderer.faces_drawn().secondary);
 
-    for (const auto& [name, times] : stage_times) state.counters[name] = median(times);
+    stage_times.set_counters(state);
     state.counters["faces_secondary"] = faces_secondary;
     if (options.baseline) {
         std::vector<double> baseline;
         for (const pipeline::Camera& camera : cameras) baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
         const double baseline_ms = median(baseline);
         state.counters["baseline"] = baseline_ms;
-        state.counters["total_over_baseline"] = median(stage_times["total"]) / baseline_ms;
+        state.counters["total_over_baseline"] = stage_times.median_wall_ms("total") / baseline_ms;
         state.counters["faces_baseline"] = double(renderer.faces_drawn().secondary);
     }
-    state.counters["gl_query_valid"] = queries_valid ? 1 : 0;
     state.counters["primary_cells"] = double(primaries);
     state.counters["primary_pixels"] = median(primary_pixels);
     state.counters["readback_bytes"] = double(readback_bytes);
@@ -302,7 +296,9 @@ void register_benchmarks(const BenchSetup& setup) {
     const bench::CutawayBenchOptions& o = setup.options;
     std::vector<std::int64_t> fractions_bp, borders, mean_filters(o.mean_filters.begin(), o.mean_filters.end());
     for (double f : o.fractions) fractions_bp.push_back(std::llround(f * 10000.0));
-    for (const std::string& b : o.borders) borders.push_back(b == "threshold" ? 1 : 0);
+    const std::vector<std::string> border_names = pipeline::choice_names<pipeline::BorderMode>();
+    for (const std::string& b : o.borders)
+        borders.push_back(std::find(border_names.begin(), border_names.end(), b) - border_names.begin());
     std::vector<std::int64_t> poses{-1}, apertures(o.apertures.begin(), o.apertures.end());
     if (o.per_pose) poses = indices(bench::camera_path(o.poses));
     if (apertures.empty()) apertures = {-1};
@@ -368,11 +364,12 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
 
 int main(int argc, char** argv) {
     app::keep_freed_heap_memory();  // as `cutaway` (app/heap_policy.h)
+    bench::CutawayBenchOptions options;
+    CLI::App flags{"Cutaway frame times over the paper's camera path (Google Benchmark)", "bench_cutaway"};
+    bench::add_cutaway_bench_flags(flags, options);
+    if (const std::optional<int> exit_code = bench::parse_flags(flags, argc, argv)) return *exit_code;
     try {
-        const bench::CutawayBenchOptions options = bench::take_bench_options(argc, argv);
         const std::vector<std::string> strategies = chosen_strategies(options.strategies);
-        for (const std::string& name : options.cpu_references)
-            if (name != "all" && name != "none") pipeline::find_cut_surface(name);  // throws for unknown names
         const std::unique_ptr<gl::GlContext> context = gl::create_context(gl::ContextOptions{});
         const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
         SceneCache cache(shaders, options.width, options.height);
@@ -380,14 +377,11 @@ int main(int argc, char** argv) {
         add_context(options, strategies, *context);
         register_benchmarks(setup);
         benchmark::Initialize(&argc, argv);
-        if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
-            std::cerr << bench::usage_text();
-            return 1;
-        }
+        if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
         benchmark::RunSpecifiedBenchmarks();
         benchmark::Shutdown();
     } catch (const std::exception& error) {
-        std::cerr << "bench_cutaway: " << error.what() << "\n" << bench::usage_text();
+        std::cerr << "bench_cutaway: " << error.what() << "\n";
         return 1;
     }
     return 0;

@@ -8,7 +8,8 @@
 // Every rank runs the same benchmarks with a fixed number of iterations (Google Benchmark's
 // adaptive count could differ between ranks and leave one waiting in a collective). An
 // iteration's time is the slowest rank's fenced frame (MPI max); counters are medians over the
-// timed frames: each stage as the slowest rank ran it, the allreduce and IceT times, bytes moved
+// timed frames: each stage as the slowest rank ran it (fenced, and by GL timer query as
+// `gpu_ms_<stage>` with `gpu_query_valid` over every rank: stage_counters.h), the allreduce and IceT times, bytes moved
 // per frame, and the largest block. Only rank 0 reports. Each rank holds the whole preset while
 // its renderer is built, then only its slab (RankRenderer): this measures frames, not loading.
 #include <benchmark/benchmark.h>
@@ -17,14 +18,18 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "app/heap_policy.h"
 #include "app/model_source.h"
+#include "app/option_checks.h"
 #include "app/render_options.h"
 #include "app/run_context.h"
-#include "bench_cutaway_options.h"
+#include "bench_cli.h"
 #include "distributed/mpi_session.h"
 #include "distributed/rank_blocks.h"
 #include "distributed/rank_renderer.h"
@@ -32,12 +37,15 @@
 #include "gl/shader_library.h"
 #include "grid/face_classification.h"
 #include "metrics/median.h"
+#include "stage_counters.h"
 
 namespace cutaway {
 namespace {
 using metrics::median;
 
 constexpr std::size_t memory_limit = std::size_t(8) << 30;
+/// The stages of a distributed frame the counters report (frame_plan.cpp names them).
+constexpr const char* distributed_stages[] = {"cut_surface", "cut_combine", "culling", "secondary", "primary", "composite"};
 
 struct DistributedBenchOptions {
     std::vector<std::string> presets{"zaphirus", "petra", "sapphire"};
@@ -46,36 +54,26 @@ struct DistributedBenchOptions {
     distributed::SlabAxis slabs = distributed::SlabAxis::k;
 };
 
-const char* usage_text() {
-    return "usage: mpirun -np N bench_distributed [--presets=a,b] [--size=WxH] [--frames=N] [--warmup=N] "
-           "[--slabs=i|j|k] [--benchmark_* flags]\n";
+/// Registers the flags above on `flags`, bound to `o`.
+void add_distributed_bench_flags(CLI::App& flags, DistributedBenchOptions& o) {
+    flags.add_option("--presets", o.presets, "models (preset:NAME), one benchmark each")
+        ->delimiter(',')->check(app::one_of(bench::model_preset_names()));
+    bench::add_dims_option(flags, "--size", {&o.width, &o.height}, 16, 32768, "WxH", "pixels", "image size");
+    flags.add_option("--frames", o.frames, "timed frames")->check(app::finite_in(1, 1000));
+    flags.add_option("--warmup", o.warmup, "untimed frames first")->check(app::finite_in(0, 100));
+    flags.add_option_function<std::string>(
+             "--slabs", [&o](const std::string& name) { o.slabs = distributed::slab_axis_from_name(name); },
+             "the axis the model is split along into one slab per rank")
+        ->check(app::one_of({"i", "j", "k"}))
+        ->default_str(distributed::slab_axis_name(o.slabs));
 }
 
-/// Removes the flags above from argv, and on ranks other than 0 also --benchmark_out* (only rank 0
-/// writes the file); throws std::invalid_argument on bad values.
-DistributedBenchOptions take_options(int& argc, char** argv, bool root) {
-    DistributedBenchOptions o;
+/// Takes --benchmark_out* out of argv on ranks other than 0 (only rank 0 writes the file).
+void drop_benchmark_out(int& argc, char** argv) {
     int kept = 1;
-    for (int a = 1; a < argc; ++a) {
-        const std::string arg = argv[a];
-        const std::size_t eq = arg.find('=');
-        const std::string flag = arg.substr(0, eq), value = eq == std::string::npos ? "" : arg.substr(eq + 1);
-        if (flag == "--presets") o.presets = bench::split_list(value);
-        else if (flag == "--frames") o.frames = bench::parse_list<int>(flag, value).at(0);
-        else if (flag == "--warmup") o.warmup = bench::parse_list<int>(flag, value).at(0);
-        else if (flag == "--slabs") o.slabs = distributed::slab_axis_from_name(value);
-        else if (!root && flag.rfind("--benchmark_out", 0) == 0) continue;
-        else if (flag == "--size") {
-            const std::size_t x = value.find('x');
-            if (x == std::string::npos) throw std::invalid_argument("--size: expected WxH, got '" + value + "'");
-            o.width = bench::parse_list<int>(flag, value.substr(0, x)).at(0);
-            o.height = bench::parse_list<int>(flag, value.substr(x + 1)).at(0);
-        } else argv[kept++] = argv[a];
-    }
+    for (int a = 1; a < argc; ++a)
+        if (std::string(argv[a]).rfind("--benchmark_out", 0) != 0) argv[kept++] = argv[a];
     argc = kept;
-    if (o.frames < 1 || o.warmup < 0) throw std::invalid_argument("--frames: at least 1, --warmup: at least 0");
-    if (o.presets.empty()) throw std::invalid_argument("--presets: expected at least one preset");
-    return o;
 }
 
 struct BenchSetup {
@@ -102,23 +100,27 @@ void bm_distributed_frame(benchmark::State& state, const BenchSetup& setup, cons
         frame, pipeline::OrbitPose{}, o.width, o.height, rank.renderer().status(settings).colour_bar_reserved_width);
 
     for (int w = 0; w < o.warmup; ++w) rank.render(settings, camera);
-    std::map<std::string, std::vector<double>> slowest;  // per timed frame, max over ranks
+    bench::StageCounters stages;                          // the slowest rank's, per timed frame
+    std::map<std::string, std::vector<double>> exchanges;  // per timed frame, max (bytes: sum) over ranks
     for (auto _ : state) {
         const pipeline::FrameTimes times = rank.render(settings, camera);
         const double total_ms = mpi.max(times.total.wall_ms);
         state.SetIterationTime(total_ms / 1000.0);
-        slowest["total"].push_back(total_ms);
-        std::map<std::string, double> stages;
-        for (const gl::StageTime& stage : times.stages) stages[stage.stage] += stage.wall_ms;
-        for (const char* name : {"cut_surface", "cut_combine", "culling", "secondary", "primary", "composite"})
-            slowest[name].push_back(mpi.max(stages[name]));  // every rank asks for the same names
+        bench::FrameStageTimes frame = bench::sum_by_stage(distributed_stages, times.stages);
+        for (auto& [name, ms] : frame.wall_ms) ms = mpi.max(ms);  // every rank asks for the same names
+        for (auto& [name, ms] : frame.gpu_ms) ms = mpi.max(ms);
+        frame.queries_valid = mpi.max(frame.queries_valid ? 0.0 : 1.0) == 0.0;
+        frame.wall_ms["total"] = total_ms;
+        frame.gpu_ms["total"] = mpi.max(times.total.gl_query_ms);
+        stages.add(frame);
         const distributed::ExchangeCosts& exchange = rank.last_exchange();
-        slowest["allreduce_mpi_ms"].push_back(mpi.max(exchange.allreduce_ms));
-        slowest["icet_composite_ms"].push_back(mpi.max(exchange.composite_ms));
-        slowest["icet_bytes_sent"].push_back(double(mpi.sum(exchange.icet_bytes_sent)));
-        slowest["allreduce_message_bytes"].push_back(double(exchange.allreduce_bytes));
+        exchanges["allreduce_mpi_ms"].push_back(mpi.max(exchange.allreduce_ms));
+        exchanges["icet_composite_ms"].push_back(mpi.max(exchange.composite_ms));
+        exchanges["icet_bytes_sent"].push_back(double(mpi.sum(exchange.icet_bytes_sent)));
+        exchanges["allreduce_message_bytes"].push_back(double(exchange.allreduce_bytes));
     }
-    for (const auto& [name, values] : slowest) state.counters[name] = median(values);
+    stages.set_counters(state);
+    for (const auto& [name, values] : exchanges) state.counters[name] = median(values);
     state.counters["ranks"] = mpi.size();
     state.counters["active_cells"] = double(model.grid.active_count());
     state.counters["max_block_cells"] = mpi.max(double(rank.block().grid.cell_count()));
@@ -157,8 +159,15 @@ int main(int argc, char** argv) {
     using namespace cutaway;
     app::keep_freed_heap_memory();  // as `cutaway` (app/heap_policy.h)
     const distributed::MpiSession mpi;
+    DistributedBenchOptions options;
+    CLI::App flags{"One distributed cutaway frame across the ranks of mpirun (Google Benchmark)", "bench_distributed"};
+    add_distributed_bench_flags(flags, options);
+    // Every rank parses the same command line; rank 0 alone prints help or the refusal.
+    const bench::Messages messages = mpi.root() ? bench::Messages::print : bench::Messages::silent;
+    if (const std::optional<int> exit_code = bench::parse_flags(flags, argc, argv, bench::Arguments::with_google_benchmark, messages))
+        return *exit_code;
+    if (!mpi.root()) drop_benchmark_out(argc, argv);
     try {
-        const DistributedBenchOptions options = take_options(argc, argv, mpi.root());
         const std::unique_ptr<gl::GlContext> context = gl::create_context(gl::ContextOptions{});
         const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
         const BenchSetup setup{options, mpi, shaders};
@@ -168,16 +177,13 @@ int main(int argc, char** argv) {
                                          [&setup, preset](benchmark::State& s) { bm_distributed_frame(s, setup, preset); })
                 ->Iterations(options.frames)->UseManualTime()->Unit(benchmark::kMillisecond);
         benchmark::Initialize(&argc, argv);
-        if (benchmark::ReportUnrecognizedArguments(argc, argv)) {
-            if (mpi.root()) std::cerr << usage_text();
-            return 1;
-        }
+        if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;  // every rank has the same arguments
         SilentReporter silent;
         if (mpi.root()) benchmark::RunSpecifiedBenchmarks();
         else benchmark::RunSpecifiedBenchmarks(&silent);
         benchmark::Shutdown();
     } catch (const std::exception& error) {
-        std::cerr << "bench_distributed: rank " << mpi.rank() << ": " << error.what() << "\n" << usage_text();
+        std::cerr << "bench_distributed: rank " << mpi.rank() << ": " << error.what() << "\n";
         mpi.abort(1);
     }
     return 0;

@@ -15,13 +15,17 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/option_checks.h"
 #include "app/run_context.h"
+#include "bench_cli.h"
 #include "generators/generator.h"
 #include "generators/presets.h"
 #include "generators/write_progress.h"
@@ -119,31 +123,23 @@ std::string utc_now() {
     return text;
 }
 
-Options parse(int argc, char** argv) {
-    Options o;
-    for (int a = 1; a < argc; ++a) {
-        const std::string arg = argv[a];
-        auto value = [&]() -> std::string {
-            if (a + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
-            return argv[++a];
-        };
-        if (arg == "--preset") o.preset = value();
-        else if (arg == "--repetitions") o.repetitions = std::stoi(value());
-        else if (arg == "--warmup") o.warmup = std::stoi(value());
-        else if (arg == "--dir") o.dir = value();
-        else if (arg == "--json") o.json_out = value();
-        else throw std::invalid_argument("unknown argument " + arg +
-                                         " (usage: bench_generate [--preset P] [--repetitions N] [--warmup N] "
-                                         "[--dir DIR] [--json OUT])");
-    }
-    if (o.repetitions < 1 || o.warmup < 0) throw std::invalid_argument("--repetitions >= 1, --warmup >= 0");
-    return o;
+/// Registers the flags above on `flags`, bound to `o`.
+void add_generate_bench_flags(CLI::App& flags, Options& o) {
+    flags.add_option("--preset", o.preset, "model preset to generate")->check(app::one_of(bench::model_preset_names()));
+    flags.add_option("--repetitions", o.repetitions, "timed runs")->check(app::finite_in(1, 1000));
+    flags.add_option("--warmup", o.warmup, "untimed runs first")->check(app::finite_in(0, 100));
+    flags.add_option("--dir", o.dir, "folder the GRDECL file is written to (and removed from)");
+    flags.add_option("--json", o.json_out, "also write the report here (its folders made)");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) try {
-    const Options options = parse(argc, argv);
+    Options options;
+    CLI::App flags{"Speed and peak memory of generating a preset and writing its GRDECL", "bench_generate"};
+    add_generate_bench_flags(flags, options);
+    if (const std::optional<int> exit_code = bench::parse_flags(flags, argc, argv, bench::Arguments::all_ours))
+        return *exit_code;
     const generators::GeneratorParameters p = generators::find_preset(options.preset);
     const fs::path file = options.dir / ("bench_generate_" + options.preset + ".grdecl");
     for (int w = 0; w < options.warmup; ++w) run_once(p, file);

@@ -20,12 +20,15 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include "app/run_context.h"
+#include "bench_cli.h"
 #include "grid/grdecl_reader.h"
 
 #ifdef CUTAWAY_HAVE_OPM
@@ -162,6 +165,9 @@ std::string benchmark_out_path(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    CLI::App flags{"Loading the Reek grid: our reader against OPM's (Google Benchmark; no flags of its own)",
+                   "bench_grid_load"};
+    if (const std::optional<int> exit_code = cutaway::bench::parse_flags(flags, argc, argv)) return *exit_code;
     const std::string out_path = benchmark_out_path(argc, argv);
 
     benchmark::AddCustomContext("git_revision", cutaway::run_context::git_revision());
@@ -180,7 +186,7 @@ int main(int argc, char** argv) {
 #endif
 
     benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
     if (!fs::is_regular_file(kReekGrid)) {
         std::cerr << "bench_grid_load: missing " << kReekGrid << "\n";
         return 1;

@@ -25,14 +25,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/option_checks.h"
 #include "app/run_context.h"
+#include "bench_cli.h"
 #include "grid/box_grid.h"
 #include "grid/grdecl_reader.h"
 #include "grid/grdecl_writer.h"
@@ -54,41 +58,20 @@ struct Options {
     bool keep = false;
 };
 
-[[noreturn]] void usage(const std::string& message) {
-    std::cerr << "bench_grid_memory: " << message << "\n"
-              << "usage: bench_grid_memory [--nx N --ny N --nz N] [--no-poro] [--dir DIR] [--keep] [--json OUT]\n"
-              << "       bench_grid_memory --write FILE [--nx N --ny N --nz N] [--no-poro]\n"
-              << "       bench_grid_memory --load FILE [--json OUT]\n";
-    std::exit(2);
-}
-
-Options parse_options(int argc, char** argv) {
-    Options o;
-    auto value = [&](int& a) -> std::string {
-        if (a + 1 >= argc) usage(std::string("missing value after ") + argv[a]);
-        return argv[++a];
-    };
-    auto positive = [&](int& a) {
-        const std::string text = value(a);
-        const int n = std::atoi(text.c_str());
-        if (n <= 0) usage("not a positive count: " + text);
-        return n;
-    };
-    for (int a = 1; a < argc; ++a) {
-        const std::string arg = argv[a];
-        if (arg == "--write") o.mode = "write", o.file = value(a);
-        else if (arg == "--load") o.mode = "load", o.file = value(a);
-        else if (arg == "--json") o.json_out = value(a);
-        else if (arg == "--dir") o.dir = value(a);
-        else if (arg == "--nx") o.dims.nx = positive(a);
-        else if (arg == "--ny") o.dims.ny = positive(a);
-        else if (arg == "--nz") o.dims.nz = positive(a);
-        else if (arg == "--no-poro") o.poro = false;
-        else if (arg == "--keep") o.keep = true;
-        else if (arg == "-h" || arg == "--help") usage("help");
-        else usage("unknown argument " + arg);
-    }
-    return o;
+/// Registers the flags above on `flags`, bound to `o`.
+void add_grid_memory_flags(CLI::App& flags, Options& o) {
+    CLI::Option* write = flags.add_option_function<std::string>(
+        "--write", [&o](const std::string& file) { o.mode = "write", o.file = file; }, "step 1: build the box and write FILE");
+    CLI::Option* load = flags.add_option_function<std::string>(
+        "--load", [&o](const std::string& file) { o.mode = "load", o.file = file; }, "step 2: load FILE and report");
+    write->excludes(load);
+    flags.add_option("--json", o.json_out, "also write the report here (its folders made)");
+    flags.add_option("--dir", o.dir, "folder for the driver's box file (default: a temporary one)");
+    flags.add_option("--nx", o.dims.nx, "box cells along I")->check(cutaway::app::finite_in(1, 100000));
+    flags.add_option("--ny", o.dims.ny, "box cells along J")->check(cutaway::app::finite_in(1, 100000));
+    flags.add_option("--nz", o.dims.nz, "box cells along K")->check(cutaway::app::finite_in(1, 100000));
+    flags.add_flag("!--no-poro", o.poro, "no PORO property");
+    flags.add_flag("--keep", o.keep, "keep the driver's box file");
 }
 
 /// A "VmXXX:   1234 kB" line of /proc/self/status, in bytes (0 if absent).
@@ -254,8 +237,12 @@ int run_driver(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    Options o;
+    CLI::App flags{"Peak memory of loading a box GRDECL with our reader", "bench_grid_memory"};
+    add_grid_memory_flags(flags, o);
+    if (const std::optional<int> exit_code = cutaway::bench::parse_flags(flags, argc, argv, cutaway::bench::Arguments::all_ours))
+        return *exit_code;
     try {
-        const Options o = parse_options(argc, argv);
         if (o.mode == "write") return run_write(o);
         if (o.mode == "load") return run_load(o);
         return run_driver(o);

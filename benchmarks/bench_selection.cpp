@@ -10,13 +10,18 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
+
 #include "app/model_source.h"
+#include "app/option_checks.h"
 #include "app/render_options.h"
 #include "app/run_context.h"
+#include "bench_cli.h"
 #include "cutaway/cutaway_renderer.h"
 #include "cutaway/grid_layout.h"
 #include "gl/gl_context.h"
@@ -76,8 +81,13 @@ void bm_select(benchmark::State& state, const std::vector<std::string>& presets,
 }  // namespace
 
 int main(int argc, char** argv) {
+    std::vector<std::string> presets{"petra", "sapphire", "scale-1m"};
+    CLI::App flags{"A primary-range change: GPU selection against the CPU lists it replaced (Google Benchmark)",
+                   "bench_selection"};
+    flags.add_option("--presets", presets, "models (preset:NAME), one benchmark pair each")
+        ->delimiter(',')->check(app::one_of(bench::model_preset_names()));
+    if (const std::optional<int> exit_code = bench::parse_flags(flags, argc, argv)) return *exit_code;
     try {
-        std::vector<std::string> presets{"petra", "sapphire", "scale-1m"};
         const std::unique_ptr<gl::GlContext> context = gl::create_context(gl::ContextOptions{});
         const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
         benchmark::AddCustomContext("gl_renderer", gl::gl_renderer());
@@ -91,7 +101,7 @@ int main(int argc, char** argv) {
             ->ArgsProduct({{0, 1}, preset_indices})
             ->Iterations(10)->Repetitions(3)->ReportAggregatesOnly(true)->UseManualTime()->Unit(benchmark::kMillisecond);
         benchmark::Initialize(&argc, argv);
-        if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+        if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
         benchmark::RunSpecifiedBenchmarks();
         benchmark::Shutdown();
     } catch (const std::exception& error) {

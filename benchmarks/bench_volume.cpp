@@ -1,22 +1,29 @@
 // Seismic volume ray casting (issue 7): GPU and CPU casters, naive and with empty-space skipping,
 // on a synthetic cube. Times are fenced wall clock (UseManualTime): the GPU's "ray_cast" stage of
-// gl::StageTimer, the whole cast for the CPU. Counters: samples per frame, samples per second, and
-// the run's own checks (PSNR against the naive image / the GPU image, naive/skipping sample ratio).
+// gl::StageTimer, the whole cast for the CPU. Counters: samples per frame, samples per second, the
+// GPU caster's stages fenced and by GL timer query (`exit_points`, `gpu_ms_exit_points`, ...,
+// `gpu_query_valid`: stage_counters.h), and the run's own checks (PSNR against the naive image /
+// the GPU image, naive/skipping sample ratio).
 //
 //   bench_volume [--volume_dims=101x101x250] [--volume_size=256] [--cpu_threads=0] [benchmark flags]
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 
+#include <CLI/CLI.hpp>
+
+#include "app/option_checks.h"
 #include "app/run_context.h"
+#include "bench_cli.h"
 #include "generators/seismic_model.h"
 #include "gl/gl_context.h"
 #include "gl/shader_library.h"
+#include "stage_counters.h"
 #include "volume/cpu_ray_caster.h"
 #include "volume/gpu_ray_caster.h"
 #include "volume/image_compare.h"
@@ -34,19 +41,13 @@ struct BenchOptions {
     unsigned cpu_threads = 0;
 };
 
-/// Removes `--name=value` flags of ours from argv before Google Benchmark sees them.
-BenchOptions parse_options(int& argc, char** argv) {
-    BenchOptions options;
-    int kept = 1;
-    for (int k = 1; k < argc; ++k) {
-        const std::string arg = argv[k];
-        if (std::sscanf(arg.c_str(), "--volume_dims=%dx%dx%d", &options.inlines, &options.crosslines, &options.samples) == 3) continue;
-        if (std::sscanf(arg.c_str(), "--volume_size=%d", &options.image_size) == 1) continue;
-        if (std::sscanf(arg.c_str(), "--cpu_threads=%u", &options.cpu_threads) == 1) continue;
-        argv[kept++] = argv[k];
-    }
-    argc = kept;
-    return options;
+/// Registers the flags above on `flags`, bound to `options`.
+void add_volume_bench_flags(CLI::App& flags, BenchOptions& options) {
+    bench::add_dims_option(flags, "--volume_dims", {&options.inlines, &options.crosslines, &options.samples}, 2, 4096,
+                           "INLINESxCROSSLINESxSAMPLES", "samples", "synthetic cube's dimensions");
+    flags.add_option("--volume_size", options.image_size, "image width = height, pixels")->check(app::finite_in(16, 8192, "pixels"));
+    flags.add_option("--cpu_threads", options.cpu_threads, "CPU caster threads (0: one per hardware thread)")
+        ->check(app::finite_in(0, 1024));
 }
 
 /// One transfer function's scene with the naive GPU frame every check compares against.
@@ -106,29 +107,27 @@ void report(benchmark::State& bench, const CastResult& frame, const CastResult& 
     if (psnr < 40) bench.SkipWithError(("image differs from the naive GPU image: PSNR " + std::to_string(psnr) + " dB").c_str());
 }
 
+/// The GPU caster's timed stages (gpu_ray_caster.h) the counters report.
+constexpr const char* gpu_stages[] = {"exit_points", "ray_cast", "readback"};
+
 void gpu_cast(benchmark::State& bench, BenchState& state, TransferFunctionKind kind, bool skipping) {
     TransferCase& c = state.cases.at(kind);
     const RayCastSettings settings = state.settings(skipping);
     CastResult frame;
     gl::StageTimer warmup;
     c.gpu->render(settings, warmup);
-    double seconds = 0, query_ms = 0, frames = 0;
-    bool query_valid = true;
+    bench::StageCounters stages;
+    double seconds = 0, frames = 0;
     for (auto _ : bench) {
         gl::StageTimer timer;
         frame = c.gpu->render(settings, timer);
         const double ms = timer.wall_ms("ray_cast");
-        for (const gl::StageTime& stage : timer.stages())
-            if (stage.stage == "ray_cast") {
-                query_ms += stage.gl_query_ms;
-                query_valid = query_valid && stage.gl_query_valid;
-            }
+        stages.add(bench::sum_by_stage(gpu_stages, timer.stages()));
         bench.SetIterationTime(ms * 1e-3);
         seconds += ms * 1e-3;
         ++frames;
     }
-    bench.counters["gl_query_ms"] = frames > 0 ? query_ms / frames : 0;
-    bench.counters["gl_query_valid"] = query_valid ? 1 : 0;
+    stages.set_counters(bench);
     report(bench, frame, c.naive_gpu, seconds, frames);
 }
 
@@ -152,9 +151,12 @@ void cpu_cast(benchmark::State& bench, BenchState& state, TransferFunctionKind k
 
 int main(int argc, char** argv) {
     auto state = std::make_shared<BenchState>();
-    state->options = parse_options(argc, argv);
+    CLI::App flags{"Seismic ray casting: GPU and CPU casters, naive and with empty-space skipping (Google Benchmark)",
+                   "bench_volume"};
+    add_volume_bench_flags(flags, state->options);
+    if (const std::optional<int> exit_code = bench::parse_flags(flags, argc, argv)) return *exit_code;
     benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
 
     state->context = gl::create_context(gl::ContextOptions{});
     state->shaders = std::make_unique<gl::ShaderLibrary>(gl::ShaderLibrary::default_root());

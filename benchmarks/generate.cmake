@@ -6,5 +6,5 @@ add_executable(bench_generate ${CMAKE_CURRENT_LIST_DIR}/bench_generate.cpp)
 string(TOUPPER "${CMAKE_BUILD_TYPE}" _cutaway_build_type)
 target_compile_definitions(bench_generate PRIVATE ${CUTAWAY_BENCH_DEFINITIONS}
   CUTAWAY_CXX_FLAGS="${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_cutaway_build_type}}")
-target_link_libraries(bench_generate PRIVATE cutaway_generators cutaway_grid cutaway_warnings
+target_link_libraries(bench_generate PRIVATE cutaway_bench_support cutaway_generators cutaway_grid cutaway_warnings
                                              nlohmann_json::nlohmann_json)

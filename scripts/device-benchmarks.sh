@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
 # cutaway's benchmarks on a lent NVIDIA machine (the workplace's `device` tool, EGL device platform).
 # Runs there, in the repository root, with these carried from the build machine (prepared by
-# scripts/device-prepare.sh): .device/bin (cutaway, bench_cutaway built here), .device/lib (their
+# scripts/device-prepare.sh): .device/bin (cutaway, bench_cutaway, bench_volume built here), .device/lib (their
 # shared libraries except glibc and libstdc++), .gl (the glvnd EGL loader packages), .shared-data
 # (the tests' real data; the GL tests part only).
 #   scripts/device-benchmarks.sh GIT_REVISION SECONDS
-# Writes into $OUT (a call brings back 8 files at most: run the parts over two calls with PARTS):
+# Writes into $OUT (a call brings back 8 files at most: run the parts over two calls with PARTS, e.g.
+# PARTS="gl_tests render_sapphire table1 cpu_path main", then PARTS="cut_strategies scale orbit
+# volume_bench volume_fig7 volume_fig8"; the whole script takes about 6-7 minutes on an H200):
 # device.log, context.txt (GPU, driver, CPU),
 # render_sapphire.json + .png (the main job's frame, metrics on: the invariants on another driver),
 # bench_table1.json (experiments/table1's protocol: the paper's Table 1 on this GPU),
@@ -14,7 +16,11 @@
 # main job on the four presets, visible faces against all faces, plain frame beside it),
 # bench_cut_strategies.json (experiments/cut_strategies' timing sweep), scale.jsonl (one
 # `cutaway render` stats object per line, with its wall time), orbit_petra_720p.jsonl (the viewer
-# experiment's camera path on petra at 1280x720, one `cutaway render` stats object per pose). Parts run in that order; each is
+# experiment's camera path on petra at 1280x720, one `cutaway render` stats object per pose),
+# bench_volume.json (the seismic ray casters on the paper's 101x101x250 cube, 512x512, GPU stages
+# fenced and by timer query), volume.jsonl (Duan & Li's figures 7 and 8 with the commands of
+# experiments/volume_fig7 and volume_fig8: one `cutaway volume` stats object per line, with
+# "figure", "caster" and the eye's azimuth or the cube's growth step added). Parts run in that order; each is
 # skipped when too little of SECONDS is left, and one that fails does not stop the others.
 # PARTS="render_sapphire scale" (say) runs only the parts named (their first word). The EGL
 # platform is render's auto choice (the device platform where a hardware EGL device is listed;
@@ -87,7 +93,42 @@ orbit() {
             "$scratch/orbit.json" "$az" >>"$out/orbit_petra_720p.jsonl"
     done
 }
-export -f bench scale orbit
+# One `cutaway volume` frame series on CUBE at 512x512 with the grey transfer function and one
+# warm-up frame (both volume experiments' settings), its stats appended to volume.jsonl as one line
+# with FIELDS (a JSON object) merged in.
+volume_series() {
+    local fields=$1 cube=$2
+    shift 2
+    "$bin/cutaway" volume "$cube" --tf grey --size 512 512 --warmup 1 "$@" --out "$scratch/volume.png" \
+        --stats "$scratch/volume.json" || return 1
+    python3 -c 'import json, sys; s = json.load(open(sys.argv[1])); s.update(json.loads(sys.argv[2])); print(json.dumps(s))' \
+        "$scratch/volume.json" "$fields" >>"$out/volume.jsonl"
+}
+# Figure 7 (experiments/volume_fig7): the paper-250 cube (seed 1) from 10 eyes at azimuths 0, 36, ...,
+# 324 and elevation 25, GPU caster 50 timed frames, CPU caster 5.
+volume_fig7() {
+    local az caster
+    "$bin/cutaway" generate-seismic --preset paper-250 --seed 1 --out "$scratch/fig7.sgy" >/dev/null || return 1
+    for az in $(seq 0 36 324); do
+        for caster in gpu cpu; do
+            volume_series "{\"figure\": 7, \"caster\": \"$caster\", \"azimuth_deg\": $az}" "$scratch/fig7.sgy" \
+                --caster "$caster" --camera "$az" 25 0 --repeat "$([ "$caster" = gpu ] && echo 50 || echo 5)" || return 1
+        done
+    done
+    rm -f "$scratch/fig7.sgy"
+}
+# Figure 8 (experiments/volume_fig8): cubes growth-1 .. growth-10 (10k x 28k x 25k samples, seed 1)
+# from azimuth 40, elevation 25, GPU caster, 20 timed frames each.
+volume_fig8() {
+    local step
+    for step in $(seq 1 10); do
+        "$bin/cutaway" generate-seismic --preset "growth-$step" --seed 1 --out "$scratch/fig8.sgy" >/dev/null || return 1
+        volume_series "{\"figure\": 8, \"caster\": \"gpu\", \"step\": $step}" "$scratch/fig8.sgy" \
+            --caster gpu --camera 40 25 0 --repeat 20 || return 1
+        rm -f "$scratch/fig8.sgy"
+    done
+}
+export -f bench scale orbit volume_series volume_fig7 volume_fig8
 export bin scratch out
 
 # The GL tests read ../shared/data beside the repository (their compiled-in path).
@@ -123,4 +164,8 @@ for preset in scale-1m scale-10m; do
 done
 part "scale scale-100m auto" 200 scale scale-100m auto  # the default (it draws frustum-sweep there)
 part orbit 30 orbit
+part volume_bench 30 "$bin/bench_volume" --volume_dims=101x101x250 --volume_size=512 --benchmark_out_format=json \
+    --benchmark_out="$out/bench_volume.json"
+part volume_fig7 40 volume_fig7
+part volume_fig8 40 volume_fig8
 log "done"

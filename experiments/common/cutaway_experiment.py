@@ -134,7 +134,8 @@ def cpu_path_runs(document):
 
 def cutaway_runs(document):
     """BM_cutaway rows of a benchmark document as dicts: preset, pose (-1 = path), strategy, primary
-    fraction, aperture (degrees, -1 = the path's own), stage ms, counters."""
+    fraction, aperture (degrees, -1 = the path's own), stage ms (fenced), the stages' GL timer-query ms
+    where the document has them (gpu_query_ms), counters."""
     presets = document["context"]["presets"].split(",")
     draws = document["context"].get("draws", "visible").split(",")
     strategies = document["context"].get("strategies", "").split(",")
@@ -146,11 +147,17 @@ def cutaway_runs(document):
         row = {"preset": presets[args["preset"]], "pose": args["pose"], "label": bench.get("label"),
                "draw": draws[args.get("draw", 0)], "strategy": strategies[args.get("strategy", 0)],
                "primary_fraction": args.get("fraction_bp", 0) / 10000, "aperture": args.get("aperture", -1),
-               "stages_ms": {s: bench.get(s, 0.0) for s in STAGES + ("total",)}}
-        for key in ("baseline", "total_over_baseline", "gl_query_valid", "primary_cells", "primary_pixels", "cells",
+               "stages_ms": {s: bench.get(s, 0.0) for s in STAGES + ("total",)},
+               "gpu_query_ms": {s: bench["gpu_ms_" + s] for s in STAGES + ("total",) if "gpu_ms_" + s in bench}}
+        for key in ("baseline", "total_over_baseline", "primary_cells", "primary_pixels", "cells",
                     "aperture_deg", "faces_secondary", "faces_baseline", "readback_bytes"):
             if key in bench:
                 row[key] = bench[key]
+        # The timer queries' agreement with the wall clock: gpu_query_valid (gl_query_valid before it).
+        for key in ("gpu_query_valid", "gl_query_valid"):
+            if key in bench:
+                row["gl_query_valid"] = bench[key]
+                break
         rows.append(row)
     return rows
 

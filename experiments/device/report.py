@@ -9,8 +9,9 @@ results/device-<gpu>/ and writes its README.md: the paper's Table 1 on that GPU 
 protocol), the main job's frame against the plain frame and against drawing every face (the
 paper's path), GPU jump flooding against the CPU path it replaced, stage 1 of every cut strategy
 per model and primary fraction (with a plot), one frame per model from 1M to 100M cells with wall
-time and memory, and the GL tests' summary. Every ratio is between two configurations of the same
-call on the same GPU. Measures nothing itself.
+time and memory, stage times fenced beside the GL timer queries, the seismic ray casters
+(bench_volume, Duan & Li's figures 7 and 8), and the GL tests' summary. Every ratio is between two
+configurations of the same call on the same GPU. Measures nothing itself.
 """
 import json
 import os
@@ -21,13 +22,23 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
+import volume_experiment as vx  # noqa: E402
+
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "table1"))
 import table1_report  # noqa: E402
 from run import PAPER_MS  # noqa: E402  (experiments/table1/run.py: the paper's Table 1)
 
 RAW = ("context.txt", "device.log", "render_sapphire.json", "render_sapphire.png", "bench_table1.json", "bench_cpu_path.json",
        "bench_main.json", "bench_cut_strategies.json", "scale.jsonl", "gl_tests.log",
-       "orbit_petra_720p.jsonl")
+       "orbit_petra_720p.jsonl", "bench_volume.json", "volume.jsonl")
+# Duan & Li's figure 7 (experiments/volume_fig7/run.py's PAPER: ms per frame over the 10 eyes).
+PAPER_FIG7_MEAN_MS = {"gpu": 14.99, "cpu": 9486}
+QUERY_NOTE = ("Fenced: wall clock between two glFinish calls; query: GL_TIME_ELAPSED of the same commands; "
+              "medians over the timed frames. Queries agree: every query of every timed frame was within the "
+              "wall clock's bounds (gl::query_agrees). On llvmpipe the queries mostly disagree (SPEC.md section 5: "
+              "they do not time a software rasteriser's draws), so there a \"no\" is expected and the fenced time is "
+              "the measurement; on a GPU a \"no\" marks a stage whose query is not to be read.")
 CUT_COLUMNS = ("frustum", "frustum-clusters", "frustum-sweep", "chamfer-5x5", "jfa", "jfa2")
 MARKERS = ("o", "s", "^", "D")  # one per model, in the benchmark's preset order
 
@@ -177,6 +188,107 @@ def plot_cut_strategies(document, gpu, path):
     cx.save_figure(fig, path)
 
 
+def fenced_and_query(bench, stage):
+    """"fenced / query" ms of a stage in a benchmark row ("-" where the row lacks it)."""
+    if stage not in bench:
+        return "-"
+    query = bench.get("gpu_ms_" + stage)
+    return ms(bench[stage]) + (" / " + ms(query) if query is not None else "")
+
+
+def agrees(bench):
+    return {1: "yes", 0: "no"}.get(bench.get("gpu_query_valid"), "-")
+
+
+def query_section(document):
+    """The main job's stages per model (visible faces, frustum-clusters), fenced beside the GL timer
+    queries (bench_cutaway's gpu_ms_<stage> counters; absent in documents from before them)."""
+    rows = [b for b in document["benchmarks"] if b["name"].startswith("BM_cutaway/") and "gpu_query_valid" in b
+            and not b.get("error_occurred")]
+    if not rows:
+        return []
+    runs = {(r["preset"], r["strategy"], r["draw"]): r for r in cx.cutaway_runs(document)}
+    stages = cx.STAGES + ("total",)
+    lines = ["## Stage times: fenced against the GL timer queries", "",
+             "`bench_main.json`, visible faces, `frustum-clusters`: each stage as fenced ms / timer-query ms. " + QUERY_NOTE,
+             "", "| model | " + " | ".join(stages) + " | queries agree |", "|---|" + "---:|" * len(stages) + "---|"]
+    for bench in rows:
+        args = cx.bench_args(bench["name"])
+        run = runs.get((document["context"]["presets"].split(",")[args["preset"]],
+                        document["context"]["strategies"].split(",")[args["strategy"]],
+                        document["context"].get("draws", "visible").split(",")[args.get("draw", 0)]))
+        if run is None or run["strategy"] != "frustum-clusters" or run["draw"] != "visible":
+            continue
+        lines.append(f"| {run['preset']} | " + " | ".join(fenced_and_query(bench, s) for s in stages) + f" | {agrees(bench)} |")
+    return lines + [""]
+
+
+def volume_bench_section(document):
+    """bench_volume: the casters on the paper's cube, the GPU's stages fenced beside their queries."""
+    stages = ("exit_points", "ray_cast", "readback")
+    context = document["context"]
+    lines = ["## Seismic ray casting: bench_volume", "",
+             f"`bench_volume.json`: cube {context.get('volume_dims')}, {context.get('image_size')} pixels, CPU caster "
+             f"with {context.get('cpu_threads')} threads. Time: the GPU's fenced `ray_cast` stage, the CPU's whole cast. "
+             "GPU stages as fenced ms / timer-query ms. " + QUERY_NOTE, "",
+             "| benchmark | ms per frame | M samples/s | " + " | ".join(stages) + " | queries agree |",
+             "|---|---:|---:|" + "---:|" * len(stages) + "---|"]
+    for bench in document["benchmarks"]:
+        if bench.get("error_occurred"):
+            continue
+        lines.append(f"| {bench['name'].split('/iterations')[0].removesuffix('/manual_time')} | {ms(bench['real_time'])} | "
+                     f"{bench['samples_per_second'] / 1e6:,.0f} | " + " | ".join(fenced_and_query(bench, s) for s in stages)
+                     + f" | {agrees(bench)} |")
+    return lines + [""]
+
+
+def volume_figures_section(path):
+    """Duan & Li's figures 7 and 8 from volume.jsonl (experiments/volume_fig7 and volume_fig8's
+    commands and statistic: mean after dropping the minimum and the maximum frame)."""
+    with open(path) as f:
+        rows = [json.loads(line) for line in f if line.strip()]
+    fig7 = [r for r in rows if r["figure"] == 7]
+    fig8 = [r for r in rows if r["figure"] == 8]
+    lines = ["## Seismic figures 7 and 8 (Duan & Li)", "",
+             "`volume.jsonl`: `cutaway volume` at 512x512, grey transfer function, one warm-up frame, with the volume "
+             "experiments' cubes, views and frame counts; a frame's time is the fenced exit points + ray cast stages, "
+             "the statistic the paper's (mean after dropping the minimum and the maximum). Query: the same stages' "
+             "GL timer queries (medians); queries agree: every stage's query agreed with its fenced time.", ""]
+    if fig7:
+        lines += ["### Figure 7: paper-250 cube (101x101x250), 10 eyes at elevation 25", "",
+                  "| azimuth | GPU ms | GPU query ms | GPU queries agree | CPU ms | CPU / GPU |", "|---:|---:|---:|---|---:|---:|"]
+        eyes = {}
+        for r in fig7:
+            eyes.setdefault(r["azimuth_deg"], {})[r["caster"]] = r
+        means = {"gpu": [], "cpu": []}
+        for azimuth, by_caster in sorted(eyes.items()):
+            gpu, cpu = by_caster.get("gpu"), by_caster.get("cpu")
+            if gpu is None or cpu is None:
+                continue
+            gpu_ms, cpu_ms = vx.trimmed_mean(vx.frame_times_ms(gpu)), vx.trimmed_mean(vx.frame_times_ms(cpu))
+            means["gpu"].append(gpu_ms)
+            means["cpu"].append(cpu_ms)
+            query = sum(v for k, v in gpu["gl_query_ms"].items() if k in ("exit_points", "ray_cast"))
+            lines.append(f"| {azimuth} | {ms(gpu_ms)} | {ms(query)} | {'yes' if gpu['gl_query_valid'] else 'no'} | "
+                         f"{ms(cpu_ms)} | {cpu_ms / gpu_ms:.0f} |")
+        if means["gpu"]:
+            lines += ["", "Mean over the eyes: GPU " + ms(statistics.fmean(means["gpu"])) + " ms, CPU "
+                      + ms(statistics.fmean(means["cpu"])) + f" ms (CPU caster: {fig7[-1]['configuration']['cpu_threads']} "
+                      f"threads); the paper's: GPU {PAPER_FIG7_MEAN_MS['gpu']} ms, CPU {PAPER_FIG7_MEAN_MS['cpu']} ms.", ""]
+    if fig8:
+        lines += ["### Figure 8: GPU caster as the cube grows (growth-k: 10k x 28k x 25k samples), azimuth 40", "",
+                  "| step | dims | M voxels | ms per frame | query ms | queries agree | M samples/s |",
+                  "|---:|---|---:|---:|---:|---|---:|"]
+        for r in sorted(fig8, key=lambda r: r["step"]):
+            dims = r["input"]["dims"]
+            query = sum(v for k, v in r["gl_query_ms"].items() if k in ("exit_points", "ray_cast"))
+            lines.append(f"| {r['step']} | {'x'.join(map(str, dims))} | {dims[0] * dims[1] * dims[2] / 1e6:.2f} | "
+                         f"{ms(vx.trimmed_mean(vx.frame_times_ms(r)))} | {ms(query)} | "
+                         f"{'yes' if r['gl_query_valid'] else 'no'} | {r['samples_per_second'] / 1e6:,.0f} |")
+        lines.append("")
+    return lines
+
+
 def scale_section(path):
     with open(path) as f:
         rows = [json.loads(line) for line in f if line.strip()]
@@ -270,6 +382,7 @@ def main():
         lines += table1_section(documents["bench_table1.json"])
     if "bench_main.json" in documents:
         lines += main_job_section(documents["bench_main.json"])
+        lines += query_section(documents["bench_main.json"])
     if "bench_cpu_path.json" in documents:
         lines += cpu_path_section(documents["bench_cpu_path.json"])
     if "bench_cut_strategies.json" in documents:
@@ -280,6 +393,10 @@ def main():
         lines += scale_section(files["scale.jsonl"])
     if "orbit_petra_720p.jsonl" in files:
         lines += orbit_section(files["orbit_petra_720p.jsonl"])
+    if "bench_volume.json" in files:
+        lines += volume_bench_section(load_json(files["bench_volume.json"]))
+    if "volume.jsonl" in files:
+        lines += volume_figures_section(files["volume.jsonl"])
     if "gl_tests.log" in files:
         lines += gl_tests_section(files["gl_tests.log"])
     with open(os.path.join(out, "README.md"), "w") as f:
