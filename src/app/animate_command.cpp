@@ -24,6 +24,7 @@
 #include "app/render_report.h"
 #include "app/run_context.h"
 #include "app/run_context_json.h"
+#include "app/step_value_sources.h"
 #include "annotation/property_units.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cutaway_renderer.h"
@@ -115,7 +116,8 @@ int animate(const AnimateOptions& options) {
     LoadedModel model = load_model(scene.model, scene.model_memory_limit_bytes(), scene.property);
     interrupts.check();
     const grid::CornerPointGrid& grid = model.grid;
-    const temporal::GridStepValues source(grid, scene.property);
+    const std::unique_ptr<temporal::StepValueSource> step_values = step_values_of(model, scene.property);
+    const temporal::StepValueSource& source = *step_values;
     const temporal::AnimationTimeline timeline = timeline_of(options, source.step_count(), scene.property);
     const std::size_t needed = grid.cell_count() * animation_bytes_per_cell +
                                std::size_t(scene.width) * std::size_t(scene.height) * animation_bytes_per_pixel;

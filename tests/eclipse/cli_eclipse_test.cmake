@@ -76,3 +76,21 @@ if(NOT rc EQUAL 2 OR NOT err MATCHES "MIXED.UNRST: array INTEHEAD at report 1: e
    OR NOT out STREQUAL "")
   message(FATAL_ERROR "restart of another grid: exit ${rc}, message '${err}', output '${out}'")
 endif()
+
+# animate reads a case's restart one report step at a time: SPE9's SWAT over steps 10-12, two frames
+# per step (5 frames), each frame's primaries within the range and every primary pixel exposed.
+execute_process(COMMAND ${CUTAWAY} animate ${spe9}.EGRID --property SWAT --range 0.5 1 --size 160 120 --steps 10 12
+                        --frames-per-step 2 --mean-filter 0 --out ${OUT}/spe9.mp4 --stats ${OUT}/spe9_animate.json
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS ${OUT}/spe9.mp4)
+  message(FATAL_ERROR "animate SPE9: exit ${rc}, message '${err}'")
+endif()
+file(READ ${OUT}/spe9_animate.json stats)
+string(JSON frames LENGTH "${stats}" frames)
+string(JSON steps GET "${stats}" property report_steps)
+string(JSON exposure GET "${stats}" primary_exposure_min)
+string(JSON primaries GET "${stats}" frames 0 primary_cells)
+# 90 report steps in the file; about 2,700 cells of SPE9 hold SWAT above 0.5 (its water zone)
+if(NOT frames EQUAL 5 OR NOT steps EQUAL 90 OR NOT exposure EQUAL 1 OR primaries LESS 2000)
+  message(FATAL_ERROR "animate SPE9: ${frames} frames, ${steps} report steps, exposure ${exposure}, ${primaries} primaries")
+endif()
