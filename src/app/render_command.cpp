@@ -63,14 +63,103 @@ RenderOptions colouring_options(const grid::CornerPointGrid& grid, const RenderO
     return colouring;
 }
 
+/// Faces each pass drew, frames drawn again, the cut's read-back and the culling's counts.
+void add_draw_counts(json& stats, const pipeline::CutawayRenderer& renderer) {
+    stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
+    // Frames drawn twice because the culling's face buffer grew (cutaway_renderer.h render).
+    stats["frames_redrawn"] = renderer.status().frames_redrawn;
+    // Per frame (every timed frame reads back the same amount): 0 for the strategies on the GPU.
+    stats["readback_bytes"] = renderer.status().cut_readback_bytes;
+    if (stats["faces_drawn"].contains("culling")) {
+        stats["bricks_culled"] = stats["faces_drawn"]["culling"]["bricks_culled"];
+        stats["cells_culled"] = stats["faces_drawn"]["culling"]["cells_culled"];
+    }
+}
+
+/// The same frame unfenced (a user's frame), against the exact cut (--exact-check) and the plain
+/// frame of the whole model (--baseline).
+void add_extra_frames(json& stats, const RenderOptions& options, pipeline::CutawayRenderer& renderer,
+                      const pipeline::FrameSettings& settings, const pipeline::Camera& camera) {
+    std::vector<double> unfenced;
+    for (int i = 0; i < options.repeat; ++i)
+        unfenced.push_back(renderer.render(settings, camera, pipeline::Fencing::frame_only).total.wall_ms);
+    stats["frame_ms_unfenced"] = metrics::median(unfenced);
+    if (options.exact_check) stats["cut_vs_exact"] = exact_check(renderer, settings, camera);
+    if (options.baseline) {
+        std::vector<double> baseline;
+        for (int i = 0; i < std::max(1, options.repeat); ++i)
+            baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
+        stats["baseline_ms"] = metrics::median(baseline);
+        stats["baseline_faces_drawn"] = renderer.faces_drawn().secondary;
+        stats["total_over_baseline"] = stats["stages_ms"]["total"].get<double>() / metrics::median(baseline);
+    }
+}
+
+/// The image metrics of the frame (3 extra untimed frames).
+void add_frame_metrics(json& stats, pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
+                       const pipeline::Camera& camera) {
+    const pipeline::FrameMetrics m = pipeline::measure_frame(renderer, settings, camera);
+    put_metric(stats, "primary_exposure", m.exposure.fraction, m.exposure.primary_pixels,
+               "no primary pixel in the primaries-only frame");
+    stats["primary_pixels"] = m.exposure.primary_pixels;
+    put_metric(stats, "context_kept", m.context.fraction, m.context.uncut - std::min(m.context.uncut, m.context.kept_180),
+               "the 180-degree-aperture frame keeps as much context as the uncut frame");
+    stats["context_pixels"] = {{"cutaway", m.context.kept}, {"aperture_180", m.context.kept_180},
+                               {"uncut", m.context.uncut}};
+    stats["border_line_width"] = {{"mean_px", m.border_width.mean}, {"stddev_px", m.border_width.stddev},
+                                  {"pixels", m.border_width.pixels}};
+    stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
+}
+
+/// Peak resident memory and the GPU buffers by part, beside the phases' resident memory.
+void add_memory_use(json& memory, const pipeline::CutawayRenderer& renderer, const RenderOptions& options) {
+    memory["peak_resident"] = run_context::proc_status_bytes("VmHWM");
+    memory["gpu_buffers"] = renderer.status().gpu_memory_bytes();
+    json by_part = json::object();
+    for (const auto& [part, bytes] : renderer.status().gpu_memory_by_part) by_part[part] = bytes;
+    memory["gpu_buffers_by_part"] = by_part;
+    memory["render_target_budget"] = options.render_target_bytes();
+}
+
+/// A simulator case's report step (and any INIT array not read yet) for what the frame shows.
+void hold_frame_properties(LoadedModel& model, const RenderOptions& options) {
+    hold_property(model, options.property, options.step, options.model_memory_limit_bytes());
+    if (!options.select_by.empty()) hold_property(model, options.select_by, options.step, options.model_memory_limit_bytes());
+}
+
+/// The frame's camera beside the colour bar; with --freeze-camera the frozen cut's camera set.
+pipeline::Camera frame_camera(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
+                              const RenderOptions& options) {
+    const float bar_width = renderer.status(settings).colour_bar_reserved_width;
+    if (options.freeze_pose)
+        renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *options.freeze_pose, options.width, options.height, bar_width));
+    return pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height, bar_width);
+}
+
+/// --warmup untimed frames, then --repeat timed ones.
+std::vector<pipeline::FrameTimes> timed_frames(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
+                                               const pipeline::Camera& camera, const RenderOptions& options) {
+    for (int i = 0; i < options.warmup; ++i) renderer.render(settings, camera);
+    std::vector<pipeline::FrameTimes> runs;
+    for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
+    return runs;
+}
+
+/// The image and --cell-ids, staged in `outputs`.
+void stage_images(io::OutputBatch& outputs, const pipeline::CutawayRenderer& renderer, const RenderOptions& options) {
+    outputs.write(options.out, gl::encode_png(renderer.read_image(), options.out));
+    if (!options.cell_ids.empty())
+        outputs.write(options.cell_ids,
+                      gl::encode_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width, options.height),
+                                     options.cell_ids));
+}
+
 int run_render(const RenderOptions& options) {
     if (launched_by_mpi()) return run_distributed_render(options);
     refuse_render_overwrites(options);
     LoadedModel model =
         load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options), render_outputs(options));
-    // A simulator case's report step (and any INIT array not read yet) for what the frame shows.
-    hold_property(model, options.property, options.step, options.model_memory_limit_bytes());
-    if (!options.select_by.empty()) hold_property(model, options.select_by, options.step, options.model_memory_limit_bytes());
+    hold_frame_properties(model, options);
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, colouring_options(model.grid, options));
@@ -108,61 +197,19 @@ int run_render(const RenderOptions& options) {
         std::cerr << "cutaway render: no cell of " << selected_name << " lies in the primary range ["
                   << selected_range.min << ", " << selected_range.max << "]; rendering the context only\n";
     const pipeline::FrameSettings settings = options.frame_settings();
-    const float bar_width = renderer.status(settings).colour_bar_reserved_width;
-    const pipeline::Camera camera =
-        pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height, bar_width);
-    if (options.freeze_pose)
-        renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *options.freeze_pose, options.width, options.height, bar_width));
-
-    for (int i = 0; i < options.warmup; ++i) renderer.render(settings, camera);
-    std::vector<pipeline::FrameTimes> runs;
-    for (int i = 0; i < options.repeat; ++i) runs.push_back(renderer.render(settings, camera));
+    const pipeline::Camera camera = frame_camera(renderer, settings, options);
+    const std::vector<pipeline::FrameTimes> runs = timed_frames(renderer, settings, camera, options);
     memory["resident_after_frames"] = run_context::proc_status_bytes("VmRSS");
     // Committed together once the stats are written too: a failed --stats leaves no image behind.
     io::OutputBatch outputs;
-    outputs.write(options.out, gl::encode_png(renderer.read_image(), options.out));
-    if (!options.cell_ids.empty())
-        outputs.write(options.cell_ids, gl::encode_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width,
-                                                                                 options.height),
-                                                       options.cell_ids));
+    stage_images(outputs, renderer, options);
 
     json stats = stage_statistics(runs);
-    stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
-    // Frames drawn twice because the culling's face buffer grew (cutaway_renderer.h render).
-    stats["frames_redrawn"] = renderer.status().frames_redrawn;
-    // Per frame (every timed frame reads back the same amount): 0 for the strategies on the GPU.
-    stats["readback_bytes"] = renderer.status().cut_readback_bytes;
+    add_draw_counts(stats, renderer);
     const pipeline::CutSurfaceEntry strategy = pipeline::find_cut_surface(renderer.status(settings).cut_strategy);
     stats["cut_device"] = strategy.device;
-    if (stats["faces_drawn"].contains("culling")) {
-        stats["bricks_culled"] = stats["faces_drawn"]["culling"]["bricks_culled"];
-        stats["cells_culled"] = stats["faces_drawn"]["culling"]["cells_culled"];
-    }
-    std::vector<double> unfenced;
-    for (int i = 0; i < options.repeat; ++i) unfenced.push_back(renderer.render(settings, camera, pipeline::Fencing::frame_only).total.wall_ms);
-    stats["frame_ms_unfenced"] = metrics::median(unfenced);
-    if (options.exact_check) stats["cut_vs_exact"] = exact_check(renderer, settings, camera);
-    if (options.baseline) {
-        std::vector<double> baseline;
-        for (int i = 0; i < std::max(1, options.repeat); ++i)
-            baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
-        stats["baseline_ms"] = metrics::median(baseline);
-        stats["baseline_faces_drawn"] = renderer.faces_drawn().secondary;
-        stats["total_over_baseline"] = stats["stages_ms"]["total"].get<double>() / metrics::median(baseline);
-    }
-    if (options.metrics) {
-        const pipeline::FrameMetrics m = pipeline::measure_frame(renderer, settings, camera);
-        put_metric(stats, "primary_exposure", m.exposure.fraction, m.exposure.primary_pixels,
-                   "no primary pixel in the primaries-only frame");
-        stats["primary_pixels"] = m.exposure.primary_pixels;
-        put_metric(stats, "context_kept", m.context.fraction, m.context.uncut - std::min(m.context.uncut, m.context.kept_180),
-                   "the 180-degree-aperture frame keeps as much context as the uncut frame");
-        stats["context_pixels"] = {{"cutaway", m.context.kept}, {"aperture_180", m.context.kept_180},
-                                   {"uncut", m.context.uncut}};
-        stats["border_line_width"] = {{"mean_px", m.border_width.mean}, {"stddev_px", m.border_width.stddev},
-                                      {"pixels", m.border_width.pixels}};
-        stats["secondary_pixels_in_front_of_cut"] = m.secondary_in_front;
-    }
+    add_extra_frames(stats, options, renderer, settings, camera);
+    if (options.metrics) add_frame_metrics(stats, renderer, settings, camera);
     stats["strategy"] = strategy_json(strategy, settings.strategy, renderer.status().auto_sweep_from);
     stats.update(run_context_json(current_gl_device(context->platform())));
     stats["size"] = {options.width, options.height};
@@ -170,12 +217,7 @@ int run_render(const RenderOptions& options) {
     stats["active_cells"] = grid.active_count();
     stats["primary_cells"] = primary_count;
     stats["gpu_memory_bytes"] = renderer.status().gpu_memory_bytes();
-    memory["peak_resident"] = run_context::proc_status_bytes("VmHWM");
-    memory["gpu_buffers"] = renderer.status().gpu_memory_bytes();
-    json by_part = json::object();
-    for (const auto& [part, bytes] : renderer.status().gpu_memory_by_part) by_part[part] = bytes;
-    memory["gpu_buffers_by_part"] = by_part;
-    memory["render_target_budget"] = options.render_target_bytes();
+    add_memory_use(memory, renderer, options);
     stats["memory_bytes"] = memory;
     stats["model"] = model.description;
     stats["model_load_s"] = model.load_seconds;
