@@ -31,7 +31,7 @@ std::vector<CutState> cut_states(const std::vector<std::uint32_t>& cell, const s
     require_same_size(cell.size(), flags.size(), "cell ids and flags");
     std::vector<CutState> states(cell.size(), CutState::background);
     for (std::size_t i = 0; i < cell.size(); ++i)
-        if (cell[i] != 0) states[i] = (flags[i] & pixel_cut_fill) ? CutState::cut_away : CutState::kept;
+        if (cell[i] != 0) states[i] = (flags[i] & flag_cut_fill) ? CutState::cut_away : CutState::kept;
     return states;
 }
 

@@ -20,7 +20,7 @@ PopCounts count_pops(const std::vector<std::uint8_t>& before, const std::vector<
 enum class CutState : std::uint8_t {
     background = 0,  ///< no cell
     kept = 1,        ///< a cell's surface as the model has it (primary, or a secondary face not cut)
-    cut_away = 2,    ///< a cell's inside where the cut surface passes through it (pixel_cut_fill)
+    cut_away = 2,    ///< a cell's inside where the cut surface passes through it (flag_cut_fill)
 };
 
 /// Per pixel of a frame, from its ids (image_metrics.h PixelIds: cell + 1 or 0, flags): "cut away"

@@ -18,7 +18,7 @@ TEST(TemporalMetrics, PopsCountCellsEnteringAndLeaving) {
 
 TEST(TemporalMetrics, CutAwayIsExactlyTheCutFill) {
     const std::vector<std::uint32_t> cell{0, 5, 5, 7, 7};
-    const std::vector<std::uint32_t> flags{pixel_cut_fill, 0, pixel_cut_fill, pixel_primary, pixel_cut_fill | pixel_border};
+    const std::vector<std::uint32_t> flags{flag_cut_fill, 0, flag_cut_fill, flag_primary, flag_cut_fill | flag_border};
     const std::vector<CutState> states = cut_states(cell, flags);
     EXPECT_EQ(states, (std::vector<CutState>{CutState::background, CutState::kept, CutState::cut_away, CutState::kept,
                                               CutState::cut_away}));
