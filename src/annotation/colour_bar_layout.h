@@ -17,6 +17,9 @@ struct ColourBarLabel {
     float min = 0;
     float max = 1;
     std::string unit;
+    /// Colours by log10 of the value between log10(min) and log10(max) (min > 0); ticks at round
+    /// values of log10, labelled with the values themselves.
+    bool log_scale = false;
 };
 
 struct ColourBarTick {

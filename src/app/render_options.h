@@ -39,6 +39,7 @@ struct RenderOptions {
     std::string ssao_resolution = "half";
     std::string contours = "on";
     std::string only = "both";
+    std::string scale = "auto";  ///< pipeline::ColourScale by name
     std::string seeds = "boxes";
     std::string draw = "visible";
     std::string stage2_passes = "deferred";
@@ -92,7 +93,8 @@ struct PropertyChoice {
     std::string label;                ///< with the step, e.g. "SWAT step 3"
     const std::vector<float>* external = nullptr;  ///< the grid's array, or null when owned
     std::vector<float> owned;         ///< storage for a derived property (layer index)
-    grid::PrimaryRange colour_range;  ///< active min and max
+    grid::PrimaryRange colour_range;  ///< colour_quantiles of the active values (positive ones on a log scale)
+    bool log_scale = false;           ///< colours by log10 of the value (--scale)
     grid::PrimaryRange primary_range;
     const std::vector<float>& values() const { return external ? *external : owned; }
     /// The colour bar's title (the label), unit (by the property's keyword) and colour range.

@@ -366,7 +366,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
 }
 
 FaceDrawContext CutawayRenderer::draw_context(const Camera& camera) const {
-    return {buffers_, camera, &colour_map_, {label_.min, label_.max}};
+    return {buffers_, camera, &colour_map_, {label_.min, label_.max}, label_.log_scale};
 }
 
 void CutawayRenderer::draw_strategy_cut(const FrameStep& f) {

@@ -21,6 +21,9 @@ enum class DrawMode { visible, all_faces };
 /// faces drawn again, shading once per pixel (on llvmpipe the second draw's triangle set-up costs
 /// about what it saves; README, issue 14).
 enum class Stage2Passes { one, two, deferred };
+/// How property values map onto the colour map: `automatic` = logarithmic for permeabilities
+/// (names starting with PERM, spread over decades), linear otherwise.
+enum class ColourScale { automatic, linear, log };
 
 struct FrameSettings {
     /// Cut-surface strategy (cut_surface_registry.h), or "auto" (the default, cut_strategy_choice.h):
@@ -78,5 +81,6 @@ const char* to_string(OnlyLayer only);
 const char* to_string(SeedSource seeds);
 const char* to_string(DrawMode draw);
 const char* to_string(Stage2Passes passes);
+const char* to_string(ColourScale scale);
 
 }  // namespace cutaway::pipeline
