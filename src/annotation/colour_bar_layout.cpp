@@ -52,6 +52,7 @@ PixelRect ColourBarLayout::bounds() const {
     PixelRect box = frame;
     for (const TextLine& line : texts()) box = box.united(ink_box(line));
     for (const ColourBarTick& tick : ticks) box = box.united(tick.mark);
+    if (primary_band) box = box.united(*primary_band);
     return box;
 }
 
@@ -130,6 +131,22 @@ ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int he
         tick.mark = {layout.gradient.x1, tick_y - 0.5f * s, layout.gradient.x1 + mark_length, tick_y + 0.5f * s};
         tick.label = {ticks.labels[t], std::round(tick.mark.x1 + gap), std::round(tick_y - half_label), s};
         layout.ticks.push_back(tick);
+    }
+    if (label.primary_range) {
+        const auto row = [&](float value) {
+            const double clamped = std::clamp(double(value), double(label.min), double(label.max));
+            return layout.gradient.y1 - float(along_bar(label, clamped)) * bar_height;
+        };
+        float top = row(label.primary_range->max), bottom = row(label.primary_range->min);
+        const float least = 3 * s;
+        if (bottom - top < least) {
+            const float middle = 0.5f * (top + bottom);
+            top = std::max(layout.gradient.y0, middle - 0.5f * least);
+            bottom = std::min(layout.gradient.y1, top + least);
+            top = bottom - least;
+        }
+        const float x1 = layout.frame.x0 - gap, x0 = x1 - 0.5f * bar_width;
+        layout.primary_band = PixelRect{x0, top, x1, bottom};
     }
     return layout;
 }

@@ -78,7 +78,7 @@ int run_render(const RenderOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
-    renderer.set_colouring(property.values(), property.colour_bar_label());
+    renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by));
     if (selected_by)
         renderer.set_primaries(selected_by->flags);
     else

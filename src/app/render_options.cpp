@@ -216,8 +216,10 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
         ->check(one_of({"i", "j", "k"}));
 }
 
-annotation::ColourBarLabel PropertyChoice::colour_bar_label() const {
-    return {label, colour_range.min, colour_range.max, annotation::property_unit(name), log_scale};
+annotation::ColourBarLabel PropertyChoice::colour_bar_label(bool mark_primary_range) const {
+    annotation::ColourBarLabel bar{label, colour_range.min, colour_range.max, annotation::property_unit(name), log_scale};
+    if (mark_primary_range) bar.primary_range = annotation::ColourBarLabel::Span{primary_range.min, primary_range.max};
+    return bar;
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer) {

@@ -97,8 +97,9 @@ struct PropertyChoice {
     bool log_scale = false;           ///< colours by log10 of the value (--scale)
     grid::PrimaryRange primary_range;
     const std::vector<float>& values() const { return external ? *external : owned; }
-    /// The colour bar's title (the label), unit (by the property's keyword) and colour range.
-    annotation::ColourBarLabel colour_bar_label() const;
+    /// The colour bar's title (the label), unit (by the property's keyword), colour range and scale;
+    /// `mark_primary_range`: with primary_range marked (when the primaries are chosen by it).
+    annotation::ColourBarLabel colour_bar_label(bool mark_primary_range = false) const;
 };
 
 /// Throws std::invalid_argument for an unknown property or step, naming the known ones.
