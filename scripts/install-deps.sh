@@ -17,7 +17,7 @@ packages=(
   # tests, benchmarks, reference checks, fuzzing
   libgtest-dev libgmock-dev libbenchmark-dev libopm-common-dev libboost-test-dev clang libclang-rt-14-dev libomp-dev
   # plots
-  python3 python3-matplotlib python3-vtk9
+  python3 python3-matplotlib python3-scipy python3-vtk9
   # distributed rendering (src/distributed/, CUTAWAY_MPI): OpenMPI and ParaView's IceT compositor
   libopenmpi-dev openmpi-bin paraview-dev
 )
