@@ -164,7 +164,7 @@ int run_render(const RenderOptions& options) {
     stats["model_load_s"] = model.load_seconds;
     stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set
     stats["property"] = {{"name", property.label}, {"colour_range", {property.colour_range.min, property.colour_range.max}},
-                         {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
+                         {"colour_scale", property.log_scale ? "log" : "linear"}, {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
     stats["configuration"] = options.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
