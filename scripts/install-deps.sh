@@ -20,7 +20,7 @@ packages=(
   # and OPM Flow, which writes the test cases and runs `generate --deck` decks
   libopm-common-dev libopm-simulators-bin
   # plots
-  python3 python3-matplotlib python3-vtk9
+  python3 python3-matplotlib python3-scipy python3-vtk9
   # distributed rendering (src/distributed/, CUTAWAY_MPI): OpenMPI and ParaView's IceT compositor
   libopenmpi-dev openmpi-bin paraview-dev
 )

@@ -5,7 +5,7 @@ them on the committed paper_figures/ (test figure_checks), CI on paper_figures/q
 
   experiments/figures/check.py [--quick]
 Reads paper_figures[/quick]/fig*.png and results[/quick]/figures/figures.json. Exit 0 when every
-check holds, 1 naming each that fails, 77 (ctest: skipped) without numpy/matplotlib or figures.
+check holds, 1 naming each that fails, 77 (ctest: skipped) without numpy/matplotlib/scipy or figures.
 Each threshold is named with its reason below. The renderer's own checks (no see-through, cut-wall
 luminance, framing, colour-bar layout, silhouette colour) run in cutaway_gl_tests on frames
 rendered there; these look at what the figures show.
@@ -28,11 +28,54 @@ MIN_FIG12_CHANGED = 0.02
 # Fig. 13's silhouette has its own colour: cyan pixels (blue and green high, red low) appear only
 # with --silhouette, at least 500 of them.
 MIN_SILHOUETTE_PIXELS = 500
+# Issue 46's targets, in every rendered panel (not the zoom rows, which enlarge the first row):
+# at most 25% of the model's pixels darker than luminance 40/255 (Rec. 601 weights) in a cutaway
+# panel (a figure a referee reads in print; sapphire's PERMX on a linear scale had 83-86%), and
+# see-through below 0.5% of the silhouette: background pixels the model encloses (white holes
+# not connected to the panel's border; only-secondaries had 15.8-16.6%). Only-primaries panels
+# show the primaries alone inside the shell's contour, so neither check applies to them. The
+# colour bar counts as model: its dark end and glyphs are well under 1% of a panel's model pixels.
+MAX_DARK_SHARE = 0.25
+DARK_LUMINANCE = 40 / 255
+MAX_SEE_THROUGH_SHARE = 0.005
+BACKGROUND_MIN_CHANNEL = 0.94  # as fig. 11's model share: a pixel whose every channel is this bright is background
 
 
 def fail(failures, message):
     failures.append(message)
     print("FAIL:", message)
+
+
+def is_only_primaries(panel):
+    options = panel.get("options", [])
+    return any(a == "--only" and b == "primaries" for a, b in zip(options, options[1:]))
+
+
+def check_dark_and_see_through(name, figure, images, failures, np):
+    """Issue 46's dark-share and see-through targets on each rendered panel of one figure."""
+    from scipy import ndimage
+    for index, (panel, image) in enumerate(zip(figure["panels"], images)):
+        if is_only_primaries(panel):
+            continue
+        background = image.min(axis=2) >= BACKGROUND_MIN_CHANNEL
+        model = ~background
+        outside, _ = ndimage.label(background)
+        border = set(np.unique(np.concatenate([outside[0], outside[-1], outside[:, 0], outside[:, -1]]))) - {0}
+        enclosed = background & ~np.isin(outside, list(border))
+        silhouette = int(model.sum() + enclosed.sum())
+        if silhouette == 0:
+            fail(failures, f"{name} panel {index} ({panel['caption']}): no model in the panel")
+            continue
+        luminance = image[..., 0] * 0.299 + image[..., 1] * 0.587 + image[..., 2] * 0.114
+        dark = float((model & (luminance < DARK_LUMINANCE)).sum()) / max(1, int(model.sum()))
+        see_through = float(enclosed.sum()) / silhouette
+        print(f"{name} panel {index} ({panel['caption']}): dark {100 * dark:.1f}%, see-through {100 * see_through:.2f}%")
+        if dark > MAX_DARK_SHARE:
+            fail(failures, f"{name} panel {index} ({panel['caption']}): {100 * dark:.1f}% of the model darker than "
+                           f"luminance 40 (> {100 * MAX_DARK_SHARE:.0f}%)")
+        if see_through >= MAX_SEE_THROUGH_SHARE:
+            fail(failures, f"{name} panel {index} ({panel['caption']}): background on {100 * see_through:.2f}% of the "
+                           f"silhouette (>= {100 * MAX_SEE_THROUGH_SHARE:.1f}%: see-through)")
 
 
 def main():
@@ -44,6 +87,7 @@ def main():
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
+        import scipy.ndimage  # noqa: F401 (the see-through check labels background regions)
     except ImportError as error:
         print("skipped:", error)
         return 77
@@ -68,6 +112,8 @@ def main():
         w, h = figure["panel_size"]
         return [image[y:y + h, x:x + w] for x, y in figure["panel_boxes"]]
 
+    for name in sorted(numbers):
+        check_dark_and_see_through(name, numbers[name], panels(name), failures, np)
     if "fig11_aperture180_steps" in numbers:
         for i, panel in enumerate(panels("fig11_aperture180_steps")):
             share = float((panel.min(axis=2) < 0.94).mean())  # not the white background

@@ -1,11 +1,18 @@
 // Cell colours and lighting shared by every pass that draws faces.
 uniform sampler1D colour_map;   // perceptual map, 256 texels
 uniform vec2 value_range;       // property values mapped to the ends of the colour map
+uniform bool log_scale;         // map log10 of the values (value_range above 0; values below it clamp)
 uniform vec3 light_eye;         // headlight position (render space): the model camera
 
 vec3 cell_colour(uint compact_cell) {
-    float span = value_range.y - value_range.x;
-    float t = span > 0.0 ? (texelFetch(cell_value_texels, int(compact_cell)).r - value_range.x) / span : 0.5;
+    float value = texelFetch(cell_value_texels, int(compact_cell)).r;
+    vec2 range = value_range;
+    if (log_scale) {
+        range = log2(value_range);  // log2: the ratio to the range is the same as log10's
+        value = log2(max(value, value_range.x));
+    }
+    float span = range.y - range.x;
+    float t = span > 0.0 ? (value - range.x) / span : 0.5;
     return texture(colour_map, clamp(t, 0.0, 1.0)).rgb;
 }
 

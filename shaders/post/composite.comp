@@ -105,13 +105,19 @@ void main() {
     float depth = imageLoad(shell_depth, texel).r;
     ivec2 last_texel = ivec2(viewport_size) - 1;
     const ivec2 neighbours[4] = ivec2[](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1));
-    bool contour = false;
+    bool outline = false, fold = false;
     for (int n = 0; n < 4; ++n) {
         float other = imageLoad(shell_depth, clamp(texel + neighbours[n], ivec2(0), last_texel)).r;
         // Only the nearer side of a jump draws, so the line is one pixel wide.
-        contour = contour || (depth > 0.0 && (other == 0.0 || other - depth > contour_jump * depth));
+        outline = outline || (depth > 0.0 && other == 0.0);
+        fold = fold || (depth > 0.0 && other > 0.0 && other - depth > contour_jump * depth);
     }
-    if (contour && !primary) colour = contour_colour;
+    // A fold belongs to the shell: where the frame shows something else there (the cut floor
+    // behind the cut-away shell, or nothing with --only primaries) it would float as a stray
+    // jagged line. The outline always draws: it keeps the model's extent in view.
+    float shown = packed_value(imageLoad(normal_depth, texel).rg);
+    bool shell_shown = shown > 0.0 && abs(shown - depth) <= contour_jump * depth;
+    if ((outline || (fold && shell_shown)) && !primary) colour = contour_colour;
 #endif
     imageStore(final_colour, texel, vec4(colour, 1.0));
 }

@@ -9,6 +9,28 @@ namespace cutaway::annotation {
 
 namespace {
 
+/// The bar's ticks: round values on a linear scale; on a logarithmic one each power of ten inside
+/// the range when there are at least two of them, else round values (placed logarithmically).
+AxisTicks colour_bar_ticks(const ColourBarLabel& label) {
+    if (!label.log_scale) return nice_ticks(label.min, label.max);
+    AxisTicks decades;
+    for (double k = std::ceil(std::log10(double(label.min))); k <= std::floor(std::log10(double(label.max))); ++k) {
+        std::ostringstream text;
+        text << std::pow(10.0, k);
+        decades.values.push_back(std::pow(10.0, k));
+        decades.labels.push_back(text.str());
+    }
+    return decades.values.size() >= 2 ? decades : nice_ticks(label.min, label.max);
+}
+
+/// Where `value` lies along the bar, 0 (bottom, min) .. 1 (top, max).
+double along_bar(const ColourBarLabel& label, double value) {
+    const double lo = label.log_scale ? std::log10(double(label.min)) : double(label.min);
+    const double hi = label.log_scale ? std::log10(double(label.max)) : double(label.max);
+    const double at = label.log_scale ? std::log10(value) : value;
+    return hi > lo ? (at - lo) / (hi - lo) : 0.5;
+}
+
 /// Words of `text` wrapped greedily into lines no wider than `max_width` (a longer word keeps its
 /// own line).
 std::vector<std::string> wrap_words(const std::string& text, float max_width, float scale) {
@@ -30,6 +52,7 @@ PixelRect ColourBarLayout::bounds() const {
     PixelRect box = frame;
     for (const TextLine& line : texts()) box = box.united(ink_box(line));
     for (const ColourBarTick& tick : ticks) box = box.united(tick.mark);
+    if (primary_band) box = box.united(*primary_band);
     return box;
 }
 
@@ -43,6 +66,9 @@ ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int he
     if (!std::isfinite(label.min) || !std::isfinite(label.max) || label.min > label.max)
         throw std::invalid_argument("colour bar: expected a finite range min <= max, found [" + std::to_string(label.min) +
                                     ", " + std::to_string(label.max) + "]");
+    if (label.log_scale && !(label.min > 0))
+        throw std::invalid_argument("colour bar: a logarithmic scale needs a range above 0, found [" + std::to_string(label.min) +
+                                    ", " + std::to_string(label.max) + "]");
     ColourBarLayout layout;
     // Capitals 2% of the image height (issue 15's minimum; more would take width from the model),
     // never below stb's 7 px.
@@ -50,7 +76,7 @@ ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int he
     layout.text_scale = s;
     const float margin = 6 * s, gap = 3 * s, bar_width = 8 * s, mark_length = 3 * s;
 
-    const AxisTicks ticks = nice_ticks(label.min, label.max);
+    const AxisTicks ticks = colour_bar_ticks(label);
     float label_width = 0;
     for (const std::string& text : ticks.labels) label_width = std::max(label_width, text_width(text, s));
 
@@ -95,10 +121,9 @@ ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int he
         y += line_height;
     }
 
-    const double range = double(label.max) - double(label.min);
     for (std::size_t t = 0; t < ticks.values.size(); ++t) {
         const double value = ticks.values[t];
-        const double along = range > 0 ? (value - label.min) / range : 0.5;
+        const double along = along_bar(label, value);
         const float tick_y = layout.gradient.y1 - float(along) * bar_height;
         ColourBarTick tick;
         tick.value = value;
@@ -106,6 +131,22 @@ ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int he
         tick.mark = {layout.gradient.x1, tick_y - 0.5f * s, layout.gradient.x1 + mark_length, tick_y + 0.5f * s};
         tick.label = {ticks.labels[t], std::round(tick.mark.x1 + gap), std::round(tick_y - half_label), s};
         layout.ticks.push_back(tick);
+    }
+    if (label.primary_range) {
+        const auto row = [&](float value) {
+            const double clamped = std::clamp(double(value), double(label.min), double(label.max));
+            return layout.gradient.y1 - float(along_bar(label, clamped)) * bar_height;
+        };
+        float top = row(label.primary_range->max), bottom = row(label.primary_range->min);
+        const float least = 3 * s;
+        if (bottom - top < least) {
+            const float middle = 0.5f * (top + bottom);
+            top = std::max(layout.gradient.y0, middle - 0.5f * least);
+            bottom = std::min(layout.gradient.y1, top + least);
+            top = bottom - least;
+        }
+        const float x1 = layout.frame.x0 - gap, x0 = x1 - 0.5f * bar_width;
+        layout.primary_band = PixelRect{x0, top, x1, bottom};
     }
     return layout;
 }

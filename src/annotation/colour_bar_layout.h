@@ -2,6 +2,7 @@
 // Where the colour bar of a frame goes: the gradient, its tick marks and labels and its title,
 // in image pixels. Computed on the CPU so that the GL bar (src/cutaway/colour_bar.cpp), the
 // seismic bar (src/volume/colour_bar.cpp), the camera's framing and the tests share one layout.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,16 @@ struct ColourBarLabel {
     float min = 0;
     float max = 1;
     std::string unit;
+    /// Colours by log10 of the value between log10(min) and log10(max) (min > 0); ticks at round
+    /// values of log10, labelled with the values themselves.
+    bool log_scale = false;
+    /// The primaries' value range, marked beside the gradient (clamped to it); none when the
+    /// primaries are chosen otherwise (by a second property) or the range changes (the viewer).
+    struct Span {
+        float min = 0;
+        float max = 0;
+    };
+    std::optional<Span> primary_range{};
 };
 
 struct ColourBarTick {
@@ -31,6 +42,9 @@ struct ColourBarLayout {
     PixelRect frame;                 ///< one pixel around the gradient
     std::vector<TextLine> title;     ///< the title's lines, above the gradient
     std::vector<ColourBarTick> ticks;
+    /// ColourBarLabel::primary_range: a dark band left of the gradient from its min to its max (at
+    /// least 3 text pixels tall, so a narrow range, or one beyond the bar's end, still shows).
+    std::optional<PixelRect> primary_band;
     float text_scale = 1;            ///< stb_easy_font scale of every text
     /// Every pixel the bar may draw (frame, marks, glyphs), plus no margin.
     PixelRect bounds() const;

@@ -157,7 +157,7 @@ struct RankScene {
     void start(const RenderOptions& options) {
         const auto setup_started = std::chrono::steady_clock::now();
         rank.emplace(*shaders, std::move(*block), frame, options.width, options.height);
-        rank->set_colouring(property.values(), property.colour_bar_label());
+        rank->set_colouring(property.values(), property.colour_bar_label(true));
         rank->select_range(property.primary_range, ijk_box);
         glFinish();
         setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();

@@ -179,7 +179,7 @@ int run_render(const RenderOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
-    renderer.set_colouring(property.values(), property.colour_bar_label());
+    renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by));
     if (selected_by)
         renderer.select(selected_by->flags);
     else
@@ -223,7 +223,7 @@ int run_render(const RenderOptions& options) {
     stats["model_load_s"] = model.load_seconds;
     stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set
     stats["property"] = {{"name", property.label}, {"colour_range", {property.colour_range.min, property.colour_range.max}},
-                         {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
+                         {"colour_scale", property.log_scale ? "log" : "linear"}, {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
     stats["configuration"] = options.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;

@@ -95,10 +95,10 @@ nlohmann::json RenderOptions::describe() const {
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
             {"mean_filter_kernel", pipeline::to_string(s.mean_filter_kernel)}, {"ssao", s.ssao},
-            {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius},
+            {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius}, {"ssao_strength", s.ssao_strength},
             {"ssao_resolution", s.ssao_half_resolution ? "half" : "full"}, {"saturation", s.saturation},
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
-            {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)},
+            {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)}, {"scale", scale},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
             {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
 }
@@ -157,6 +157,8 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
                "stops just in front of the farthest shell surface, which shows as cut fill)");
     add_choice(c, "--contours", o.contours, pipeline::on_off_choices(), "shell contour lines");
     add_choice(c, "--only", o.only, pipeline::choices_of(pipeline::OnlyLayer{}), "layers drawn");
+    add_choice(c, "--scale", o.scale, pipeline::choices_of(pipeline::ColourScale{}),
+               "colour scale: auto (logarithmic for permeabilities, PERM*; linear otherwise) | linear | log");
     c.add_flag("!--no-colour-bar", o.settings.colour_bar, "leave out the colour bar");
 }
 
@@ -220,8 +222,10 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
         ->check(one_of({"i", "j", "k"}));
 }
 
-annotation::ColourBarLabel PropertyChoice::colour_bar_label() const {
-    return {label, colour_range.min, colour_range.max, annotation::property_unit(name, unit_system)};
+annotation::ColourBarLabel PropertyChoice::colour_bar_label(bool mark_primary_range) const {
+    annotation::ColourBarLabel bar{label, colour_range.min, colour_range.max, annotation::property_unit(name, unit_system), log_scale};
+    if (mark_primary_range) bar.primary_range = annotation::ColourBarLabel::Span{primary_range.min, primary_range.max};
+    return bar;
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer) {
@@ -260,7 +264,21 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
                                     "; integer: " + names_of(grid.int_property_names()) + "; dynamic: " +
                                     names_of(dynamics) + ")");
     }
-    choice.colour_range = grid::active_value_range(grid, choice.values(), choice.name);
+    const pipeline::ColourScale scale = parse_choice("--scale", options.scale, pipeline::choices_of(pipeline::ColourScale{}));
+    choice.log_scale = scale == pipeline::ColourScale::log ||
+                       (scale == pipeline::ColourScale::automatic && choice.name.rfind("PERM", 0) == 0);
+    // 2nd to 98th percentile: one outlier (a 5000 mD streak among 50 mD rock) would otherwise
+    // squeeze every other cell into one end of the colour map. Values beyond it take the end colours.
+    constexpr double colour_quantiles[2] = {0.02, 0.98};
+    choice.colour_range = grid::active_quantile_range(grid, choice.values(), choice.name, colour_quantiles[0],
+                                                      colour_quantiles[1], choice.log_scale);
+    if (choice.log_scale && !(choice.colour_range.min > 0)) {
+        if (scale == pipeline::ColourScale::log)
+            throw std::invalid_argument("--scale log: property " + choice.name + " has no value above 0 in an active cell");
+        choice.log_scale = false;  // automatic: a permeability with no positive value stays linear
+        choice.colour_range = grid::active_quantile_range(grid, choice.values(), choice.name, colour_quantiles[0],
+                                                          colour_quantiles[1], false);
+    }
     choice.unit_system = grid.metadata().unit_system;
     return choice;
 }

@@ -40,6 +40,7 @@ struct RenderOptions {
     std::string ssao_resolution = "half";
     std::string contours = "on";
     std::string only = "both";
+    std::string scale = "auto";  ///< pipeline::ColourScale by name
     std::string seeds = "boxes";
     std::string draw = "visible";
     std::string stage2_passes = "deferred";
@@ -93,12 +94,14 @@ struct PropertyChoice {
     std::string label;                ///< with the step, e.g. "SWAT step 3"
     const std::vector<float>* external = nullptr;  ///< the grid's array, or null when owned
     std::vector<float> owned;         ///< storage for a derived property (layer index)
-    grid::PrimaryRange colour_range;  ///< active min and max
+    grid::PrimaryRange colour_range;  ///< colour_quantiles of the active values (positive ones on a log scale)
+    bool log_scale = false;           ///< colours by log10 of the value (--scale)
     grid::PrimaryRange primary_range;
     std::string unit_system;          ///< the grid's (GridMetadata::unit_system), for the unit
     const std::vector<float>& values() const { return external ? *external : owned; }
-    /// The colour bar's title (the label), unit (by the property's keyword and unit system) and colour range.
-    annotation::ColourBarLabel colour_bar_label() const;
+    /// The colour bar's title (the label), unit (by the property's keyword and unit system), colour
+    /// range and scale; `mark_primary_range`: with primary_range marked (when the primaries are chosen by it).
+    annotation::ColourBarLabel colour_bar_label(bool mark_primary_range = false) const;
 };
 
 /// Throws std::invalid_argument for an unknown property or step, naming the known ones.

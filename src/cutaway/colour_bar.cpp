@@ -52,6 +52,7 @@ void ColourBar::draw(const gl::Framebuffer& target, int width, int height, const
     add_rectangle(vertices, g.x0, g.y0, g.x1, g.y1, ink, 1.0f, 0.0f);
     for (const annotation::ColourBarTick& tick : layout.ticks)
         add_rectangle(vertices, tick.mark.x0, tick.mark.y0, tick.mark.x1, tick.mark.y1, ink, -1, -1);
+    if (const auto& band = layout.primary_band) add_rectangle(vertices, band->x0, band->y0, band->x1, band->y1, ink, -1, -1);
     for (const annotation::TextLine& line : layout.texts()) add_text(vertices, line, ink);
     const gl::Buffer buffer(vertices.size() * sizeof(BarVertex), vertices.data());
     glVertexArrayVertexBuffer(vertex_array_.id(), 0, buffer.id(), 0, sizeof(BarVertex));

@@ -277,10 +277,10 @@ void CutawayRenderer::resolve_cut(const gl::FloatImageBuffer* filtered, const Fr
     else cut_resolve_.apply(cut_, cut_camera, rear_shell, rear_margin(cut_camera));
 }
 
-const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera) {
+const gl::Texture& CutawayRenderer::render_view_rear_shell(const Camera& camera, bool primaries_drawn) {
     // The frozen cut was resolved against the frozen camera's rear shell already: the texture is
     // free until the cut is made again.
-    rear_shell_.render(buffers_, camera);
+    rear_shell_.render(buffers_, camera, primaries_drawn);
     if (hooks_.combine_max) hooks_.combine_max({&rear_shell_.depth()});
     return rear_shell_.depth();
 }
@@ -355,7 +355,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     switch (pass) {
     case FramePass::clear_cut: cut_.clear(); return;
     case FramePass::strategy_cut: draw_strategy_cut(f); return;
-    case FramePass::rear_shell: rear_shell_.render(buffers_, f.cut_camera); return;
+    case FramePass::rear_shell: rear_shell_.render(buffers_, f.cut_camera, f.plan.draw_primaries); return;
     case FramePass::combine_cut: {
         std::vector<const gl::Texture*> images;
         if (f.plan.combine_cut_depth) images.push_back(&cut_.depth);
@@ -373,7 +373,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
         visible_.select(buffers_, f.camera, f.plan.cut_drawn ? &cut_ : nullptr, f.cut_camera, f.plan.clip_view_rear_shell);
         return;
     case FramePass::secondary_list: secondary_face_list(); return;
-    case FramePass::view_rear_shell: render_view_rear_shell(f.camera); return;
+    case FramePass::view_rear_shell: render_view_rear_shell(f.camera, f.plan.draw_primaries); return;
     case FramePass::clear_scene:
         scene_.clear();
         scene_.framebuffer.bind();
@@ -399,7 +399,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
 }
 
 FaceDrawContext CutawayRenderer::draw_context(const Camera& camera) const {
-    return {buffers_, camera, &colour_map_, {label_.min, label_.max}};
+    return {buffers_, camera, &colour_map_, {label_.min, label_.max}, label_.log_scale};
 }
 
 void CutawayRenderer::draw_strategy_cut(const FrameStep& f) {

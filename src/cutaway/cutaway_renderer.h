@@ -235,7 +235,7 @@ private:
     void resolve_cut(const gl::FloatImageBuffer* filtered, const FrameSettings& settings, const Camera& cut_camera);
     /// Freeze view: the rear shell seen from the model `camera`, which stage 2 keeps (CutClip).
     /// Reuses rear_shell_ (only needed while the cut is made).
-    const gl::Texture& render_view_rear_shell(const Camera& camera);
+    const gl::Texture& render_view_rear_shell(const Camera& camera, bool primaries_drawn);
     /// Stage 2's faces for `draw`: the culling pass's selection, or the full secondary list.
     void draw_secondary_faces(DrawMode draw);
     const FaceBuffer& secondary_face_list();

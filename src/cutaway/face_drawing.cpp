@@ -13,6 +13,7 @@ void prepare_face_program(const gl::Program& p, const FaceDrawContext& context) 
     gl::set_uniform(p, "light_eye", camera.eye);
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "value_range", context.value_range);
+    gl::set_uniform(p, "log_scale", context.log_scale);
     gl::set_uniform(p, "colour_map", 0);
     if (context.colour_map) context.colour_map->bind(0);
     gl::set_uniform(p, "cut_view", camera.view);

@@ -11,6 +11,7 @@ struct FaceDrawContext {
     const Camera& camera;            ///< the model camera
     const gl::Texture* colour_map = nullptr;  ///< null for passes that only write depth
     glm::vec2 value_range{0, 1};     ///< property values at the ends of the colour map
+    bool log_scale = false;          ///< map log10 of the values (value_range above 0)
 };
 
 /// Sets the face program's uniforms, binds the grid buffers, the colour map (unit 0), the

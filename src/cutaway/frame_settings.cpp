@@ -15,6 +15,8 @@ constexpr NamedChoice<SeedSource> seed_sources[] = {{"boxes", SeedSource::boxes}
 constexpr NamedChoice<DrawMode> draw_modes[] = {{"visible", DrawMode::visible}, {"all-faces", DrawMode::all_faces}};
 constexpr NamedChoice<Stage2Passes> stage2_passes[] = {
     {"1", Stage2Passes::one}, {"2", Stage2Passes::two}, {"deferred", Stage2Passes::deferred}};
+constexpr NamedChoice<ColourScale> colour_scales[] = {
+    {"auto", ColourScale::automatic}, {"linear", ColourScale::linear}, {"log", ColourScale::log}};
 constexpr NamedChoice<bool> on_off[] = {{"on", true}, {"off", false}};
 constexpr NamedChoice<bool> ssao_resolutions[] = {{"half", true}, {"full", false}};
 
@@ -26,6 +28,7 @@ ChoiceTable<OnlyLayer> choices_of(OnlyLayer) { return only_layers; }
 ChoiceTable<SeedSource> choices_of(SeedSource) { return seed_sources; }
 ChoiceTable<DrawMode> choices_of(DrawMode) { return draw_modes; }
 ChoiceTable<Stage2Passes> choices_of(Stage2Passes) { return stage2_passes; }
+ChoiceTable<ColourScale> choices_of(ColourScale) { return colour_scales; }
 ChoiceTable<bool> on_off_choices() { return on_off; }
 ChoiceTable<bool> ssao_resolution_choices() { return ssao_resolutions; }
 
@@ -40,6 +43,7 @@ const char* to_string(MeanFilterKernel kernel) { return name_of_choice(choices_o
 const char* to_string(SeedSource seeds) { return name_of_choice(choices_of(seeds), seeds); }
 const char* to_string(DrawMode draw) { return name_of_choice(choices_of(draw), draw); }
 const char* to_string(Stage2Passes passes) { return name_of_choice(choices_of(passes), passes); }
+const char* to_string(ColourScale scale) { return name_of_choice(choices_of(scale), scale); }
 const char* to_string(OnlyLayer only) { return name_of_choice(choices_of(only), only); }
 
 }  // namespace cutaway::pipeline

@@ -21,6 +21,9 @@ enum class DrawMode { visible, all_faces };
 /// faces drawn again, shading once per pixel (on llvmpipe the second draw's triangle set-up costs
 /// about what it saves; README, issue 14).
 enum class Stage2Passes { one, two, deferred };
+/// How property values map onto the colour map: `automatic` = logarithmic for permeabilities
+/// (names starting with PERM, spread over decades), linear otherwise.
+enum class ColourScale { automatic, linear, log };
 
 struct FrameSettings {
     /// Cut-surface strategy (cut_surface_registry.h), or "auto" (the default, cut_strategy_choice.h):
@@ -44,7 +47,11 @@ struct FrameSettings {
     MeanFilterKernel mean_filter_kernel = MeanFilterKernel::full;
     bool ssao = true;
     int ssao_samples = 16;
-    float ssao_radius = 0.03f;             ///< fraction of the model radius
+    /// Radius and strength chosen so that the occlusion reads at print size: at 0.03 and 1.6 the
+    /// SSAO panel of fig. 9 could not be told from the plain one (issue 46; the measured
+    /// differences are in the commit that set these).
+    float ssao_radius = 0.045f;            ///< fraction of the model radius
+    float ssao_strength = 4.0f;            ///< occlusion factor = 1 - strength * mean sample occlusion
     /// true: occlusion computed for one pixel in four and upsampled by depth (post/ssao.comp,
     /// post/composite.comp); false: for every pixel, as the paper.
     bool ssao_half_resolution = true;
@@ -78,5 +85,6 @@ const char* to_string(OnlyLayer only);
 const char* to_string(SeedSource seeds);
 const char* to_string(DrawMode draw);
 const char* to_string(Stage2Passes passes);
+const char* to_string(ColourScale scale);
 
 }  // namespace cutaway::pipeline

@@ -33,7 +33,7 @@ void RearShellDepth::allocate(int width, int height) {
     framebuffer_.finish(none, "rear shell depth");
 }
 
-void RearShellDepth::render(const GridBuffers& grid, const Camera& cut_camera) {
+void RearShellDepth::render(const GridBuffers& grid, const Camera& cut_camera, bool primaries_drawn) {
     const float zero = 0.0f;
     glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &zero);
     framebuffer_.bind();
@@ -44,8 +44,10 @@ void RearShellDepth::render(const GridBuffers& grid, const Camera& cut_camera) {
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
     grid.draw_faces(grid.outer_faces(), GL_FRONT);
-    prepare_face_program(primaries_program_, FaceDrawContext{grid, cut_camera});
-    grid.draw_faces(grid.primary_faces());
+    if (primaries_drawn) {
+        prepare_face_program(primaries_program_, FaceDrawContext{grid, cut_camera});
+        grid.draw_faces(grid.primary_faces());
+    }
     glDepthFunc(GL_LESS);
 }
 

@@ -3,9 +3,10 @@
 // (unless --see-through): where a cut would leave the model through its rear shell, showing the
 // background through a hole, it is clamped to just in front of the shell, so the rear shows as
 // cut fill (cut_surface/resolve.frag applies the clamp).
-// Pixels a primary face covers are left unclamped: there the primary itself hides the background,
-// and a clamp could keep a sliver of its neighbours' faces (within the clamp's margin of the rear
-// shell) in front of its edge-on side faces, hiding primary pixels.
+// Pixels a primary face covers are left unclamped while the primaries are drawn: there the primary
+// itself hides the background, and a clamp could keep a sliver of its neighbours' faces (within
+// the clamp's margin of the rear shell) in front of its edge-on side faces, hiding primary pixels.
+// With the primaries hidden (--only secondaries) nothing would hide it: the clamp holds there too.
 #include "cutaway/camera.h"
 #include "cutaway/grid_buffers.h"
 #include "gl/gl_objects.h"
@@ -20,8 +21,9 @@ public:
     void resize(int width, int height);
     /// Draws the shell and fault faces (a fault face may be partly uncovered, so the model may end
     /// there) from `cut_camera` keeping the farthest: (s - near) / (far - near) of the cut camera
-    /// in depth(), 0 where no such face covers the pixel, 1 (the far plane) where a primary does.
-    void render(const GridBuffers& grid, const Camera& cut_camera);
+    /// in depth(), 0 where no such face covers the pixel, 1 (the far plane) where a primary does
+    /// and `primaries_drawn`.
+    void render(const GridBuffers& grid, const Camera& cut_camera, bool primaries_drawn);
     const gl::Texture& depth() const { return depth_; }
 
 private:

@@ -27,6 +27,7 @@ ChoiceTable<OnlyLayer> choices_of(OnlyLayer);
 ChoiceTable<SeedSource> choices_of(SeedSource);
 ChoiceTable<DrawMode> choices_of(DrawMode);
 ChoiceTable<Stage2Passes> choices_of(Stage2Passes);
+ChoiceTable<ColourScale> choices_of(ColourScale);
 
 /// The two-way switches spelled as words on the command line.
 ChoiceTable<bool> on_off_choices();           ///< --ssao, --contours: on|off

@@ -88,6 +88,21 @@ PrimaryRange active_value_range(const CornerPointGrid& grid, const std::vector<f
     return {*lo, *hi};
 }
 
+PrimaryRange active_quantile_range(const CornerPointGrid& grid, const std::vector<float>& values,
+                                   const std::string& property_name, double lo_fraction, double hi_fraction,
+                                   bool positive_only) {
+    std::vector<float> active = active_values(grid, values, property_name);
+    if (positive_only) active.erase(std::remove_if(active.begin(), active.end(), [](float v) { return !(v > 0); }), active.end());
+    if (active.empty()) return {0, 0};
+    const auto at = [&](double fraction) {
+        const auto nth = active.begin() + std::ptrdiff_t(std::llround(std::clamp(fraction, 0.0, 1.0) * double(active.size() - 1)));
+        std::nth_element(active.begin(), nth, active.end());
+        return *nth;
+    };
+    const float lo = at(lo_fraction);
+    return {lo, at(hi_fraction)};
+}
+
 std::size_t count_primaries(const std::vector<std::uint8_t>& flags) {
     return std::size_t(std::count(flags.begin(), flags.end(), std::uint8_t(1)));
 }

@@ -54,6 +54,13 @@ void check_finite_active(const CornerPointGrid& grid, const std::vector<float>& 
 PrimaryRange active_value_range(const CornerPointGrid& grid, const std::vector<float>& values,
                                 const std::string& property_name);
 
+/// The `lo_fraction` and `hi_fraction` quantiles (0..1, nearest rank) of `values` over active cells,
+/// only positive ones when `positive_only` (a logarithmic colour scale); {0, 0} when none is left.
+/// A colour range from them is not stretched by a few outliers, as min and max are.
+PrimaryRange active_quantile_range(const CornerPointGrid& grid, const std::vector<float>& values,
+                                   const std::string& property_name, double lo_fraction, double hi_fraction,
+                                   bool positive_only);
+
 std::size_t count_primaries(const std::vector<std::uint8_t>& flags);
 
 }  // namespace cutaway::grid

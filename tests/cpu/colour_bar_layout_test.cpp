@@ -93,6 +93,45 @@ TEST(ColourBarLayout, AtLeastThreeRoundTicksInsideTheRange) {
         }
 }
 
+TEST(ColourBarLayout, LogarithmicScaleTicksEachDecadeEvenlySpaced) {
+    // Permeability over 3.6 decades: a tick per power of ten, each labelled with its value, the
+    // decades equally far apart on the bar (a linear bar would put 1, 10 and 100 within 5% of its
+    // bottom). Half a pixel: the marks are placed at float rows, not rounded.
+    ColourBarLabel label{"PERMX", 0.5f, 2000.0f, "mD"};
+    label.log_scale = true;
+    const ColourBarLayout layout = layout_colour_bar(label, 1000, 600);
+    ASSERT_EQ(layout.ticks.size(), 4u);
+    const char* expected[] = {"1", "10", "100", "1000"};
+    for (std::size_t t = 0; t < layout.ticks.size(); ++t) EXPECT_EQ(layout.ticks[t].label.text, expected[t]);
+    const float decade = layout.ticks[0].y - layout.ticks[1].y;
+    EXPECT_GT(decade, 0.0f);
+    for (std::size_t t = 1; t < layout.ticks.size(); ++t) EXPECT_NEAR(layout.ticks[t - 1].y - layout.ticks[t].y, decade, 0.5f);
+    const float bar = layout.gradient.y1 - layout.gradient.y0;
+    EXPECT_NEAR(layout.gradient.y1 - layout.ticks[0].y, bar * std::log10(1.0 / 0.5) / std::log10(2000.0 / 0.5), 0.5f);
+    label.min = 0;  // no logarithm of 0
+    EXPECT_THROW(layout_colour_bar(label, 1000, 600), std::invalid_argument);
+}
+
+TEST(ColourBarLayout, MarksThePrimaryRangeBesideTheGradient) {
+    // The reader finds the primaries' values on the bar: a band left of the gradient from the
+    // range's min to its max, inside the reserved width; clamped to the bar, and never thinner
+    // than 3 text pixels (a range of one value still shows). Half a pixel: float rows.
+    ColourBarLabel label{"PORO", 0.0f, 0.4f, "frac"};
+    EXPECT_FALSE(layout_colour_bar(label, 1000, 600).primary_band);
+    label.primary_range = ColourBarLabel::Span{0.3f, 0.5f};
+    const ColourBarLayout layout = layout_colour_bar(label, 1000, 600);
+    ASSERT_TRUE(layout.primary_band);
+    const PixelRect band = *layout.primary_band;
+    const float bar = layout.gradient.y1 - layout.gradient.y0;
+    EXPECT_NEAR(band.y1, layout.gradient.y1 - 0.75f * bar, 0.5f);  // 0.3 of 0..0.4
+    EXPECT_NEAR(band.y0, layout.gradient.y0, 0.5f);                  // 0.5 clamped to the top
+    EXPECT_LE(band.x1, layout.frame.x0);
+    EXPECT_GE(band.x0, 1000 - colour_bar_reserved_width(label, 1000, 600));
+    label.primary_range = ColourBarLabel::Span{0.2f, 0.2f};
+    const PixelRect thin = *layout_colour_bar(label, 1000, 600).primary_band;
+    EXPECT_GE(thin.height(), 3 * layout.text_scale - 0.01f);
+}
+
 TEST(ColourBarLayout, TextIsLegibleAndNothingOverlaps) {
     for (const Size size : sizes)
         for (const ColourBarLabel& label : labels) {

@@ -41,6 +41,26 @@ TEST(PrimarySelection, FractionTakesTheTopValues) {
     EXPECT_EQ(count_primaries(select_primaries(grid, values, "V", range_for_fraction(grid, values, "V", 1e-6))), 1u);
 }
 
+TEST(PrimarySelection, QuantileRangeIgnoresOutliersAndKeepsPositiveValuesForLogScales) {
+    // The colour range: 2nd to 98th percentile by nearest rank over the 64 active values, so the
+    // one outlier at the top (1e6 among 0..62) does not set the range's end; on a log scale only
+    // values above 0 count (the ramp's 0 and the negative ones are left out).
+    const CornerPointGrid grid = box_4x4x4();
+    std::vector<float> values = ramp(64);
+    values[63] = 1e6f;
+    const PrimaryRange linear = active_quantile_range(grid, values, "V", 0.02, 0.98, false);
+    EXPECT_FLOAT_EQ(linear.min, 1);   // rank round(0.02 * 63) = 1
+    EXPECT_FLOAT_EQ(linear.max, 62);  // rank round(0.98 * 63) = 62: below the outlier
+    for (std::size_t c = 0; c < 8; ++c) values[c] = -float(c);
+    const PrimaryRange positive = active_quantile_range(grid, values, "V", 0, 1, true);
+    EXPECT_FLOAT_EQ(positive.min, 8);
+    EXPECT_FLOAT_EQ(positive.max, 1e6f);
+    const std::vector<float> none(64, 0.0f);
+    const PrimaryRange empty = active_quantile_range(grid, none, "V", 0.02, 0.98, true);
+    EXPECT_EQ(empty.min, 0);
+    EXPECT_EQ(empty.max, 0);
+}
+
 TEST(PrimarySelection, NaNInAnActiveCellNamesPropertyAndCell) {
     const CornerPointGrid grid = box_4x4x4();
     std::vector<float> values = ramp(64);

@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "annotation/colour_bar_layout.h"
+#include "cutaway/colour_map.h"
 #include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "metrics/median.h"
@@ -151,10 +152,6 @@ TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
     EXPECT_GT(band_unchanged, silhouette_count / 10);  // the line is doubled, not a solid band
 }
 
-constexpr std::uint8_t viridis[256][3] = {
-#include "annotation/viridis_table.inc"
-};
-
 TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
     // The reader matches a primary's colour against the colour bar. The headlight shades every face
     // by its angle (0.35 + 0.65 |n.l|), so a pixel is compared with the map's colour at the cell's
@@ -176,7 +173,7 @@ TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
     for (std::size_t i = 0; i < cells.size(); ++i) {
         if (!(ids.flags[i] & pipeline::flag_primary) || (ids.flags[i] & pipeline::flag_edge) || cells[i] == 0) continue;
         const double t = std::clamp((poro[cells[i] - 1] - range.min) / (range.max - range.min), 0.0f, 1.0f);
-        const std::uint8_t* m = viridis[std::lround(255 * t)];
+        const std::array<std::uint8_t, 3> m = pipeline::colour_map_rgb(float(t));
         const std::uint8_t* p = image.at(int(i % width), height - 1 - int(i / width));
         const glm::dvec3 map(m[0], m[1], m[2]), shown(p[0], p[1], p[2]);
         const double k = std::clamp(glm::dot(shown, map) / glm::dot(map, map), 0.0, 1.5);

@@ -79,7 +79,7 @@ WindingParts check_model(const grid::CornerPointGrid& grid, unsigned seed, const
     std::mt19937 random(seed);
     for (int view = 0; view < 8; ++view) {
         const pipeline::Camera camera = pipeline::make_orbit_camera(frame, random_pose(random), width, height);
-        rear.render(buffers, camera);
+        rear.render(buffers, camera, true);  // no primaries in these buffers
         const std::vector<float> culled = read_depth(rear.depth());
         const std::vector<float> reference = unculled_rear_depth(unculled, buffers, with_walls, camera);
         std::size_t covered = 0, farther = 0, differing = 0, far_apart = 0;

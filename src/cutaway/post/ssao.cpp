@@ -16,7 +16,7 @@ void Ssao::apply(const SceneTargets& scene, const PostTargets& post, const Camer
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "radius", radius);
-    gl::set_uniform(p, "strength", 1.6f);
+    gl::set_uniform(p, "strength", settings.ssao_strength);
     glBindImageTexture(0, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     gl::wait_for_draws_before_image_loads();
