@@ -9,6 +9,7 @@
 #include <chrono>
 #include <functional>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -113,7 +114,10 @@ struct RankScene {
         });
         mpi.sum(active_per_layer);
         grid::PrimaryRange own_range;
+        // The rank's own active values (for --primary-fraction) and their true extremes: the top
+        // fraction reaches the largest value, beyond the colour range's percentile.
         std::vector<float> own_values;
+        grid::PrimaryRange own_extremes{std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest()};
         on_all_ranks(mpi, [&] {
             slab = distributed::split_into_slabs(active_per_layer, whole_dims, mpi.size(), axis)[std::size_t(mpi.rank())];
             for (std::uint64_t count : active_per_layer) whole_active += count;
@@ -128,6 +132,10 @@ struct RankScene {
             property = choose_property(model.grid, options, source.k0);
             own_range = property.colour_range;
             if (options.range.empty()) own_values = own_active_values(model.grid, source, property.values(), slab);
+            if (!own_values.empty()) {
+                const auto [low, high] = std::minmax_element(own_values.begin(), own_values.end());
+                own_extremes = {*low, *high};
+            }
         });
         load_peak_bytes = double(run_context::proc_status_bytes("VmHWM")) - rss_before;
         on_all_ranks(mpi, [&] {
@@ -137,8 +145,9 @@ struct RankScene {
             frame = distributed::global_model_frame(mpi, part, bounds, options.z_scale);
             property.colour_range = distributed::global_value_range(mpi, own_range);
             property.primary_range = options.range.empty()
-                                         ? distributed::global_range_for_fraction(mpi, own_values, primary_fraction(options),
-                                                                                  property.colour_range.max)
+                                         ? distributed::global_range_for_fraction(
+                                               mpi, own_values, primary_fraction(options),
+                                               distributed::global_value_range(mpi, own_extremes).max)
                                          : grid::PrimaryRange{options.range[0], options.range[1]};
         });
         on_all_ranks(mpi, [&] {
