@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <opm/io/eclipse/EGrid.hpp>
+#include <opm/io/eclipse/EclFile.hpp>
 
 #include "eclipse/eclio_access.h"
 
@@ -19,10 +21,16 @@ const std::string egrid_expected = "an Eclipse binary grid (EGRID with GRIDHEAD,
 
 std::unique_ptr<EGrid> open_egrid(const fs::path& egrid) {
     if (!fs::is_regular_file(egrid)) throw EclipseError({egrid.string(), "", "an EGRID file", "no such file"});
-    auto file = read_checked(egrid, "", egrid_expected, [&] { return std::make_unique<EGrid>(egrid.string()); });
-    if (!file->hasKey("GRIDHEAD"))
+    // The array list first: EGrid's constructor reads GRIDHEAD's dimensions without checking that
+    // the file has one (another file type reached a vector resize of an uninitialised size).
+    const auto listing = read_checked(egrid, "", egrid_expected,
+                                      [&] { return std::make_unique<Opm::EclIO::EclFile>(egrid.string()); });
+    if (!listing->hasKey("GRIDHEAD")) {
+        const std::vector<Opm::EclIO::EclFile::EclEntry> arrays = listing->getList();
         throw EclipseError({egrid.string(), "", egrid_expected,
-                            "no GRIDHEAD (first array " + (file->arrayNames().empty() ? std::string("none") : file->arrayNames().front()) + ")"});
+                            "no GRIDHEAD (first array " + (arrays.empty() ? std::string("none") : std::get<0>(arrays.front())) + ")"});
+    }
+    auto file = read_checked(egrid, "", egrid_expected, [&] { return std::make_unique<EGrid>(egrid.string()); });
     if (file->is_radial()) throw EclipseError({egrid.string(), "GRIDHEAD", "a corner-point grid", "a radial grid"});
     return file;
 }
