@@ -1,0 +1,87 @@
+// Tubes around polylines: closed (every edge shared by two triangles in opposite directions),
+// wound outward, enclosing the volume of a prism of the polygon cross-section.
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "shapes/tube_mesh.h"
+
+namespace cutaway::shapes {
+namespace {
+
+/// Signed volume by the divergence theorem: positive when every triangle is wound outward.
+double enclosed_volume(const TriangleMesh& mesh) {
+    double six_volume = 0;
+    for (const auto& t : mesh.triangles) {
+        const grid::Point3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+        six_volume += a.x * (b.y * c.z - b.z * c.y) - a.y * (b.x * c.z - b.z * c.x) + a.z * (b.x * c.y - b.y * c.x);
+    }
+    return six_volume / 6;
+}
+
+/// Edges by position (meshes duplicate positions across rings and caps), rounded to 1e-9.
+using Key = std::pair<std::tuple<long long, long long, long long>, std::tuple<long long, long long, long long>>;
+std::tuple<long long, long long, long long> rounded(const grid::Point3& p) {
+    return {std::llround(p.x * 1e9), std::llround(p.y * 1e9), std::llround(p.z * 1e9)};
+}
+
+/// Every directed edge appears once and its reverse once: a closed, consistently wound surface.
+bool closed_and_consistent(const TriangleMesh& mesh) {
+    std::map<Key, int> directed;
+    for (const auto& t : mesh.triangles)
+        for (int e = 0; e < 3; ++e)
+            ++directed[{rounded(mesh.positions[t[e]]), rounded(mesh.positions[t[(e + 1) % 3]])}];
+    for (const auto& [edge, count] : directed) {
+        if (count != 1) return false;
+        const auto reverse = directed.find({edge.second, edge.first});
+        if (reverse == directed.end() || reverse->second != 1) return false;
+    }
+    return true;
+}
+
+double polygon_area(double radius, int sides) {
+    return 0.5 * sides * radius * radius * std::sin(2 * std::acos(-1.0) / sides);
+}
+
+TEST(TubeMesh, StraightTubeIsAClosedPrism) {
+    const TriangleMesh tube = tube_mesh({{0, 0, 0}, {0, 0, 10}}, 2.0, 12);
+    EXPECT_TRUE(closed_and_consistent(tube));
+    // 1e-9 relative: only rounding separates the mesh from the exact prism.
+    EXPECT_NEAR(enclosed_volume(tube), polygon_area(2.0, 12) * 10, 1e-9 * polygon_area(2.0, 12) * 10);
+    const grid::Box3 box = bounds(tube);
+    EXPECT_NEAR(box.min.z, 0, 1e-12);
+    EXPECT_NEAR(box.max.z, 10, 1e-12);
+    EXPECT_NEAR(box.max.x, 2, 1e-12);
+}
+
+TEST(TubeMesh, BentPathStaysClosedAndKeepsItsVolume) {
+    // A right-angle bend: the mitred joint adds and removes equal wedges, so the volume is the
+    // cross-section times the path's length (Pappus for a mitre, exact for polygon sections).
+    const TriangleMesh tube = tube_mesh({{0, 0, 0}, {0, 0, 10}, {10, 0, 10}, {10, 5, 10}}, 1.0, 16);
+    EXPECT_TRUE(closed_and_consistent(tube));
+    EXPECT_NEAR(enclosed_volume(tube), polygon_area(1.0, 16) * 25, 1e-6 * polygon_area(1.0, 16) * 25);
+}
+
+TEST(TubeMesh, NormalsPointAwayFromThePath) {
+    const TriangleMesh tube = tube_mesh({{1, 2, 3}, {1, 2, 9}}, 0.5, 8);
+    for (std::size_t i = 0; i < tube.positions.size(); ++i) {
+        const grid::Point3 &p = tube.positions[i], &n = tube.normals[i];
+        const double radial = (p.x - 1) * n.x + (p.y - 2) * n.y;  // side walls point out radially
+        const double axial = n.z * (p.z < 6 ? -1 : 1);             // caps point out of the ends
+        EXPECT_GT(radial + axial, 0) << "vertex " << i;
+    }
+}
+
+TEST(TubeMesh, RefusesDegenerateInput) {
+    EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, 0, 0}}, 1.0), std::invalid_argument);
+    EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, 0, 1}}, 0.0), std::invalid_argument);
+    EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, 0, 1}}, std::nan("")), std::invalid_argument);
+    EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, 0, 1}}, 1.0, 2), std::invalid_argument);
+    EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, std::nan(""), 1}}, 1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace cutaway::shapes
