@@ -11,7 +11,11 @@
 #include "app/commands.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
+#include "app/property_statistics.h"
 #include "app/render_options.h"
+#include "eclipse/eclipse_error.h"
+#include "eclipse/init_reader.h"
+#include "eclipse/simulator_case.h"
 #include "grid/grid_summary.h"
 #include "grid/primary_selection.h"
 #include "io/output_batch.h"
@@ -96,8 +100,32 @@ nlohmann::json wells_json(const eclipse::ReportSteps& steps) {
     return wells;
 }
 
+/// Range and percentiles of every real property held, and of every dynamic one at --time-step
+/// (read here for a simulator case: one array each), keyed by name ("NAME@step K" for dynamic ones).
+nlohmann::json property_ranges(LoadedModel& model, const InspectOptions& options) {
+    nlohmann::json ranges = nlohmann::json::object();
+    if (model.init_file) {  // a case reads INIT arrays on demand: the report lists them all when they fit
+        const std::size_t limit = gib_to_bytes(options.memory_limit_gb);
+        try {
+            eclipse::add_init_properties(model.grid, *model.init_file, eclipse::memory_left(model.grid, limit), std::nullopt);
+        } catch (const eclipse::EclipseError& e) {
+            model.warnings.push_back(std::string("static arrays not summarised: ") + e.what());
+        }
+    }
+    const grid::CornerPointGrid& grid = model.grid;
+    for (const std::string& name : grid.property_names())
+        ranges[name] = property_statistics(grid, *grid.property(name), name);
+    const int step = std::max(options.time_step, 0);
+    for (const std::string& name : grid.dynamic_property_names()) {
+        hold_property(model, name, step, gib_to_bytes(options.memory_limit_gb));
+        if (const std::vector<float>* values = grid.dynamic_property(name, std::size_t(step)))
+            ranges[name + "@step " + std::to_string(step)] = property_statistics(grid, *values, name);
+    }
+    return ranges;
+}
+
 nlohmann::json summary_json(const InspectOptions& options, const LoadedModel& model, const grid::GridSummary& s,
-                            double summary_ms) {
+                            double summary_ms, const nlohmann::json& ranges) {
     const grid::CornerPointGrid& grid = model.grid;
     nlohmann::json j;
     j["files"] = options.files;
@@ -130,6 +158,7 @@ nlohmann::json summary_json(const InspectOptions& options, const LoadedModel& mo
     j["memory"] = {{"geometry_bytes", s.geometry_bytes},
                    {"property_bytes", s.property_bytes},
                    {"geometry_bytes_per_cell", s.cells ? double(s.geometry_bytes) / double(s.cells) : 0.0}};
+    j["property_ranges"] = ranges;
     if (model.report_steps) {
         j["report_steps"] = report_steps_json(*model.report_steps);
         j["wells"] = wells_json(*model.report_steps);
@@ -159,6 +188,8 @@ void print_text(std::ostream& out, const nlohmann::json& j) {
         << " per cell, ZCORN " << j["zcorn_layout"].get<std::string>() << "), " << j["memory"]["property_bytes"]
         << " bytes properties\ntimes:        load " << j["times_ms"]["load"] << " ms, summary "
         << j["times_ms"]["summary"] << " ms\n";
+    if (!j["property_ranges"].empty())
+        out << "ranges:       active cells (render's colour range is p2..p98)\n" << property_statistics_text(j["property_ranges"]);
     if (j.contains("report_steps") && !j["report_steps"].empty())
         out << "report steps: " << j["report_steps"].size() << ", " << j["report_steps"].front()["date"].get<std::string>()
             << " (report " << j["report_steps"].front()["report"] << ") .. "
@@ -182,6 +213,8 @@ int run_inspect(const InspectOptions& options) {
     refuse_overwrites(model_input_files(options.files), outputs);
     using clock = std::chrono::steady_clock;
     LoadedModel model = load_model(options.files, gib_to_bytes(options.memory_limit_gb), std::nullopt, outputs);
+    // Ranges first: they read arrays onto the grid, which the columns then point into.
+    const nlohmann::json ranges = property_ranges(model, options);
     const std::vector<PropertyChoice> columns = property_columns(model, options);
     const grid::CornerPointGrid& grid = model.grid;
     refuse_non_finite_properties(grid);
@@ -189,7 +222,7 @@ int run_inspect(const InspectOptions& options) {
     const grid::GridSummary summary = grid::summarize(grid);
     const double summary_ms = std::chrono::duration<double, std::milli>(clock::now() - t1).count();
 
-    const nlohmann::json j = summary_json(options, model, summary, summary_ms);
+    const nlohmann::json j = summary_json(options, model, summary, summary_ms, ranges);
     // The CSV first: a failed write ends the command before a report that would look like success.
     if (!options.cells_csv.empty())
         io::write_stream(options.cells_csv, [&](std::ostream& out) { write_cells_csv(out, grid, columns); });

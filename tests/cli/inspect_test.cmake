@@ -47,3 +47,15 @@ execute_process(COMMAND ${CUTAWAY} inspect preset:nope RESULT_VARIABLE rc ERROR_
 if(rc EQUAL 0 OR NOT err MATCHES "preset:nope: expected preset:NAME with NAME one of zaphirus, petra")
   message(FATAL_ERROR "unknown preset: exit ${rc}, message '${err}'")
 endif()
+
+# Each property's range and percentiles, so a user can choose --range: ordered, p2..p98 inside min..max.
+execute_process(COMMAND ${CUTAWAY} inspect ${DATA}/grdecl/reek/reek_sim_grid.grdecl ${DATA}/grdecl/reek/reek_sim_poro.grdecl --json
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(previous -1e30)
+foreach(key min p2 p25 p50 p75 p98 max)
+  string(JSON value GET "${out}" property_ranges PORO ${key})
+  if(value LESS previous)
+    message(FATAL_ERROR "PORO ${key} ${value} below the previous statistic ${previous}")
+  endif()
+  set(previous ${value})
+endforeach()
