@@ -34,7 +34,7 @@ MIN_SILHOUETTE_PIXELS = 500
 # see-through below 0.5% of the silhouette: background pixels the model encloses (white holes
 # not connected to the panel's border; only-secondaries had 15.8-16.6%). Only-primaries panels
 # show the primaries alone inside the shell's contour, so neither check applies to them. The
-# colour bar counts as model: its dark end and glyphs are well under 1% of a panel's model pixels.
+# colour bar (its box in the render's stats) is left out of both.
 MAX_DARK_SHARE = 0.25
 DARK_LUMINANCE = 40 / 255
 MAX_SEE_THROUGH_SHARE = 0.005
@@ -43,6 +43,10 @@ MAX_SEE_THROUGH_SHARE = 0.005
 # target is open for that mode (issue 46); until it is met this bound holds the mode at the level
 # reached, so a return of the old hole (15.8-16.6%, the clamp missing where primaries hide) fails.
 MAX_SEE_THROUGH_SHARE_ONLY_SECONDARIES = 0.02
+# Print size (issue 46): at most two panels side by side (a 5000 px strip prints its text and
+# details too small), and every text, captions and the colour bars' capitals, at least 7 pt when
+# the figure is printed 182 mm wide (compose.min_text_px of the figure's width).
+MAX_COLUMNS = 2
 BACKGROUND_MIN_CHANNEL = 0.94  # as fig. 11's model share: a pixel whose every channel is this bright is background
 
 
@@ -68,6 +72,12 @@ def check_dark_and_see_through(name, figure, images, failures, np):
         if is_only_primaries(panel):
             continue
         background = image.min(axis=2) >= BACKGROUND_MIN_CHANNEL
+        # The colour bar is not the model: its glyphs' counters would count as holes, its ink as dark.
+        bar = np.zeros_like(background)
+        if panel.get("colour_bar_box"):
+            x0, y0, x1, y1 = panel["colour_bar_box"]
+            bar[int(y0):int(np.ceil(y1)) + 1, int(x0):int(np.ceil(x1)) + 1] = True
+        background |= bar
         model = ~background
         outside, _ = ndimage.label(background)
         border = set(np.unique(np.concatenate([outside[0], outside[-1], outside[:, 0], outside[:, -1]]))) - {0}
@@ -90,6 +100,22 @@ def check_dark_and_see_through(name, figure, images, failures, np):
         elif see_through >= MAX_SEE_THROUGH_SHARE:
             print(f"OPEN (issue 46): {name} panel {index}: see-through {100 * see_through:.2f}% is above the "
                   f"{100 * MAX_SEE_THROUGH_SHARE:.1f}% target for this mode")
+
+
+def check_print_size(name, figure, failures):
+    """Columns and text heights of one composed figure against the print-size targets."""
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    sys.path.insert(0, os.path.join(REPO, "experiments", "common"))
+    import compose
+    width, panel_width = figure.get("width_px", 0), figure.get("panel_size", [0])[0]
+    needed = compose.min_text_px(width)
+    print(f"{name}: {width} px wide, captions {figure.get('text_px')} px, colour bar capitals "
+          f"{figure.get('colour_bar_text_px')} px (7 pt at 182 mm: {needed} px)")
+    if width > compose.figure_width_px(MAX_COLUMNS, panel_width):
+        fail(failures, f"{name}: {width} px wide, more than {MAX_COLUMNS} panels of {panel_width} px side by side")
+    for what in ("text_px", "colour_bar_text_px"):
+        if figure.get(what, 0) < needed:
+            fail(failures, f"{name}: {what} {figure.get(what)} px, below 7 pt at 182 mm ({needed} px)")
 
 
 def main():
@@ -120,6 +146,8 @@ def main():
             fail(failures, f"{name}: panels {width} px wide, expected at least {MIN_PANEL_WIDTH} (print resolution)")
         image = plt.imread(os.path.join(figures, name + ".png"))[..., :3]
         panels_of[name] = image
+    for name, figure in sorted(numbers.items()):
+        check_print_size(name, figure, failures)
     # The composed figure holds panels at native size: cut them back out by the recorded layout.
     def panels(name):
         image, figure = panels_of[name], numbers[name]

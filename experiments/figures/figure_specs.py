@@ -15,8 +15,9 @@ SECOND_VIEW = ("--camera", 215, 45, 0)  # the far side, higher: the paper's seco
 TWO_PROPERTIES_PORO = (0.30, 0.40)
 
 
-def figure_specs(model, steps):
-    """Figures for `model` (preset:NAME); `steps`: SWAT time steps shown in figure 11."""
+def figure_specs(model, steps, swat_range):
+    """Figures for `model` (preset:NAME); `steps`: SWAT time steps shown in figure 11, all coloured
+    over `swat_range` (LO, HI) so one colour means one saturation in every panel."""
     return [
         {"name": "fig07_borders", "title": "Fig. 7: threshold vs ray-cast border lines", "metrics": True, "zoom": True,
          "caption_number": "border_line_width",
@@ -35,7 +36,8 @@ def figure_specs(model, steps):
                     ("turned to azimuth 80: cut follows", ["--camera", 80, 30, 0]),
                     ("turned to azimuth 80: cut frozen", ["--camera", 80, 30, 0, "--freeze-camera", 35, 30, 0])]},
         {"name": "fig11_aperture180_steps", "title": "Fig. 11: aperture 180 degrees over SWAT time steps",
-         "panels": [(f"SWAT step {s}", ["--aperture-180", "--property", "SWAT", "--step", s]) for s in steps]},
+         "panels": [(f"SWAT step {s}", ["--aperture-180", "--property", "SWAT", "--step", s, "--colour-range", *swat_range])
+                    for s in steps]},
         {"name": "fig12_hidden_lines", "title": "Fig. 12: internal lines of secondaries shown / hidden", "zoom": True,
          "panels": [("internal lines", []), ("hidden internal lines", ["--hide-internal-lines"])]},
         {"name": "fig13_silhouette", "title": "Fig. 13: silhouette of the primary cluster (cyan, doubled)",

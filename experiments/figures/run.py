@@ -32,7 +32,7 @@ FIGURES = ("fig07_borders", "fig08_mean_filter", "fig09_ssao_saturation", "fig10
 # Fig. 15's two PORO windows: the high-porosity channels and the tightest rock (both
 # spatially coherent clusters in the generated models, as the paper's ranges are).
 FIG15_RANGES = (("PORO 0.30-0.40", (0.30, 0.40)), ("PORO 0.00-0.12", (0.0, 0.12)))
-PANEL_NUMBERS = ("stages_ms", "primary_cells", "primary_exposure", "context_kept", "border_line_width", "total_over_baseline")
+PANEL_NUMBERS = ("colour_bar_box", "stages_ms", "primary_cells", "primary_exposure", "context_kept", "border_line_width", "total_over_baseline")
 
 
 def render_figure(exp, spec, model, size, scratch, quick_options):
@@ -41,14 +41,17 @@ def render_figure(exp, spec, model, size, scratch, quick_options):
     size = spec.get("size", size)
     model = spec.get("model", model)
     rows, numbers = [], []
-    for r, row in enumerate(spec.get("rows") or [spec["panels"]]):
+    spec_rows = spec.get("rows") or [spec["panels"]]
+    # The colour bar's text prints at 7 pt too: its capitals are sized for the composed figure's width.
+    text_px = compose.min_text_px(compose.figure_width_px(compose.columns_for(spec_rows), size[0]))
+    for r, row in enumerate(spec_rows):
         rows.append([])
         for index, panel in enumerate(row):
             caption, options = panel[0], panel[1]
             panel_model = panel[2] if len(panel) > 2 else model
             image = os.path.join(scratch, f"{spec['name']}_{r}_{index}.png")
             camera = () if "--camera" in options else figure_specs.CAMERA  # fig. 10 and 14 set their own
-            stats = exp.render(panel_model, *camera, *options, "--size", *size, *quick_options, image=image,
+            stats = exp.render(panel_model, *camera, *options, "--size", *size, "--text-height", text_px, *quick_options, image=image,
                                metrics=spec.get("metrics", False))
             numbers.append({"caption": caption, "model": panel_model, "options": [str(o) for o in options],
                             **{k: stats[k] for k in PANEL_NUMBERS if k in stats}})
@@ -60,7 +63,17 @@ def render_figure(exp, spec, model, size, scratch, quick_options):
             rows[-1].append((caption, image))
             print(f"  {spec['name']}: {caption.splitlines()[0]}: total {stats['stages_ms']['total']:.1f} ms")
     layout = compose.compose(rows, spec["title"], exp.path(spec["name"] + ".png"), zoom=spec.get("zoom", False))
-    return {"title": spec["title"], "size": list(size), **layout, "panels": numbers}
+    return {"title": spec["title"], "size": list(size), "colour_bar_text_px": text_px, **layout, "panels": numbers}
+
+
+def common_colour_range(exp, model, prop, steps):
+    """(LO, HI) spanning `prop`'s 2nd..98th percentiles at every step (`cutaway inspect --json`)."""
+    lows, highs = [], []
+    for step in steps:
+        ranges = exp.inspect(model, "--time-step", step)["property_ranges"][f"{prop}@step {step}"]
+        lows.append(ranges["p2"])
+        highs.append(ranges["p98"])
+    return min(lows), max(highs)
 
 
 def main():
@@ -78,7 +91,8 @@ def main():
     steps = (0, 2) if quick else (0, 1, 2, 3)
     presets = ("zaphirus", "zaphirus", "petra", "petra") if quick else cx.PRESETS
     layers_model = "preset:zaphirus" if quick else "preset:opharine"
-    specs = figure_specs.figure_specs(model, steps) + [
+    swat_range = common_colour_range(exp, model, "SWAT", steps)
+    specs = figure_specs.figure_specs(model, steps, swat_range) + [
         figure_specs.models_figure(presets, grid_size),
         figure_specs.layers_figure(layers_model, FIG15_RANGES, grid_size)]
     numbers = {}

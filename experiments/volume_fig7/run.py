@@ -82,7 +82,7 @@ def main():
                  f"(dashed: paper's GPU 14.99 ms / CPU 9486 ms)", fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(figure_path, dpi=120)
+    fig.savefig(figure_path, dpi=150)
     print("wrote", os.path.relpath(figure_path, vx.REPO))
 
 

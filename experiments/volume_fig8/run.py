@@ -37,7 +37,7 @@ def plot(result, figure_path):
     ax.set_title(f"Fig. 8: fixed viewpoint, growing cube, {size}x{size} px", fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(figure_path, dpi=120)
+    fig.savefig(figure_path, dpi=150)
     fig.savefig(os.path.splitext(figure_path)[0] + ".pdf")
     print("wrote", os.path.relpath(figure_path, vx.REPO))
 

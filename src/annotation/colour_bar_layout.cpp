@@ -70,9 +70,9 @@ ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int he
         throw std::invalid_argument("colour bar: a logarithmic scale needs a range above 0, found [" + std::to_string(label.min) +
                                     ", " + std::to_string(label.max) + "]");
     ColourBarLayout layout;
-    // Capitals 2% of the image height (issue 15's minimum; more would take width from the model),
-    // never below stb's 7 px.
-    const float s = std::max(1.0f, 0.0201f * float(height) / cap_height_px);
+    // Capitals 2% of the image height (issue 15's minimum; more would take width from the model)
+    // or the label's minimum if larger, never below stb's 7 px.
+    const float s = std::max(1.0f, std::max(0.0201f * float(height), label.min_text_px) / cap_height_px);
     layout.text_scale = s;
     const float margin = 6 * s, gap = 3 * s, bar_width = 8 * s, mark_length = 3 * s;
 

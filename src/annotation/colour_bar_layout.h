@@ -28,6 +28,9 @@ struct ColourBarLabel {
         float max = 0;
     };
     std::optional<Span> primary_range{};
+    /// Capitals at least this tall, pixels (0: 2% of the image height): a figure printed smaller
+    /// than its pixels asks for more so its text stays legible (7 pt at the printed width).
+    float min_text_px = 0;
 };
 
 struct ColourBarTick {

@@ -18,6 +18,7 @@
 #include "app/render_report.h"
 #include "app/run_context.h"
 #include "app/run_context_json.h"
+#include "annotation/colour_bar_layout.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cutaway_renderer.h"
@@ -224,6 +225,11 @@ int run_render(const RenderOptions& options) {
     stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set
     stats["property"] = {{"name", property.label}, {"colour_range", {property.colour_range.min, property.colour_range.max}},
                          {"colour_scale", property.log_scale ? "log" : "linear"}, {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
+    if (settings.colour_bar) {  // image pixels, rows from the top: what an image check leaves out of the model
+        const annotation::PixelRect bar =
+            annotation::layout_colour_bar(property.colour_bar_label(!selected_by), options.width, options.height).bounds();
+        stats["colour_bar_box"] = {bar.x0, bar.y0, bar.x1, bar.y1};
+    }
     stats["configuration"] = options.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;

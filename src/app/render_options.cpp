@@ -35,6 +35,16 @@ std::string names_of(const std::vector<std::string>& names) {
     return text.empty() ? "none" : text;
 }
 
+/// --colour-range LO HI as the colour map's range: LO below HI, both above 0 on a logarithmic scale.
+grid::PrimaryRange given_colour_range(const std::vector<float>& range, bool log_scale) {
+    if (!(range[0] < range[1]))
+        throw std::invalid_argument("--colour-range " + std::to_string(range[0]) + " " + std::to_string(range[1]) +
+                                    ": expected LO below HI");
+    if (log_scale && !(range[0] > 0))
+        throw std::invalid_argument("--colour-range: a logarithmic scale needs LO above 0 (or --scale linear)");
+    return {range[0], range[1]};
+}
+
 }  // namespace
 
 gl::ContextOptions RenderOptions::context_options() const {
@@ -98,7 +108,8 @@ nlohmann::json RenderOptions::describe() const {
             {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius}, {"ssao_strength", s.ssao_strength},
             {"ssao_resolution", s.ssao_half_resolution ? "half" : "full"}, {"saturation", s.saturation},
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
-            {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)}, {"scale", scale},
+            {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)},
+            {"scale", scale}, {"colour_range", colour_range}, {"text_height_px", text_height_px},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
             {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
 }
@@ -159,6 +170,16 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     add_choice(c, "--only", o.only, pipeline::choices_of(pipeline::OnlyLayer{}), "layers drawn");
     add_choice(c, "--scale", o.scale, pipeline::choices_of(pipeline::ColourScale{}),
                "colour scale: auto (logarithmic for permeabilities, PERM*; linear otherwise) | linear | log");
+    c.add_option("--colour-range", o.colour_range,
+                 "LO HI of the colour map (default: the property's 2nd..98th percentile); one range for panels or "
+                 "steps that must compare")
+        ->expected(2)
+        ->check(finite_in(-FLT_MAX, FLT_MAX));
+    // 200 px capitals already fill a 4K image's colour bar with a handful of digits.
+    c.add_option("--text-height", o.text_height_px,
+                 "capitals of the colour bar's text at least this tall, pixels (default: 2% of the image height); "
+                 "7 pt at a figure's printed width W mm is 2.47 / W of its width in pixels")
+        ->check(finite_in(0, 200, "pixels"));
     c.add_flag("!--no-colour-bar", o.settings.colour_bar, "leave out the colour bar");
 }
 
@@ -224,6 +245,7 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
 
 annotation::ColourBarLabel PropertyChoice::colour_bar_label(bool mark_primary_range) const {
     annotation::ColourBarLabel bar{label, colour_range.min, colour_range.max, annotation::property_unit(name, unit_system), log_scale};
+    bar.min_text_px = text_height_px;
     if (mark_primary_range) bar.primary_range = annotation::ColourBarLabel::Span{primary_range.min, primary_range.max};
     return bar;
 }
@@ -279,6 +301,8 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
         choice.colour_range = grid::active_quantile_range(grid, choice.values(), choice.name, colour_quantiles[0],
                                                           colour_quantiles[1], false);
     }
+    choice.text_height_px = options.text_height_px;
+    if (!options.colour_range.empty()) choice.colour_range = given_colour_range(options.colour_range, choice.log_scale);
     choice.unit_system = grid.metadata().unit_system;
     return choice;
 }

@@ -41,6 +41,8 @@ struct RenderOptions {
     std::string contours = "on";
     std::string only = "both";
     std::string scale = "auto";  ///< pipeline::ColourScale by name
+    std::vector<float> colour_range;  ///< LO HI of the colour map (empty: the values' 2nd..98th percentile)
+    float text_height_px = 0;         ///< capitals of the image's text at least this tall (0: 2% of the height)
     std::string seeds = "boxes";
     std::string draw = "visible";
     std::string stage2_passes = "deferred";
@@ -96,6 +98,7 @@ struct PropertyChoice {
     std::vector<float> owned;         ///< storage for a derived property (layer index)
     grid::PrimaryRange colour_range;  ///< colour_quantiles of the active values (positive ones on a log scale)
     bool log_scale = false;           ///< colours by log10 of the value (--scale)
+    float text_height_px = 0;         ///< --text-height
     grid::PrimaryRange primary_range;
     std::string unit_system;          ///< the grid's (GridMetadata::unit_system), for the unit
     const std::vector<float>& values() const { return external ? *external : owned; }
