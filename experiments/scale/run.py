@@ -194,6 +194,8 @@ def main():
     exp = cx.Experiment(__doc__, "scale.json", ["scale.png"], add_options=lambda parser: parser.add_argument(
         "--replot", action="store_true", help="only the plot, from the stored scale.json (no measuring)"))
     if exp.args.replot:
+        if exp.stored() is None:
+            cx.options.refuse("--replot", f"expected the data of an earlier run, found no {cx.exio.shown(exp.path('scale.json'))}")
         plot(exp, exp.stored())
         return
     exp.run(measure, report, plot)
