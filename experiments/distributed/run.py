@@ -260,7 +260,8 @@ def report(exp, document):
         "imbalance, and waiting for a core) is in brackets.",
         headline=f"{memory_model.removeprefix('preset:')} frame on 1 / 2 / 4 ranks: "
                  + " / ".join(md.ms(frames[n]) for n in sorted(frames)) + " ms")
-    result.text(f"What {cores} cores can and cannot show: with one llvmpipe thread per rank, wall-clock speed-up is "
+    result.section(f"What {cores} cores can and cannot show")
+    result.text(f"With one llvmpipe thread per rank, wall-clock speed-up is "
                 f"bounded by {cores}, and runs with more ranks than cores include waiting for a core. What the runs do "
                 "show: each rank's share of the model (cells, faces, slab memory) falls as 1/N, the object-space stage "
                 "time of the slowest rank falls with its share while it has a core of its own, and the exchange costs "
