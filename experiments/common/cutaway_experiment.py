@@ -1,12 +1,12 @@
-"""Shared plumbing of the cutaway experiments (table1, stage_over_path, figures): the command line,
-where outputs go, running `cutaway render` and `bench_cutaway`, machine context, and one plot style.
+"""Shared plumbing of the experiments: the command line (experiment_options.py), where outputs go,
+running `cutaway render` and `bench_cutaway`, machine context, the generated report
+(report_markdown.py), and one plot style.
 
-Every experiment script accepts:
-  --quick        small images, few poses (the whole run_all --quick stays under 5 minutes)
-  --force        recompute even when the outputs already exist (otherwise it skips)
-  --build DIR    build folder holding bin/cutaway and bin/bench_cutaway (default: <repo>/build)
-Full runs write results/<experiment>/ and paper_figures/; --quick runs write results/quick/<experiment>/
-and paper_figures/quick/ so a smoke test never overwrites the reference results.
+Every experiment script accepts --quick, --force, --report-only, --build DIR, --out DIR and
+--data DIR (experiment_options.py says what each does). Full runs write DIR/results/<experiment>/
+and DIR/paper_figures/; --quick runs write DIR/results/quick/<experiment>/ and
+DIR/paper_figures/quick/ so a smoke test never overwrites the reference results. <experiment> is
+the name of the folder holding the script.
 """
 import argparse
 import json
@@ -14,36 +14,45 @@ import os
 import subprocess
 import sys
 import tempfile
+import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
-import volume_experiment as vx  # noqa: E402  (matplotlib import, git revision, JSON writing)
+import experiment_io as exio
+import experiment_options as options
+import report_markdown
 
-REPO = vx.REPO
+REPO = exio.REPO
 PRESETS = ("zaphirus", "petra", "opharine", "sapphire")
 STAGES = ("cut_surface", "culling", "secondary", "primary", "ssao", "mean_filter", "post")
 STAGE_LABELS = {"cut_surface": "stage 1: cut surface", "culling": "culling (visible path)", "secondary": "stage 2: secondaries",
                 "primary": "stage 3: primaries", "ssao": "SSAO", "mean_filter": "mean filter",
                 "post": "composite (post)", "total": "total"}
-write_json = vx.write_json
+write_json = exio.write_json
+TOOLS = {"cutaway": "cutaway", "bench": "bench_cutaway"}
 
 
 class Experiment:
-    """Paths and tools of one experiment run: `results` (folder for JSON/markdown), `figures`
-    (folder for PNGs), `quick`, `force`, and the two executables."""
+    """Paths and tools of one experiment run: `name` (the script's folder), `out` (the --out folder), `results` (folder for
+    the JSON and README), `figures` (folder for PNGs), `data` (the shared-data folder, checked once
+    measuring starts, when `needs_data`), `quick`, `force`, `report_only`, `args`, and the executables in `tools`.
+    `data_file` is the JSON the report is generated from; `outputs` the files whose existence
+    means the run is done (the README is always one)."""
 
-    def __init__(self, name, doc, outputs):
-        parser = argparse.ArgumentParser(description=doc.splitlines()[0])
-        parser.add_argument("--quick", action="store_true", help="small images, few poses (smoke test)")
-        parser.add_argument("--force", action="store_true", help="recompute even if the outputs exist")
-        parser.add_argument("--build", default=os.path.join(REPO, "build"), help="build folder with bin/")
-        args = parser.parse_args()
-        self.name, self.quick, self.force = name, args.quick, args.force
-        self.cutaway = os.path.join(args.build, "bin", "cutaway")
-        self.bench = os.path.join(args.build, "bin", "bench_cutaway")
-        base = os.path.join(REPO, "results", "quick") if self.quick else os.path.join(REPO, "results")
-        self.results = os.path.join(base, name)
-        self.figures = os.path.join(REPO, "paper_figures", "quick") if self.quick else os.path.join(REPO, "paper_figures")
-        self.outputs = [self.path(o) for o in outputs]
+    def __init__(self, doc, data_file, outputs=(), tools=("cutaway", "bench"), needs_data=False, add_options=None):
+        parser = options.add_common_options(argparse.ArgumentParser(description=doc.splitlines()[0]))
+        if add_options:
+            add_options(parser)
+        args = self.args = parser.parse_args()
+        self.name = os.path.basename(os.path.dirname(os.path.abspath(sys.modules["__main__"].__file__)))
+        self.quick, self.force, self.report_only = args.quick, args.force, args.report_only
+        out = self.out = options.output_root(args.out)
+        self.results = os.path.join(options.results_base(out, self.quick), self.name)
+        self.figures = options.figures_folder(out, self.quick)
+        self.needs_data, self.data = needs_data, None
+        self.tools = {key: os.path.join(args.build, "bin", TOOLS[key]) for key in tools}
+        self.cutaway, self.bench = self.tools.get("cutaway"), self.tools.get("bench")
+        self.data_file = data_file
+        self.outputs = [self.path(o) for o in (data_file, *outputs, "README.md")]
+        self.load_at_start = os.getloadavg()
         # llvmpipe's thread count is part of every timing: set it explicitly and record it.
         os.environ.setdefault("LP_NUM_THREADS", str(os.cpu_count() or 1))
 
@@ -52,15 +61,51 @@ class Experiment:
         return os.path.join(self.figures if output.endswith(".png") else self.results, output)
 
     def up_to_date(self):
+        """True (and says so) when every output exists and --force was not given; otherwise checks
+        the shared data (when needed) and the tools, and makes the output folders."""
         if not self.force and all(os.path.exists(p) for p in self.outputs):
-            print("up to date (use --force to recompute):", ", ".join(os.path.relpath(p, REPO) for p in self.outputs))
+            print("up to date (use --force to recompute):", ", ".join(exio.shown(p) for p in self.outputs))
             return True
-        for tool in (self.cutaway, self.bench):
+        if self.needs_data:
+            self.data = options.data_folder(self.args.data)
+        for tool in self.tools.values():
             if not os.access(tool, os.X_OK):
-                raise SystemExit(f"{tool}: not built (cmake --build BUILD --target cutaway bench_cutaway)")
+                options.refuse("--build", f"expected {tool} (cmake --build BUILD --target {os.path.basename(tool)}), found none")
         os.makedirs(self.results, exist_ok=True)
         os.makedirs(self.figures, exist_ok=True)
         return False
+
+    def stored(self):
+        """The data of an earlier run (the JSON in results/<name>/), or None."""
+        path = self.path(self.data_file)
+        return exio.read_json(path) if os.path.exists(path) else None
+
+    def run(self, measure, report, draw=None):
+        """The experiment's life: --report-only rewrites the README from the stored JSON; otherwise,
+        unless up to date, `measure(self)` returns the document (None: skipped, nothing written),
+        written as the JSON, then `draw(self, document)` makes the figures and the README is written.
+        `report(self, document)` returns a report_markdown.Report."""
+        if self.report_only:
+            document = self.stored()
+            if document is None:
+                options.refuse("--report-only", f"expected the data of an earlier run, found no {exio.shown(self.path(self.data_file))}")
+        elif self.up_to_date():
+            return
+        else:
+            document = measure(self)
+            if document is None:
+                return
+            write_json(self.path(self.data_file), document)
+            if draw:
+                draw(self, document)
+        self.write_report(report(self, document), document)
+
+    def write_report(self, report, document):
+        """results/<name>/README.md from `report` and the document's context."""
+        path = self.path("README.md")
+        with open(path, "w") as f:
+            f.write(report_markdown.markdown(report, self.name, document, self.results, self.path(self.data_file)))
+        exio.wrote(path)
 
     def render(self, model, *options, image=None, metrics=False):
         """`cutaway render MODEL OPTIONS`; returns its stats object. `image`: keep the PNG there."""
@@ -89,11 +134,15 @@ class Experiment:
                 return json.load(f)
 
     def context(self, stats=None):
-        """Where and how the run was measured (from a render's stats or a benchmark's context)."""
+        """Where and how the run was measured (from a render's stats or a benchmark's context), with
+        the date and the machine's load average at the start of the run and now (call it once
+        the measuring is over)."""
         stats = stats or {}
         return {"gl_renderer": stats.get("gl_renderer"), "lp_num_threads": os.environ.get("LP_NUM_THREADS", "unset"),
-                "git_revision": vx.git_revision(), "cpu_count": os.cpu_count(), "cpu_model": cpu_model(),
-                "uname": " ".join(os.uname()), "quick": self.quick}
+                "git_revision": exio.git_revision(), "cpu_count": os.cpu_count(), "cpu_model": cpu_model(),
+                "uname": " ".join(os.uname()), "quick": self.quick, "date": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
+                "memory_bytes": os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES"),
+                "load_average_at_start": list(self.load_at_start), "load_average_at_end": list(os.getloadavg())}
 
 
 def cpu_model():
@@ -170,7 +219,7 @@ def cutaway_runs(document):
 
 def pyplot():
     """matplotlib.pyplot (Agg) with the experiments' one style."""
-    plt = vx.require_matplotlib()
+    plt = exio.require_matplotlib()
     # 7 x 4 inches at 150 dpi: 1050 px wide, and 9 pt text still 9 pt when printed 182 mm wide.
     plt.rcParams.update({"figure.figsize": (7, 4), "figure.dpi": 150, "savefig.dpi": 150, "axes.grid": True, "grid.alpha": 0.3,
                          "axes.spines.top": False, "axes.spines.right": False, "font.size": 9,
@@ -183,4 +232,4 @@ def save_figure(fig, path):
     fig.tight_layout()
     fig.savefig(path)
     fig.savefig(os.path.splitext(path)[0] + ".pdf")
-    print("wrote", os.path.relpath(path, REPO))
+    exio.wrote(path)

@@ -2,7 +2,7 @@
 """Distributed: one cutaway frame across 1, 2 and 4 MPI ranks (strong and weak scaling, memory per rank).
 
 Interface (for experiments/run_all):
-  experiments/distributed/run.py [--quick] [--force] [--build DIR]
+  experiments/distributed/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
 Writes results/distributed/distributed.json (every run's stats.json summary: per-rank cells, stage
 medians, allreduce and IceT times, bytes per frame, peak and resident memory per rank; machine
 context) and results/distributed/README.md (tables, what 2 cores can and cannot show, a model of a
@@ -26,6 +26,7 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
+import report_markdown as md  # noqa: E402
 
 RANKS = (1, 2, 4)
 LARGEST_MODEL, LARGEST_STRATEGY = "preset:scale-100m", "frustum-sweep"
@@ -75,16 +76,16 @@ def geometry_ms(stages):
 
 
 def series(exp, model, size, repeat, scratch, label):
+    """The single process, then 1, 2, 4 ranks on one model; returns the rows and the last stats."""
     rows = []
     stats, wall = run(exp, model, 0, size, repeat, scratch)
-    context = {**exp.context(stats), "lp_num_threads": MPI_ENV["LP_NUM_THREADS"], "gl_version": stats.get("gl_version")}
     rows.append({**summary(stats, wall, 0), "note": "single process, no mpirun"})
     for ranks in RANKS:
         stats, wall = run(exp, model, ranks, size, repeat, scratch)
         rows.append(summary(stats, wall, ranks))
         print(f"{label} {model} {ranks} ranks: {stats['stages_ms']['total']:.0f} ms, allreduce "
               f"{rows[-1]['allreduce_ms']:.1f} ms, composite {rows[-1]['composite_ms']:.1f} ms", flush=True)
-    return rows, context
+    return rows, stats
 
 
 def weak_models(exp, dims_list, scratch):
@@ -101,37 +102,37 @@ def mb(value):
     return f"{value / 2**20:.0f}"
 
 
-def table(rows, title):
-    lines = [f"### {title}", "", "| ranks | active cells (max per rank) | frame ms (rank 0) | slowest rank's cut+culling+stage 2+3 ms | "
-             "cut allreduce ms (wait before it) | IceT composite ms (wait before it) | screen-space ms (rank 0) | bytes sent / frame (IceT, all ranks) | "
-             "resident MB after frames (max rank) | wall s |", "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"]
+SCALING_HEADER = ["ranks", "active cells (max per rank)", "frame ms (rank 0)", "slowest rank's cut+culling+stage 2+3 ms",
+                  "cut allreduce ms (wait before it)", "IceT composite ms (wait before it)", "screen-space ms (rank 0)",
+                  "bytes sent / frame (IceT, all ranks)", "resident MB after frames (max rank)", "wall s"]
+
+
+def scaling_rows(rows):
+    """One table row per run of a scaling series (SCALING_HEADER's columns)."""
+    table = []
     for r in rows:
         s = r["stages_ms"]
         screen = s.get("ssao", 0) + s.get("post", 0) + s.get("mean_filter", 0)
         if r["ranks"] == 0:
-            lines.append(f"| 1 (no MPI) | {r['active_cells']:,} | {s['total']:.0f} | {geometry_ms(s):.0f} | - | - | "
-                         f"{screen:.0f} | - | - | {r['command_wall_s']:.1f} |")
+            table.append(["1 (no MPI)", f"{r['active_cells']:,}", f"{s['total']:.0f}", f"{geometry_ms(s):.0f}", "-", "-",
+                          f"{screen:.0f}", "-", "-", f"{r['command_wall_s']:.1f}"])
             continue
-        lines.append(f"| {r['ranks']} | {r['active_cells']:,} ({r['max_rank_active_cells']:,.0f}) | {s['total']:.0f} | "
-                     f"{r['max_rank_geometry_ms']:.0f} | {r['allreduce_ms']:.1f} ({r['allreduce_wait_ms']:.0f}) | "
-                     f"{r['composite_ms']:.1f} ({r['composite_wait_ms']:.0f}) | {screen:.0f} | "
-                     f"{r['bytes_per_frame']['icet_sent_all_ranks'] / 1e6:.1f} MB | {mb(r['max_rank_rss_after_frames'])} | "
-                     f"{r['command_wall_s']:.1f} |")
-    return lines
+        table.append([r["ranks"], f"{r['active_cells']:,} ({r['max_rank_active_cells']:,.0f})", f"{s['total']:.0f}",
+                      f"{r['max_rank_geometry_ms']:.0f}", f"{r['allreduce_ms']:.1f} ({r['allreduce_wait_ms']:.0f})",
+                      f"{r['composite_ms']:.1f} ({r['composite_wait_ms']:.0f})", f"{screen:.0f}",
+                      f"{r['bytes_per_frame']['icet_sent_all_ranks'] / 1e6:.1f} MB", mb(r["max_rank_rss_after_frames"]),
+                      f"{r['command_wall_s']:.1f}"])
+    return table
 
 
-def memory_table(rows):
-    lines = ["| ranks | per rank: active cells | primary cells | slab geometry MB | renderer GPU buffers MB | "
-             "resident MB after frames | peak resident MB (includes loading) |",
-             "|---|---:|---:|---:|---:|---:|---:|"]
-    for r in rows:
-        if r["ranks"] == 0:
-            continue
-        for p in r["per_rank"]:
-            lines.append(f"| {r['ranks']} (rank {p['rank']}) | {p['active_cells']:,.0f} | {p['primary_cells']:,.0f} | "
-                         f"{mb(p['block_geometry_bytes'])} | "
-                         f"{mb(p['gpu_memory_bytes'])} | {mb(p['rss_bytes_after_frames'])} | {mb(p['peak_rss_bytes'])} |")
-    return lines
+MEMORY_HEADER = ["ranks", "per rank: active cells", "primary cells", "slab geometry MB", "renderer GPU buffers MB",
+                 "resident MB after frames", "peak resident MB (includes loading)"]
+
+
+def memory_rows(rows):
+    return [[f"{r['ranks']} (rank {p['rank']})", f"{p['active_cells']:,.0f}", f"{p['primary_cells']:,.0f}",
+             mb(p["block_geometry_bytes"]), mb(p["gpu_memory_bytes"]), mb(p["rss_bytes_after_frames"]), mb(p["peak_rss_bytes"])]
+            for r in rows if r["ranks"] != 0 for p in r["per_rank"]]
 
 
 def cluster_model(strong, size):
@@ -166,7 +167,6 @@ def cluster_model(strong, size):
 def cluster_text(m):
     gb = 2**30
     return [
-        "## Model: a 1-billion-cell frame on a cluster", "",
         f"Assume {m['ranks']} ranks (64 nodes x 4 GPUs, one rank per GPU) and a 1920x1080 frame.", "",
         f"- Cells per rank: {m['cells_per_rank'] / 1e6:.1f} M (K, J or I slabs; a 1000 x 1000 x 1000 grid has 1000 "
         "layers, so K slabs allow up to 1000 ranks).",
@@ -192,7 +192,7 @@ def cluster_text(m):
         "(scaled per pixel from this run), a few ms on a GPU. The frame time is then max over ranks of the "
         "object-space work + allreduce + IceT + rank 0's screen-space passes; the allreduce and IceT stay bounded "
         "as P grows, the object-space work falls as 1/P.",
-        "", "## Slurm", "",
+        "", "Slurm:", "",
         "```sh",
         "# 64 nodes x 4 GPUs, one rank per GPU; each rank's EGL device is the one GPU Slurm binds to it",
         "srun --mpi=pmix --nodes=64 --ntasks-per-node=4 --gpus-per-task=1 --gpu-bind=single:1 \\",
@@ -201,24 +201,22 @@ def cluster_text(m):
         "```", ""]
 
 
-def main():
-    exp = cx.Experiment("distributed", __doc__, ["distributed.json", "README.md"])
-    if exp.up_to_date():
-        return
+def measure(exp):
+    """Strong and weak scaling, the largest model, the cluster model; None (skipped) without MPI."""
     if not shutil.which("mpirun"):
         raise SystemExit("mpirun not found (apt-get install openmpi-bin; build with CUTAWAY_MPI=ON)")
     cache = os.path.join(os.path.dirname(os.path.dirname(exp.cutaway)), "CMakeCache.txt")
     if os.path.exists(cache) and "CUTAWAY_MPI:BOOL=OFF" in open(cache).read():
-        print(f"skipped: {os.path.relpath(cache, cx.REPO)} says CUTAWAY_MPI=OFF (this cutaway refuses mpirun)")
-        return
+        print(f"skipped: {cx.exio.shown(cache)} says CUTAWAY_MPI=OFF (this cutaway refuses mpirun)")
+        return None
     size = "480x270" if exp.quick else "1920x1080"
     repeat = 1 if exp.quick else 3
     strong_models = ["preset:petra"] if exp.quick else ["preset:sapphire", "preset:scale-1m"]
     weak_dims = [(30, 30, 4), (30, 30, 8), (30, 30, 16)] if exp.quick else [(100, 125, 10), (100, 125, 20), (100, 125, 40)]
     with tempfile.TemporaryDirectory(prefix="cutaway-distributed-") as scratch:
-        strong, context = {}, None
+        strong = {}
         for model in strong_models:
-            strong[model], context = series(exp, model, size, repeat, scratch, "strong")
+            strong[model], stats = series(exp, model, size, repeat, scratch, "strong")
         weak = []
         for ranks, path in zip(RANKS, weak_models(exp, weak_dims, scratch)):
             stats, wall = run(exp, path, ranks, size, repeat, scratch)
@@ -229,46 +227,68 @@ def main():
             # The O(pixels) frustum union: one frustum per primary would take minutes for 931K primaries.
             stats, wall = run(exp, LARGEST_MODEL, 4, size, 1, scratch, LARGEST_STRATEGY)
             largest = {**summary(stats, wall, 4), "model": LARGEST_MODEL, "strategy": LARGEST_STRATEGY}
-    memory_model = strong_models[-1]
-    model = cluster_model(strong[memory_model], size)
-    context["load_average_1_5_15_min_at_end"] = os.getloadavg()
-    cx.write_json(exp.path("distributed.json"), {"experiment": "distributed", "size": size, "context": context,
-                                                  "mpi_environment": MPI_ENV, "strong": strong, "weak": weak,
-                                                  "largest_across_4_ranks": largest, "cluster_model": model})
-    lines = [f"# Distributed cutaway frame: 1, 2, 4 MPI ranks ({context['gl_renderer']}, LP_NUM_THREADS=1 per rank, {size})",
-             "", f"Generated by experiments/distributed/run.py; git {context['git_revision']}; {context['cpu_count']} cores; "
-             f"strategy frustum; medians of the timed frames; load average at the end {context['load_average_1_5_15_min_at_end'][0]:.1f} "
-             "(other jobs on this shared machine inflate the times: compare rows as ratios). Each row is `mpirun --oversubscribe -np N cutaway render ...` "
-             "(the first row the single-process command). Frame ms is rank 0's fenced total (it waits for the slowest rank "
-             "before the allreduce and the composite). The allreduce and IceT columns time the MPI and IceT calls alone, "
-             "after a barrier; the barrier's wait (load imbalance, and on 2 cores waiting for a core) is in brackets.", "",
-             "What 2 cores can and cannot show: with one llvmpipe thread per rank, 2 ranks use both cores and 4 ranks "
-             "share them two to a core, so wall-clock speed-up is bounded by 2 and the 4-rank times include waiting for "
-             "a core. What the runs do show: each rank's share of the model (cells, faces, slab memory) falls as 1/N, the "
-             "object-space stage time of the slowest rank falls with its share while it has a core of its own, and the "
-             "exchange costs (read-backs, allreduce, IceT) are measured per frame. What they cannot show: speed-up "
-             "beyond 2, network costs (all ranks share memory here), or GPU-rate per-cell costs.", ""]
+    context = {**exp.context(stats), "lp_num_threads": MPI_ENV["LP_NUM_THREADS"], "gl_version": stats.get("gl_version")}
+    return {"experiment": "distributed", "quick": exp.quick, "size": size, "context": context, "mpi_environment": MPI_ENV,
+            "strong": strong, "weak": weak, "largest_across_4_ranks": largest,
+            "cluster_model": cluster_model(strong[strong_models[-1]], size)}
+
+
+def largest_text(largest, context):
+    peaks = [r["peak_rss_bytes"] for r in largest["per_rank"]]
+    memory = context.get("memory_bytes")
+    return (f"{largest['active_cells']:,} active cells, {largest['max_rank_active_cells']:,.0f} on the largest rank; frame "
+            f"{largest['stages_ms']['total']:.0f} ms; peak resident memory per rank {mb(min(peaks))}-{mb(max(peaks))} MB "
+            f"({mb(sum(peaks))} MB in all" + (f", on a {memory / 2**30:.0f} GB machine" if memory else "") + "); resident "
+            f"{mb(largest['max_rank_rss_after_frames'])} MB on the largest rank after the frame; wall "
+            f"{largest['command_wall_s']:.0f} s (generation by block included).")
+
+
+def report(exp, document):
+    context, size, strong, weak = document["context"], document["size"], document["strong"], document["weak"]
+    cores = context.get("cpu_count")
+    memory_model = list(strong)[-1]
+    frames = {r["ranks"]: r["stages_ms"]["total"] for r in strong[memory_model] if r["ranks"] > 0}
+    result = md.Report(
+        f"Distributed cutaway frame: 1, 2, 4 MPI ranks ({size})",
+        "One cutaway frame rendered across 1, 2 and 4 MPI ranks, each rank holding one slab of whole layers: the cut "
+        "depth max-reduced across ranks (allreduce), the G-buffer composited with IceT, rank 0 running the screen-space "
+        "passes. Each row is `mpirun --oversubscribe -np N cutaway render MODEL --strategy frustum` with LP_NUM_THREADS=1 "
+        "per rank (the first row the single-process command without mpirun); medians of the timed frames. Strong "
+        "scaling: one model on 1, 2, 4 ranks; weak scaling: generated models of 1x, 2x, 4x the cells on 1, 2, 4 ranks. "
+        "Frame ms is rank 0's fenced total (it waits for the slowest rank before the allreduce and the composite). The "
+        "allreduce and IceT columns time the MPI and IceT calls alone, after a barrier; the barrier's wait (load "
+        "imbalance, and waiting for a core) is in brackets.",
+        headline=f"{memory_model.removeprefix('preset:')} frame on 1 / 2 / 4 ranks: "
+                 + " / ".join(md.ms(frames[n]) for n in sorted(frames)) + " ms")
+    result.section(f"What {cores} cores can and cannot show")
+    result.text(f"With one llvmpipe thread per rank, wall-clock speed-up is "
+                f"bounded by {cores}, and runs with more ranks than cores include waiting for a core. What the runs do "
+                "show: each rank's share of the model (cells, faces, slab memory) falls as 1/N, the object-space stage "
+                "time of the slowest rank falls with its share while it has a core of its own, and the exchange costs "
+                "(read-backs, allreduce, IceT) are measured per frame. What they cannot show: speed-up beyond the core "
+                "count, network costs (all ranks share memory here), or GPU-rate per-cell costs.")
     for name, rows in strong.items():
-        lines += table(rows, f"Strong scaling: {name}") + [""]
-    lines += table(weak, "Weak scaling: generated " + ", ".join("%dx%dx%d" % d for d in weak_dims) + " on 1, 2, 4 ranks") + [""]
-    lines += [f"### Memory per rank: {memory_model}", "", *memory_table(strong[memory_model]), "",
-              "Resident memory after the frames falls with the slab; the peak includes loading, where each rank first "
-              "loads its block of an equal split (to count active cells per layer) and then its balanced slab with a "
-              "one-cell halo: no rank holds the whole model. Slabs are balanced by "
-              "active cells, not primaries: stage 1 (one frustum per primary) follows the primary column, so the rank "
-              "holding most primaries sets the pace of stage 1 (the waits before the allreduce).", ""]
+        result.section(f"Strong scaling: {name}").table(SCALING_HEADER, scaling_rows(rows))
+    result.section("Weak scaling: generated " + ", ".join(r["model"].removeprefix("weak-").removesuffix(".grdecl")
+                                                          for r in weak) + " on 1, 2, 4 ranks")
+    result.table(SCALING_HEADER, scaling_rows(weak))
+    result.section(f"Memory per rank: {memory_model}").table(MEMORY_HEADER, memory_rows(strong[memory_model]))
+    result.text("Resident memory after the frames falls with the slab; the peak includes loading, where each rank first "
+                "loads its block of an equal split (to count active cells per layer) and then its balanced slab with a "
+                "one-cell halo: no rank holds the whole model. Slabs are balanced by active cells, not primaries: stage 1 "
+                "(one frustum per primary) follows the primary column, so the rank holding most primaries sets the pace "
+                "of stage 1 (the waits before the allreduce).")
+    largest = document.get("largest_across_4_ranks")
     if largest:
-        peaks = [r["peak_rss_bytes"] for r in largest["per_rank"]]
-        lines += [f"### Largest model across 4 ranks: {largest['model']} (strategy {largest['strategy']})", "",
-                  f"{largest['active_cells']:,} active cells, {largest['max_rank_active_cells']:,.0f} on the largest rank; frame "
-                  f"{largest['stages_ms']['total']:.0f} ms; peak resident memory per rank {mb(min(peaks))}-{mb(max(peaks))} MB "
-                  f"({mb(sum(peaks))} MB in all, on a {os.sysconf('SC_PAGE_SIZE') * os.sysconf('SC_PHYS_PAGES') / 2**30:.0f} GB "
-                  f"machine); resident {mb(largest['max_rank_rss_after_frames'])} MB on the largest rank after the frame; "
-                  f"wall {largest['command_wall_s']:.0f} s (generation by block included).", ""]
-    lines += cluster_text(model)
-    with open(exp.path("README.md"), "w") as f:
-        f.write("\n".join(lines))
-    print("wrote", os.path.relpath(exp.path("README.md"), cx.REPO))
+        result.section(f"Largest model across 4 ranks: {largest['model']} (strategy {largest['strategy']})",
+                       largest_text(largest, context))
+    result.section("Model: a 1-billion-cell frame on a cluster")
+    result.body += cluster_text(document["cluster_model"])
+    return result
+
+
+def main():
+    cx.Experiment(__doc__, "distributed.json").run(measure, report)
 
 
 if __name__ == "__main__":

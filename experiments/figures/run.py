@@ -2,11 +2,11 @@
 """Images like the paper's figures 7-15, plus frame time vs aperture angle and vs primary fraction.
 
 Interface (for experiments/run_all):
-  experiments/figures/run.py [--quick] [--force] [--build DIR]
+  experiments/figures/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
 Writes paper_figures/fig07_borders.png ... fig15_only_layers.png, time_vs_aperture.png,
 time_vs_primary_fraction.png, and results/figures/figures.json (per panel: options, fenced stage ms,
 primary cells, image metrics such as fig. 7's two border_line_width values and fig. 8's primary
-exposure; the sweeps; machine context). Skips when all exist unless --force. --quick: zaphirus
+exposure; the sweeps; machine context) with its README.md (figures_report.py). Skips when all exist unless --force. --quick: zaphirus
 (and petra in fig. 14) at 1000x562, one frame per panel, sweeps at 320x180 with fewer points
 (results/quick/figures/, paper_figures/quick/).
 
@@ -24,6 +24,7 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
 import compose  # noqa: E402
+import figures_report  # noqa: E402
 import figure_specs  # noqa: E402
 import sweeps  # noqa: E402
 
@@ -76,11 +77,8 @@ def common_colour_range(exp, model, prop, steps):
     return min(lows), max(highs)
 
 
-def main():
-    outputs = [f + ".png" for f in FIGURES] + ["time_vs_aperture.png", "time_vs_primary_fraction.png", "figures.json"]
-    exp = cx.Experiment("figures", __doc__, outputs)
-    if exp.up_to_date():
-        return
+def measure(exp):
+    """Renders and composes every figure, runs the two sweeps and plots them; returns the numbers."""
     quick = exp.quick
     # Print panels are at least 1000 px wide, quick ones too (the image checks run on them); quick
     # runs render one frame per panel on the smallest models.
@@ -114,11 +112,16 @@ def main():
     sweeps.plot_sweep(exp, fraction_rows, "primary fraction (of active cells, log scale)",
                       f"Frame time vs primary fraction ({label}, aperture 60 degrees)",
                       exp.path("time_vs_primary_fraction.png"), log_x=True)
-    cx.write_json(exp.path("figures.json"), {
+    return {
         "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),
         "context": exp.context(stats), "configuration": stats["configuration"], "figures": numbers,
         "time_vs_aperture": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": aperture_rows},
-        "time_vs_primary_fraction": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": fraction_rows}})
+        "time_vs_primary_fraction": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": fraction_rows}}
+
+
+def main():
+    outputs = [f + ".png" for f in FIGURES] + ["time_vs_aperture.png", "time_vs_primary_fraction.png"]
+    cx.Experiment(__doc__, "figures.json", outputs).run(measure, figures_report.report)
 
 
 if __name__ == "__main__":

@@ -2,9 +2,9 @@
 """Peer comparison: our plain and cutaway frames against VTK 9.1 on the same grids, camera and size.
 
 Interface (for experiments/run_all):
-  experiments/peer_vtk/run.py [--quick] [--force] [--build DIR]
+  experiments/peer_vtk/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
 Writes results/peer_vtk/peer_vtk.json (every round's numbers, the configuration, the model checks,
-the machine context of both sides) and results/peer_vtk/peer_vtk.md (the table), plus the camera
+the machine context of both sides) and results/peer_vtk/README.md (the table), plus the camera
 check images camera_check_<model>_{vtk,ours}.png beside them. Skips when both outputs exist unless
 --force. --quick: 480x270, 3 timed frames, 1 round (results/quick/peer_vtk/). Needs python3-vtk9,
 Xvfb and numpy/matplotlib for /usr/bin/python3 (scripts/install-deps.sh).
@@ -195,7 +195,7 @@ def camera_check(exp, x, grdecl, prepared_path, camera, scratch):
     offset = max(abs(a - b) for a, b in zip(boxes["vtk_surface"], boxes["ours_cell_ids"]))
     limit = CAMERA_TOLERANCE_PX * camera["size"][0]
     result = {"model_pixel_box": boxes, "max_offset_px": offset, "tolerance_px": limit,
-              "images": [os.path.relpath(p, cx.REPO) for p in (vtk_png, ours_png)]}
+              "images": [os.path.relpath(p, exp.out) for p in (vtk_png, ours_png)]}
     if offset > limit:
         raise SystemExit(f"camera mismatch between VTK and ours: {result}")
     return result
@@ -293,17 +293,16 @@ def compute(exp):
             "context": machine_context(exp, models), "models": models}
 
 
+def report(exp, document):
+    result = peer_report.report(document)
+    return result.figure(*(exp.path(f"camera_check_{m}_{side}.png") for m in MODELS for side in ("vtk", "ours")))
+
+
 def main():
-    cx.vx.require_matplotlib()  # re-runs under /usr/bin/python3 when needed (numpy, matplotlib, vtk live there)
-    exp = cx.Experiment("peer_vtk", __doc__, ["peer_vtk.json", "peer_vtk.md"])
+    cx.exio.require_matplotlib()  # re-runs under /usr/bin/python3 when needed (numpy, matplotlib, vtk live there)
+    exp = cx.Experiment(__doc__, "peer_vtk.json")
     exp.figures = exp.results  # the camera-check images stay beside the numbers
-    if exp.up_to_date():
-        return
-    document = compute(exp)
-    cx.write_json(exp.path("peer_vtk.json"), document)
-    with open(exp.path("peer_vtk.md"), "w") as f:
-        f.write(peer_report.markdown(document))
-    print("wrote", os.path.relpath(exp.path("peer_vtk.md"), cx.REPO))
+    exp.run(compute, report)
 
 
 if __name__ == "__main__":

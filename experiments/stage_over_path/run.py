@@ -2,26 +2,29 @@
 """Stage times over the camera path for each model (the thesis's figures 5.1-5.4).
 
 Interface (for experiments/run_all):
-  experiments/stage_over_path/run.py [--quick] [--force] [--build DIR]
+  experiments/stage_over_path/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
 Writes results/stage_over_path/stage_over_path.json (per model, per pose: azimuth, aperture, fenced
-ms per stage) and paper_figures/stage_over_path.png (+ .pdf: the camera path's azimuth and aperture
-on their own axes, then one panel per model). Skips when both exist unless --force; replots from the
-JSON when only the figure is missing. --quick: 480x270 pixels, 3 poses, two models (results/quick/, paper_figures/quick/).
+ms per stage), its README.md and paper_figures/stage_over_path.png (+ .pdf: the camera path's
+azimuth and aperture on their own axes, then one panel per model). Skips when all exist unless
+--force; replots and reports from the JSON when it exists and --force was not given. --quick: 480x270 pixels, 3 poses, two models (results/quick/, paper_figures/quick/).
 
 Protocol: Table 1's settings (9x9 mean filter, 1% primaries, SSAO on, frustum cut, ray-cast borders),
 1920x1080, a 16-pose path (bench_cutaway --per_pose: azimuth steps of 22.5 degrees, elevation
 alternating 25/45, full aperture rising 30..120 degrees), one warm-up pass, one timed frame per pose.
 """
-import json
 import os
+import statistics
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
+import report_markdown as md  # noqa: E402
 
 
 def measure(exp):
-    """Runs the benchmark; returns the JSON document it writes."""
+    """Runs the benchmark; returns the document (the stored one when there is one and no --force)."""
+    if not exp.force and exp.stored():
+        return exp.stored()
     size, poses = ("480x270", 3) if exp.quick else ("1920x1080", 16)
     presets = cx.PRESETS[:2] if exp.quick else cx.PRESETS
     document = exp.benchmark("--presets=" + ",".join(presets), "--size=" + size, "--poses=" + str(poses), "--per_pose",
@@ -29,20 +32,19 @@ def measure(exp):
                              "--warmup=1", "--repeat=1", "--benchmark_filter=BM_cutaway")
     path = document["context"]["camera_path_az_el_aperture_deg"].split("; ")
     models = {p: sorted((r for r in cx.cutaway_runs(document) if r["preset"] == p), key=lambda r: r["pose"]) for p in presets}
-    result = {
+    return {
         "experiment": "stage_over_path", "quick": exp.quick, "size": size, "aperture": "full opening angle",
         "camera_path_az_el_aperture_deg": path,
         "context": {**exp.context(), **cx.benchmark_context(document)},
         "models": {p: [{"pose": r["pose"], "aperture_deg": r.get("aperture_deg"), "stages_ms": r["stages_ms"],
                         "primary_cells": r["primary_cells"], "cells": r["cells"]} for r in rows]
                    for p, rows in models.items()}}
-    cx.write_json(exp.path("stage_over_path.json"), result)
-    return result
 
 
-def plot(result, path):
+def plot(exp, result):
     """The camera path on top (azimuth and aperture on their own axes), then one panel of stage
     times per model; one legend below the panels, clear of every curve."""
+    path = exp.path("stage_over_path.png")
     plt = cx.pyplot()
     camera = [tuple(float(v) for v in pose.split("/")) for pose in result["camera_path_az_el_aperture_deg"]]
     # Runs before the full-angle convention recorded each wall's angle: the full opening is twice it.
@@ -73,20 +75,36 @@ def plot(result, path):
     fig.legend(handles, labels, ncol=4, loc="lower center", frameon=False)
     fig.savefig(path)
     fig.savefig(os.path.splitext(path)[0] + ".pdf")
-    print("wrote", os.path.relpath(path, cx.REPO))
+    cx.exio.wrote(path)
+
+
+def report(exp, document):
+    """Per model: each stage's median, minimum and maximum over the path's poses."""
+    models = document["models"]
+    largest = max(models, key=lambda p: models[p][0]["cells"])
+    totals = [r["stages_ms"]["total"] for r in models[largest]]
+    poses = document["camera_path_az_el_aperture_deg"]
+    result = md.Report(
+        "Stage times over the camera path (the thesis's figures 5.1-5.4)",
+        f"Fenced wall-clock time of each cutaway stage at every pose of a {len(poses)}-pose camera path around each model "
+        f"({document['size']} px; Table 1's settings: 9x9 mean filter, the top 1% of PORO as primaries, SSAO on, frustum "
+        "cut, ray-cast borders; one warm-up pass, one timed frame per pose). The path turns the azimuth, alternates the "
+        f"elevation and opens the aperture ({document['aperture']}) as it goes (azimuth/elevation/aperture in degrees: "
+        f"{'; '.join(poses)}), so a change along the path is the view and the aperture together.",
+        headline=f"{largest} frame {md.ms(statistics.median(totals))} ms median over the path "
+                 f"({md.ms(min(totals))}-{md.ms(max(totals))})")
+    for preset, rows in models.items():
+        stages = [s for s in cx.STAGES + ("total",) if s in rows[0]["stages_ms"]]
+        values = {s: [r["stages_ms"][s] for r in rows] for s in stages}
+        result.section(f"{preset} ({int(rows[0]['cells']):,} cells, {int(rows[0]['primary_cells']):,} primaries)")
+        result.table(["stage", "median ms", "min ms", "max ms", "max / min"],
+                     [[cx.STAGE_LABELS[s], md.ms(statistics.median(v)), md.ms(min(v)), md.ms(max(v)),
+                       f"{max(v) / min(v):.2f}" if min(v) > 0 else "-"] for s, v in values.items()])
+    return result.figure(exp.path("stage_over_path.png"))
 
 
 def main():
-    exp = cx.Experiment("stage_over_path", __doc__, ["stage_over_path.json", "stage_over_path.png"])
-    json_path = exp.path("stage_over_path.json")
-    if exp.up_to_date():
-        return
-    if not exp.force and os.path.exists(json_path):  # the measurement is there: plot it again
-        with open(json_path) as f:
-            result = json.load(f)
-    else:
-        result = measure(exp)
-    plot(result, exp.path("stage_over_path.png"))
+    cx.Experiment(__doc__, "stage_over_path.json", ["stage_over_path.png"]).run(measure, report, plot)
 
 
 if __name__ == "__main__":

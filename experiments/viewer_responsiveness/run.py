@@ -2,10 +2,11 @@
 """Viewer responsiveness: frame times of `cutaway view` on petra at 1280x720 (issue 8).
 
 Interface (for experiments/run_all):
-  experiments/viewer_responsiveness/run.py [--quick] [--force] [--build DIR]
-Writes results/viewer/viewer_responsiveness.json and .md, and paper_figures/viewer_petra.png (the
-window with its panel and timing overlay). Skips when they exist unless --force. --quick: 640x360,
-fewer frames (results/quick/viewer/, paper_figures/quick/).
+  experiments/viewer_responsiveness/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
+Writes results/viewer_responsiveness/viewer_responsiveness.json and its README.md, and
+paper_figures/viewer_petra.png (the window with its panel and timing overlay). Skips when they
+exist unless --force. --quick: 640x360, fewer frames (results/quick/viewer_responsiveness/,
+paper_figures/quick/).
 
 Protocol: the viewer runs in a real window under Xvfb (xvfb-run, Mesa llvmpipe through GLX) with
 the panel and overlay shown and the paper's settings (frustum cut, ray-cast borders, 9x9 mean
@@ -20,7 +21,7 @@ per second from the frames it measures (src/viewer/interaction_resolution.h), an
 once it stops. The first drag starts at half the size; the second where the first ended. Each
 drag is reported on its own. The runs go in 3
 interleaved rounds (100%, 50%, 100% while moving, 100%, ...; 1 with --quick), so a slow spell of
-this shared machine does not fall on one configuration only. The viewer's --stats file holds every
+the machine does not fall on one configuration only. The viewer's --stats file holds every
 frame's loop time (events, script, panel, render when something changed, blit, swap) and its
 fenced stage times; medians over the frames of all rounds are reported, with each round's median
 beside them.
@@ -33,6 +34,7 @@ import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
+import report_markdown as md  # noqa: E402
 
 
 def script_text(turns, ranges, idle, screenshot, drag):
@@ -66,10 +68,8 @@ def median(values):
     return 0.0 if n == 0 else values[n // 2] if n % 2 else 0.5 * (values[n // 2 - 1] + values[n // 2])
 
 
-def main():
-    exp = cx.Experiment("viewer", __doc__, ["viewer_responsiveness.json", "viewer_responsiveness.md", "viewer_petra.png"])
-    if exp.up_to_date():
-        return
+def measure(exp):
+    """The interleaved rounds of the three configurations under Xvfb; returns the document."""
     xvfb_run = shutil.which("xvfb-run")
     if xvfb_run is None:
         raise SystemExit("xvfb-run not found (Debian package xvfb; scripts/install-deps.sh installs it)")
@@ -96,9 +96,21 @@ def main():
                 subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
                 with open(stats) as f:
                     runs[name].append(cx.json.loads(f.read()))
-        revision = exp.context()["git_revision"]  # before the copy changes a tracked file
+        first = runs["1.0"][0]
+        # Before the copy changes a tracked file (the revision would read dirty).
+        context = {**exp.context(first), "gl_version": first["gl_version"], "gl_platform": first["gl_platform"],
+                   "git_revision_viewer": first["git_revision"]}
         shutil.copyfile(os.path.join(scratch, "viewer_petra.png"), exp.path("viewer_petra.png"))
 
+    return {"experiment": "viewer_responsiveness", "quick": exp.quick, "model": first["model"],
+            "primary_cells": first["primary_cells"], "configuration": first["configuration"],
+            "protocol": {"turns": turns, "range_changes": ranges, "idle_frames": idle, "panel": "shown",
+                         "timing": first["timing"]},
+            "context": context, "by_configuration": summarise(runs, configurations), "runs": runs}
+
+
+def summarise(runs, configurations):
+    """Per configuration: medians of the frames that re-render, of the still frames, and per drag."""
     summary = {}
     for name, scale_runs in runs.items():
         stats = scale_runs[0]
@@ -135,56 +147,74 @@ def main():
             "median_stages_ms": {s: median([f["stages_ms"][s] for f in frames if f["rendered"] and s in f["stages_ms"]])
                                  for s in cx.STAGES + ("total",)},
         }
-    first = runs["1.0"][0]
-    cx.write_json(exp.path("viewer_responsiveness.json"), {
-        "experiment": "viewer_responsiveness", "quick": exp.quick, "model": first["model"],
-        "primary_cells": first["primary_cells"], "configuration": first["configuration"],
-        "protocol": {"turns": turns, "range_changes": ranges, "idle_frames": idle, "panel": "shown",
-                     "timing": first["timing"]},
-        "context": {**exp.context(first), "git_revision": revision, "gl_version": first["gl_version"], "gl_platform": first["gl_platform"],
-                    "git_revision_viewer": first["git_revision"]},
-        "by_configuration": summary, "runs": runs})
+    return summary
 
-    rows = ["| render scale | render size | frame while the view changes (ms) | rounds' medians | fps "
-            "| frame with a still view (ms) | fps | stage 1 | stage 2 | mean filter | SSAO | cutaway total |", "|" + "---|" * 12]
-    for name, s in summary.items():
+
+def scale_rows(summary):
+    """One row per render scale held for every frame (the configurations without --interaction-fps)."""
+    rows = []
+    for s in summary.values():
         if s["interaction_fps"] > 0:
-            continue  # its frames have two sizes: the table below
-        st = s["median_stages_ms"]
-        by_round = s["median_loop_ms_rendering_by_round"]
-        rows.append(f"| {s['render_scale']:.0%} | {s['render_size'][0]}x{s['render_size'][1]} | "
-                    f"{s['median_loop_ms_rendering']:.0f} | {min(by_round):.0f}-{max(by_round):.0f} | "
-                    f"{s['frames_per_second_rendering']:.1f} | "
-                    f"{s['median_loop_ms_idle']:.1f} | {s['frames_per_second_idle']:.0f} | {st['cut_surface']:.0f} | "
-                    f"{st['secondary']:.0f} | {st['mean_filter']:.0f} | {st['ssao']:.0f} | {st['total']:.0f} |")
-    moving_rows = ["| configuration | drag | frames drawn while turning | frame while turning (ms) | rounds' medians | fps "
-                   "| render widths | median render size | cutaway total (ms) | full-size frames (ms) |",
-                   "|" + "---|" * 10]
-    for name, s in summary.items():
+            continue  # its frames have two sizes: the drag table
+        st, by_round = s["median_stages_ms"], s["median_loop_ms_rendering_by_round"]
+        rows.append([f"{s['render_scale']:.0%}", f"{s['render_size'][0]}x{s['render_size'][1]}",
+                     f"{s['median_loop_ms_rendering']:.0f}", f"{min(by_round):.0f}-{max(by_round):.0f}",
+                     f"{s['frames_per_second_rendering']:.1f}", f"{s['median_loop_ms_idle']:.1f}",
+                     f"{s['frames_per_second_idle']:.0f}", f"{st['cut_surface']:.0f}", f"{st['secondary']:.0f}",
+                     f"{st['mean_filter']:.0f}", f"{st['ssao']:.0f}", f"{st['total']:.0f}"])
+    return rows
+
+
+def drag_rows(summary):
+    rows = []
+    for s in summary.values():
         for label, m in s["while_moving"].items():
             by_round = m["median_loop_ms_by_round"]
             width, height = m["median_render_size"]
-            moving_rows.append(f"| {s['render_scale']:.0%}, --interaction-fps {s['interaction_fps']:g}, mouse button held "
-                               f"| {label.replace('_', ' ')} | {m['frames']} | {m['median_loop_ms']:.0f} "
-                               f"| {min(by_round):.0f}-{max(by_round):.0f} | {m['frames_per_second']:.1f} "
-                               f"| {min(m['render_widths'])}-{max(m['render_widths'])} | {width:.0f}x{height:.0f} "
-                               f"| {m['median_stages_ms']['total']:.0f} | {s['median_loop_ms_not_moving']:.0f} |")
-    with open(exp.path("viewer_responsiveness.md"), "w") as f:
-        f.write(f"# Viewer responsiveness: petra, {size[0]}x{size[1]} window, {first['gl_renderer']}\n\n"
-                f"Written by experiments/viewer_responsiveness/run.py (git {revision}, "
-                f"LP_NUM_THREADS={os.environ['LP_NUM_THREADS']}, {os.cpu_count()} x {cx.cpu_model()}, {first['gl_platform']} under Xvfb). "
-                f"Medians over "
-                f"{turns + ranges} frames that re-render the cutaway (camera turns, primary-range changes) and {idle} "
-                f"frames with a still view (panel and overlay redrawn over the last cutaway) per run, pooled over "
-                f"{rounds} interleaved round(s) of the configurations.\n\n" + "\n".join(rows) + "\n\n"
-                f"Turning the camera with the mouse button held (script `drag on` ... `drag off`), the viewer draws "
-                f"smaller frames sized to hold {configurations['1.0-moving'][1]} frames per second "
-                f"(src/viewer/interaction_resolution.h: it starts at half the size, steps by the median of the frames "
-                f"it measures, never below a quarter) and the full size once the drag ends; the primary-range changes "
-                f"after the drags are drawn at the full size. The first drag starts at half the size, the second where "
-                f"the first ended; the first frame at each new size, which allocates its targets, is among the frames "
-                f"while turning.\n\n" + "\n".join(moving_rows) + "\n")
-    print("wrote", os.path.relpath(exp.path("viewer_responsiveness.md"), cx.REPO))
+            rows.append([f"{s['render_scale']:.0%}, --interaction-fps {s['interaction_fps']:g}, mouse button held",
+                         label.replace("_", " "), m["frames"], f"{m['median_loop_ms']:.0f}",
+                         f"{min(by_round):.0f}-{max(by_round):.0f}", f"{m['frames_per_second']:.1f}",
+                         f"{min(m['render_widths'])}-{max(m['render_widths'])}", f"{width:.0f}x{height:.0f}",
+                         f"{m['median_stages_ms']['total']:.0f}", f"{s['median_loop_ms_not_moving']:.0f}"])
+    return rows
+
+
+def report(exp, document):
+    summary, proto, context = document["by_configuration"], document["protocol"], document["context"]
+    full = summary["1.0"]
+    window = full["window_size"]
+    moving = next((s for s in summary.values() if s["interaction_fps"] > 0), None)
+    result = md.Report(
+        f"Viewer responsiveness: {document['model']}, {window[0]}x{window[1]} window",
+        f"Frame times of `cutaway view` in a real window under Xvfb ({context.get('gl_platform')}) with the panel and "
+        "timing overlay shown and the paper's settings (frustum cut, ray-cast borders, 9x9 mean filter, SSAO, 1% PORO "
+        f"primaries). Medians over {proto['turns'] + proto['range_changes']} frames per run that re-render the cutaway "
+        f"(camera turns of 15 degrees, primary-range changes) and {proto['idle_frames']} frames with a still view (panel "
+        f"and overlay redrawn over the last cutaway), pooled over {full['rounds']} interleaved round(s) of the "
+        "configurations; a frame is the viewer's whole loop (events, script, panel, render when something changed, "
+        "blit, swap).",
+        headline=f"{full['median_loop_ms_rendering']:.0f} ms per re-rendered frame "
+                 f"({full['frames_per_second_rendering']:.1f} fps) at render scale 100%")
+    result.section("Every frame at one render scale")
+    result.table(["render scale", "render size", "frame while the view changes (ms)", "rounds' medians", "fps",
+                  "frame with a still view (ms)", "fps", "stage 1", "stage 2", "mean filter", "SSAO", "cutaway total"],
+                 scale_rows(summary), align="ll" + "r" * 10)
+    if moving:
+        result.section("Turning with the mouse button held",
+                       "The script's `drag on` ... `drag off`, twice: the viewer draws smaller frames sized to hold "
+                       f"{moving['interaction_fps']:g} frames per second (src/viewer/interaction_resolution.h: it starts "
+                       "at half the size, steps by the median of the frames it measures, never below a quarter) and the "
+                       "full size once the drag ends; the primary-range changes after the drags are drawn at the full "
+                       "size. The first drag starts at half the size, the second where the first ended; the first frame "
+                       "at each new size, which allocates its targets, is among the frames while turning.")
+        result.table(["configuration", "drag", "frames drawn while turning", "frame while turning (ms)", "rounds' medians",
+                      "fps", "render widths", "median render size", "cutaway total (ms)", "full-size frames (ms)"],
+                     drag_rows(summary), align="ll" + "r" * 8)
+    return result.figure(exp.path("viewer_petra.png"))
+
+
+def main():
+    cx.Experiment(__doc__, "viewer_responsiveness.json", ["viewer_petra.png"]).run(measure, report)
 
 
 if __name__ == "__main__":

@@ -2,41 +2,40 @@
 """Figure 7 of Duan & Li: GPU vs CPU ray casting time of a 101x101x250 cube from 10 eye positions.
 
 Interface (for experiments/run_all):
-  experiments/volume_fig7/run.py [--quick] [--force] [--build DIR]
-Writes results/volume/fig7.json (per eye: trimmed-mean times in ms, raw trials, samples; machine
-context) and paper_figures/volume_fig7.png. Skips when both exist unless --force. --quick: a
+  experiments/volume_fig7/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
+Writes results/volume_fig7/fig7.json (per eye: trimmed-mean times in ms, raw trials, samples; machine
+context), its README.md and paper_figures/volume_fig7.png. Skips when both exist unless --force. --quick: a
 20x20x40 cube, 128x128 pixels, 5 GPU / 3 CPU trials per eye (well under a minute).
 
 Protocol: the synthetic "paper-250" cube (seed 1), layer highlight off (grey transfer function,
 the paper's default display), 512x512 pixels, eye azimuths 0, 36, ..., 324 degrees at 25 degrees
 elevation, distance framing the cube. GPU: 50 timed trials per eye after one warm-up, mean after
-dropping min and max (the paper's protocol). CPU: the reference caster is slow on this 2-core
-machine, so 5 trials per eye (same trimming). A trial's time is the fenced wall time of the exit
-points and ray casting passes (readback excluded), as `cutaway volume --stats` reports it.
+dropping min and max (the paper's protocol). CPU: the reference caster, 5 trials per eye (same
+trimming). A trial's time is the fenced wall time of the exit points and ray casting passes
+(readback excluded), as `cutaway volume --stats` reports it.
 """
 import os
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
+sys.path.insert(0, os.path.join(HERE, "..", "volume_common"))
+import cutaway_experiment as cx  # noqa: E402
+import report_markdown as md  # noqa: E402
 import volume_experiment as vx  # noqa: E402
 
 PAPER = {"gpu_ms": {"min": 14.19, "max": 15.70, "mean": 14.99}, "cpu_ms": {"min": 9250, "max": 9737, "mean": 9486}}
 
 
-def main():
-    json_path = os.path.join(vx.RESULTS, "fig7.json")
-    figure_path = os.path.join(vx.FIGURES, "volume_fig7.png")
-    args = vx.begin(__doc__, [json_path, figure_path])
-    if args is None:
-        return
-    plt = vx.require_matplotlib()
-    quick = args.quick
+def measure(exp):
+    """Both casters from every eye; returns the document."""
+    quick = exp.quick
     cube_options = ["--dims", "20", "20", "40"] if quick else ["--preset", "paper-250"]
     size = 128 if quick else 512
     trials = {"gpu": 5 if quick else 50, "cpu": 3 if quick else 5}
     azimuths = [36 * k for k in range(10)]
 
-    with vx.Workspace(args) as work:
+    with vx.Workspace(exp) as work:
         cube = work.generate("fig7", *cube_options, "--seed", "1")
         eyes, last_stats = [], None
         for azimuth in azimuths:
@@ -58,17 +57,26 @@ def main():
         means = [e[caster]["trimmed_mean_ms"] for e in eyes]
         summary[caster] = {"min_ms": min(means), "max_ms": max(means), "mean_ms": sum(means) / len(means)}
     summary["cpu_over_gpu"] = summary["cpu"]["mean_ms"] / summary["gpu"]["mean_ms"]
-    vx.write_json(json_path, {
+    document = {
         "experiment": "volume_fig7", "quick": quick,
         "protocol": {"cube": cube_options, "seed": 1, "size": [size, size], "transfer_function": "grey",
                      "eyes": len(azimuths), "trials_per_eye": trials, "warmup_per_eye": 1,
                      "statistic": "mean after dropping min and max of each eye's trials",
-                     "note": "CPU caster uses fewer trials than the paper's 50: it is slow on this 2-core machine",
+                     "note": "CPU caster uses fewer trials than the paper's 50: it is the slow reference",
                      "time": "fenced wall clock of exit_points + ray_cast stages (readback excluded), ms",
                      "configuration": last_stats["configuration"]},
-        "context": vx.machine_context(last_stats), "eyes": eyes, "summary": summary, "paper": PAPER})
+        "context": exp.context(last_stats), "eyes": eyes, "summary": summary, "paper": PAPER}
+    return document
 
-    renderer = (last_stats["gl_renderer"] or "GPU").split(" (")[0]
+
+def plot(exp, document):
+    """Each caster's trimmed mean per eye on a log axis, the paper's means dashed."""
+    figure_path = exp.path("volume_fig7.png")
+    plt = cx.exio.require_matplotlib()
+    eyes, summary, quick = document["eyes"], document["summary"], document["quick"]
+    size = document["protocol"]["size"][0]
+    azimuths = [e["azimuth_deg"] for e in eyes]
+    renderer = (document["context"]["gl_renderer"] or "GPU").split(" (")[0]
     fig, ax = plt.subplots(figsize=(7, 4))
     for caster, marker in (("gpu", "o"), ("cpu", "s")):
         ax.plot(azimuths, [e[caster]["trimmed_mean_ms"] for e in eyes], marker=marker,
@@ -83,7 +91,39 @@ def main():
     ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(figure_path, dpi=150)
-    print("wrote", os.path.relpath(figure_path, vx.REPO))
+    cx.exio.wrote(figure_path)
+
+
+def report(exp, document):
+    """Per eye both casters' trimmed means and their ratio, the paper's numbers beside."""
+    summary, proto, paper = document["summary"], document["protocol"], document["paper"]
+    gpu, cpu = summary["gpu"], summary["cpu"]
+    result = md.Report(
+        "Seismic figure 7: GPU against CPU ray casting",
+        f"Time to ray cast the synthetic seismic cube `cutaway generate-seismic {' '.join(proto['cube'])}` "
+        f"(seed {proto['seed']}) into {proto['size'][0]}x{proto['size'][1]} pixels with the grey "
+        f"transfer function from {proto['eyes']} eyes around it (azimuth steps of 36 degrees, elevation 25), with the GPU "
+        "caster (fragment shader, empty-space skipping, early termination) and the CPU reference caster, as Duan & Li's "
+        f"figure 7. Per eye: {proto['trials_per_eye']['gpu']} GPU / {proto['trials_per_eye']['cpu']} CPU timed trials after "
+        f"{proto['warmup_per_eye']} warm-up, {proto['statistic']}; a trial is the {proto['time']}.",
+        headline=f"GPU {gpu['mean_ms']:.1f} ms vs CPU {cpu['mean_ms']:.1f} ms ({summary['cpu_over_gpu']:.2f}x)")
+    result.section("Summary over the eyes")
+    result.table(["caster", "min ms", "mean ms", "max ms", "paper mean ms (min-max)"],
+                 [[c.upper(), md.ms(summary[c]["min_ms"]), md.ms(summary[c]["mean_ms"]), md.ms(summary[c]["max_ms"]),
+                   f"{md.ms(paper[c + '_ms']['mean'])} ({md.ms(paper[c + '_ms']['min'])}-{md.ms(paper[c + '_ms']['max'])})"]
+                  for c in ("gpu", "cpu")])
+    result.text(f"CPU / GPU: {summary['cpu_over_gpu']:.2f}x here, "
+                f"{paper['cpu_ms']['mean'] / paper['gpu_ms']['mean']:.0f}x in the paper.")
+    result.section("Per eye")
+    result.table(["azimuth (deg)", "GPU ms", "CPU ms", "CPU / GPU", "GPU samples"],
+                 [[e["azimuth_deg"], md.ms(e["gpu"]["trimmed_mean_ms"]), md.ms(e["cpu"]["trimmed_mean_ms"]),
+                   f"{e['cpu']['trimmed_mean_ms'] / e['gpu']['trimmed_mean_ms']:.2f}", f"{e['gpu']['samples']:,}"]
+                  for e in document["eyes"]])
+    return result.figure(exp.path("volume_fig7.png"))
+
+
+def main():
+    cx.Experiment(__doc__, "fig7.json", ["volume_fig7.png"], tools=("cutaway",)).run(measure, report, plot)
 
 
 if __name__ == "__main__":

@@ -2,28 +2,33 @@
 """Figure 8 of Duan & Li: GPU ray casting time as the cube grows 10 times by 10x28x25 samples.
 
 Interface (for experiments/run_all):
-  experiments/volume_fig8/run.py [--quick] [--force] [--build DIR]
-Writes results/volume/fig8.json (per growth step: dims, sample count, trimmed-mean time in ms,
-samples per second, raw trials; machine context) and paper_figures/volume_fig8.png (+ .pdf: medians
-with min-max bars). Skips when both exist unless --force; plots the JSON again when only the
-figure is missing. --quick: steps 1-3, 128x128 pixels, 5 trials.
+  experiments/volume_fig8/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
+Writes results/volume_fig8/fig8.json (per growth step: dims, sample count, trimmed-mean time in ms,
+samples per second, raw trials; machine context), its README.md and paper_figures/volume_fig8.png
+(+ .pdf: medians with min-max bars). Skips when all exist unless --force; plots the JSON again when
+it exists and --force was not given. --quick: steps 1-3, 128x128 pixels, 5 trials.
 
 Protocol: synthetic cubes "growth-1" .. "growth-10" (step k: 10k x 28k x 25k samples, seed 1),
 a fixed viewpoint (azimuth 40, elevation 25, distance framing the cube, time axis scaled to the
 larger lateral extent so the cube's footprint on screen stays the same), grey transfer function,
 512x512 pixels, GPU caster, 20 timed trials after one warm-up, mean after dropping min and max.
 """
-import json
 import os
+import statistics
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "common"))
+sys.path.insert(0, os.path.join(HERE, "..", "volume_common"))
+import cutaway_experiment as cx  # noqa: E402
+import report_markdown as md  # noqa: E402
 import volume_experiment as vx  # noqa: E402
 
 
-def plot(result, figure_path):
+def plot(exp, result):
     """Median frame time per cube with min-max bars over the trials (PNG and vector PDF)."""
-    plt = vx.require_matplotlib()
+    figure_path = exp.path("volume_fig8.png")
+    plt = cx.exio.require_matplotlib()
     rows, size = result["steps"], result["protocol"]["size"][0]
     voxels = [r["voxels"] / 1e6 for r in rows]
     medians = [sorted(r["trials_ms"])[len(r["trials_ms"]) // 2] for r in rows]
@@ -39,25 +44,19 @@ def plot(result, figure_path):
     fig.tight_layout()
     fig.savefig(figure_path, dpi=150)
     fig.savefig(os.path.splitext(figure_path)[0] + ".pdf")
-    print("wrote", os.path.relpath(figure_path, vx.REPO))
+    cx.exio.wrote(figure_path)
 
 
-def main():
-    json_path = os.path.join(vx.RESULTS, "fig8.json")
-    figure_path = os.path.join(vx.FIGURES, "volume_fig8.png")
-    args = vx.begin(__doc__, [json_path, figure_path])
-    if args is None:
-        return
-    if not args.force and os.path.exists(json_path):  # measured already: plot again
-        with open(json_path) as f:
-            plot(json.load(f), figure_path)
-        return
-    quick = args.quick
+def measure(exp):
+    """The GPU caster on each growth step; the stored run instead when there is one and no --force."""
+    if not exp.force and exp.stored():  # measured already: plot and report again
+        return exp.stored()
+    quick = exp.quick
     steps = range(1, 4) if quick else range(1, 11)
     size, trials = (128, 5) if quick else (512, 20)
 
     rows, last_stats = [], None
-    with vx.Workspace(args) as work:
+    with vx.Workspace(exp) as work:
         for step in steps:
             cube = work.generate(f"growth-{step}", "--preset", f"growth-{step}", "--seed", "1")
             stats = work.volume(cube, "--caster", "gpu", "--tf", "grey", "--camera", "40", "25", "0",
@@ -78,10 +77,35 @@ def main():
                      "statistic": "mean after dropping min and max",
                      "time": "fenced wall clock of exit_points + ray_cast stages (readback excluded), ms",
                      "configuration": last_stats["configuration"]},
-        "context": vx.machine_context(last_stats), "steps": rows,
+        "context": exp.context(last_stats), "steps": rows,
         "slowest_over_fastest": max(r["trimmed_mean_ms"] for r in rows) / min(r["trimmed_mean_ms"] for r in rows)}
-    vx.write_json(json_path, result)
-    plot(result, figure_path)
+    return result
+
+
+def report(exp, document):
+    """Per growth step: the cube, its median and trimmed-mean time, samples per second."""
+    proto, steps = document["protocol"], document["steps"]
+    medians = [statistics.median(r["trials_ms"]) for r in steps]
+    result = md.Report(
+        "Seismic figure 8: GPU ray casting time as the cube grows",
+        f"Time to ray cast growing synthetic seismic cubes ({proto['cubes']}) from one viewpoint (azimuth "
+        f"{proto['viewpoint'][0]}, elevation {proto['viewpoint'][1]}, the time axis scaled so the cube's footprint on "
+        f"screen stays the same) into {proto['size'][0]}x{proto['size'][1]} pixels, {proto['caster'].upper()} caster, "
+        f"{proto['transfer_function']} transfer function, as Duan & Li's figure 8: {proto['trials']} timed trials per cube "
+        f"after {proto['warmup']} warm-up; a trial is the {proto['time']}.",
+        headline=f"{steps[0]['voxels']:,} to {steps[-1]['voxels']:,} voxels: "
+                 f"{md.ms(medians[0])} to {md.ms(medians[-1])} ms (medians)")
+    result.section("Per cube")
+    result.table(["step", "dims", "voxels", "median ms", "min-max ms", "trimmed mean ms", "samples / s (millions)"],
+                 [[r["step"], "x".join(map(str, r["dims"])), f"{r['voxels']:,}", md.ms(m),
+                   f"{md.ms(min(r['trials_ms']))}-{md.ms(max(r['trials_ms']))}", md.ms(r["trimmed_mean_ms"]),
+                   f"{r['samples_per_second'] / 1e6:,.0f}"] for r, m in zip(steps, medians)])
+    result.text(f"Slowest / fastest cube (trimmed means): {document['slowest_over_fastest']:.2f}x.")
+    return result.figure(exp.path("volume_fig8.png"))
+
+
+def main():
+    cx.Experiment(__doc__, "fig8.json", ["volume_fig8.png"], tools=("cutaway",)).run(measure, report, plot)
 
 
 if __name__ == "__main__":
