@@ -186,7 +186,7 @@ int run_render(const RenderOptions& options) {
     const bool primaries = options.frame_settings().primaries;
     renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by && primaries));
     if (!primaries)
-        renderer.select(std::vector<std::uint8_t>(grid.cell_count(), 0));
+        renderer.select_none();
     else if (selected_by)
         renderer.select(selected_by->flags);
     else

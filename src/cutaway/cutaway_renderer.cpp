@@ -196,6 +196,8 @@ void CutawayRenderer::set_cut_volumes(const std::vector<shapes::TriangleMesh>& m
     frozen_valid_ = false;
 }
 
+void CutawayRenderer::select_none() { set_primaries(std::vector<std::uint8_t>(grid_.cell_count(), 0)); }
+
 void CutawayRenderer::freeze(const std::optional<Camera>& camera) {
     frozen_camera_ = camera;
     frozen_valid_ = false;

@@ -165,6 +165,8 @@ public:
     /// The primary cells: given as flags (one per Eclipse cell), or chosen on the GPU as the active
     /// cells whose colouring value lies in a range (and inside an IJK box), which uploads nothing.
     void select(const Primaries& primaries);
+    /// No primary cell (`--primaries none`: the cut volumes alone cut).
+    void select_none();
 
     /// The user's cut volumes (closed meshes in model coordinates), uploaded once; every frame's
     /// stage 1 draws them into the cut beside the primaries' (FramePass::volume_cut). An empty list
