@@ -19,7 +19,7 @@ def main():
     names = dict(part.split(" = ") for part in context["volumes"].split(", "))
     rows = []
     for run in data["benchmarks"]:
-        index = run["name"].split("volumes:")[1]
+        index = run["name"].split("volumes:")[1].split("/")[0]
         rows.append((names[index], run))
     base = next(run["frame_ms"] for name, run in rows if name == "none")
     lines = ["# Cut volumes: their cost in the main job's frame (issue 45)", "",
