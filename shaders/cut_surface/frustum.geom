@@ -25,6 +25,8 @@
 // exactly (tests/gl/frustum_sweep_gl_test.cpp compares the two).
 // With BACK_FACE_ONLY defined only the back face is emitted: the cone-field strategies' seeds
 // (cut_surface/cut_seeds.h), the primaries' rear hull from their cell boxes.
+#include "cut_surface/wall_slope.glsl"
+
 layout(points) in;
 layout(triangle_strip, max_vertices = 20) out;
 
@@ -47,18 +49,6 @@ uniform float wall_u_per_depth;
 void emit(vec2 uv, float s) {
     gl_Position = vec4(uv * projection_scale, 2.0 * (s - near_plane) / (far_plane - near_plane) - 1.0, 1.0);
     EmitVertex();
-}
-
-/// k * back for the walls from edges `edge` (u and v) on `side` (-1: left/bottom, +1: right/top):
-/// |tan(atan(edge) - side * angle) - edge|, 1e4 (far outside any image) once the wall is flat.
-vec2 wall_slope(vec2 edge, float side, vec2 angle) {
-    const float flat_wall = 1e4;
-    vec2 slope;
-    for (int axis = 0; axis < 2; ++axis) {
-        float psi = atan(edge[axis]) - side * angle[axis];
-        slope[axis] = abs(psi) >= 1.5706963 ? flat_wall : min(abs(tan(psi) - edge[axis]), flat_wall);
-    }
-    return slope;
 }
 
 void main() {

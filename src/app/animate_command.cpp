@@ -140,6 +140,10 @@ int animate(const AnimateOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, scene.z_scale, scene.width, scene.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), scene);
+    // Wells are not read from the model yet: a `well:` volume is refused as unknown.
+    const CutVolumeSet cut_volumes =
+        load_cut_volumes(scene.cut_volumes, renderer.frame(), volumes::WellPaths{}, scene.model_memory_limit_bytes());
+    renderer.set_cut_volumes(cut_volumes.meshes);
     // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
     // redraws the whole cut another way at once (on petra it made the first step's largest
     // flicker). The animation keeps the one auto picks for its largest primary set.
@@ -176,7 +180,9 @@ int animate(const AnimateOptions& options) {
         const std::vector<std::uint8_t>& flags = *frame.flags;
         // A step held (none, between report steps) uploads nothing: the same values and primaries.
         if (frame.values_changed) renderer.set_colouring(*frame.values, label);
-        if (f == 0 || flags != previous_flags) renderer.select(flags);
+        // --primaries none: the volumes alone cut, whatever the steps' values select.
+        if (!settings.primaries && f == 0) renderer.select_none();
+        if (settings.primaries && (f == 0 || flags != previous_flags)) renderer.select(flags);
         pipeline::OrbitPose pose = scene.camera_pose();
         if (frame_count > 1) pose.azimuth_deg += float(options.orbit_deg * double(f) / double(frame_count - 1));
         const float bar_width = renderer.status(settings).colour_bar_reserved_width;
@@ -253,6 +259,7 @@ int animate(const AnimateOptions& options) {
         stats["video"] = {{"codec", "h264"}, {"pixel_format", "yuv420p"}, {"encoder", "ffmpeg libx264"},
                           {"preset", video.preset}, {"crf", video.crf}, {"fps", video.fps}};
         stats["configuration"] = describe(options);
+        stats["configuration"]["cut_volumes"] = cut_volumes.describe();
         stats["memory_bytes"] = {{"peak_resident", run_context::proc_status_bytes("VmHWM")}};
         io::write_file(options.stats, stats.dump(2) + '\n');
     }

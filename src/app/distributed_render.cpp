@@ -152,6 +152,9 @@ struct RankScene {
         });
         on_all_ranks(mpi, [&] {
             check_view(frame, options);
+            // Every rank draws every volume into its cut (the same on each: the max is unchanged).
+            // Wells are not read from the model yet: a `well:` volume is refused as unknown.
+            cut_volumes = load_cut_volumes(options.cut_volumes, frame, volumes::WellPaths{}, options.model_memory_limit_bytes());
             block = distributed::make_grid_block(model.grid, source, whole_dims, slab, tolerance);
             context = gl::create_context(options.context_options());
             shaders = std::make_unique<gl::ShaderLibrary>(gl::ShaderLibrary::default_root());
@@ -166,8 +169,13 @@ struct RankScene {
     void start(const RenderOptions& options) {
         const auto setup_started = std::chrono::steady_clock::now();
         rank.emplace(*shaders, std::move(*block), frame, options.width, options.height);
-        rank->set_colouring(property.values(), property.colour_bar_label(true));
-        rank->select_range(property.primary_range, ijk_box);
+        const bool primaries = options.frame_settings().primaries;
+        rank->set_colouring(property.values(), property.colour_bar_label(primaries));
+        rank->renderer().set_cut_volumes(cut_volumes.meshes);
+        if (primaries)
+            rank->select_range(property.primary_range, ijk_box);
+        else
+            rank->renderer().select_none();
         glFinish();
         setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
         property.owned = std::vector<float>();  // (= {} would keep the capacity)
@@ -187,6 +195,7 @@ struct RankScene {
     PropertyChoice property;
     std::optional<grid::IjkBox> ijk_box;
     pipeline::ModelFrame frame;
+    CutVolumeSet cut_volumes;
     double tolerance = 0;
     distributed::SlabAxis axis = distributed::SlabAxis::k;
     grid::IjkBox slab;
@@ -332,7 +341,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
                       gl::encode_png(pipeline::encode_cell_ids(rank.composited_ids(), options.width, options.height),
                                      options.cell_ids));
     const PropertyChoice& property = scene.property;
-    if (primary_count == 0)
+    if (primary_count == 0 && settings.primaries)
         std::cerr << "cutaway render: no cell of " << property.name << " lies in the primary range ["
                   << property.primary_range.min << ", " << property.primary_range.max << "]; rendering the context only\n";
     stats["faces_drawn"] = {{"secondary", faces_secondary}, {"primary", faces_primary}, {"summed_over_ranks", true}};
@@ -361,6 +370,8 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
                          {"colour_range", {property.colour_range.min, property.colour_range.max}}};
     stats["configuration"] = options.describe();
     stats["configuration"]["rank_slabs"] = options.rank_slabs;
+    stats["configuration"]["cut_volumes"] = scene.cut_volumes.describe();
+    stats["plan"] = rank.renderer().last_plan().describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
     stats["distributed"] = distributed_json(mpi, scene, gathered, stage_order, rank.last_exchange().allreduce_bytes);

@@ -180,8 +180,15 @@ int run_render(const RenderOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
-    renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by));
-    if (selected_by)
+    // Wells are not read from the model yet: a `well:` volume is refused as unknown.
+    const CutVolumeSet cut_volumes =
+        load_cut_volumes(options.cut_volumes, renderer.frame(), volumes::WellPaths{}, options.model_memory_limit_bytes());
+    renderer.set_cut_volumes(cut_volumes.meshes);
+    const bool primaries = options.frame_settings().primaries;
+    renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by && primaries));
+    if (!primaries)
+        renderer.select_none();
+    else if (selected_by)
         renderer.select(selected_by->flags);
     else
         renderer.select({property.primary_range, box});
@@ -194,12 +201,13 @@ int run_render(const RenderOptions& options) {
     const std::string selected_name = selected_by ? selected_by->label : property.label;
     const grid::PrimaryRange selected_range = selected_by ? selected_by->range : property.primary_range;
     refuse_nothing_to_draw(options, primary_count, selected_name, selected_range);
-    if (primary_count == 0)
+    if (primary_count == 0 && primaries)
         std::cerr << "cutaway render: no cell of " << selected_name << " lies in the primary range ["
                   << selected_range.min << ", " << selected_range.max << "]; rendering the context only\n";
     const pipeline::FrameSettings settings = options.frame_settings();
     const pipeline::Camera camera = frame_camera(renderer, settings, options);
     const std::vector<pipeline::FrameTimes> runs = timed_frames(renderer, settings, camera, options);
+    const std::vector<std::string> frame_plan = renderer.last_plan().describe();  // before the metrics' frames
     memory["resident_after_frames"] = run_context::proc_status_bytes("VmRSS");
     // Committed together once the stats are written too: a failed --stats leaves no image behind.
     io::OutputBatch outputs;
@@ -231,6 +239,8 @@ int run_render(const RenderOptions& options) {
         stats["colour_bar_box"] = {bar.x0, bar.y0, bar.x1, bar.y1};
     }
     stats["configuration"] = options.describe();
+    stats["configuration"]["cut_volumes"] = cut_volumes.describe();
+    stats["plan"] = frame_plan;
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
     if (!options.stats.empty()) outputs.write(options.stats, stats.dump(2) + '\n');

@@ -29,6 +29,15 @@ CLI::Option* add_choice(CLI::App& c, const std::string& name, std::string& value
     return c.add_option(name, value, pipeline::joined_choices(names) + ": " + help)->check(one_of(names));
 }
 
+/// The option given that selects primaries (empty if none): what --primaries none refuses.
+std::string primary_selecting_option(const RenderOptions& o) {
+    if (!o.range.empty()) return "--range";
+    if (o.primary_fraction > 0) return "--primary-fraction";
+    if (!o.ijk_box.empty()) return "--ijk-box";
+    if (!o.select_by.empty()) return "--select-by";
+    return {};
+}
+
 std::string names_of(const std::vector<std::string>& names) {
     std::string text;
     for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
@@ -80,6 +89,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
     s.draw = parse_choice("--draw", draw, choices_of(DrawMode{}));
     s.stage2_passes = parse_choice("--stage2-passes", stage2_passes, choices_of(Stage2Passes{}));
     s.seeds = parse_choice("--seeds", seeds, choices_of(SeedSource{}));
+    s.primaries = parse_choice("--primaries", cut_volumes.primaries, primaries_choices());
     const std::vector<std::string> strategies = cut_strategy_names();
     if (std::find(strategies.begin(), strategies.end(), s.strategy) == strategies.end())
         throw std::invalid_argument("--strategy '" + s.strategy + "': expected " + joined_choices(strategies));
@@ -99,7 +109,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
-    return {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
+    nlohmann::json description = {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
             {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"stage2_passes", pipeline::to_string(s.stage2_passes)}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
@@ -112,6 +122,8 @@ nlohmann::json RenderOptions::describe() const {
             {"scale", scale}, {"colour_range", colour_range}, {"text_height_px", text_height_px},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
             {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
+    description.update(cut_volumes.describe());
+    return description;
 }
 
 void add_selection_options(CLI::App& c, RenderOptions& o) {
@@ -204,9 +216,16 @@ void add_scene_options(CLI::App& c, RenderOptions& o) {
     // Vertical exaggerations beyond 1000 flatten every model into a line.
     c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)")->check(finite_in(0, 1000));
     add_memory_limit_option(c, o.memory_limit_gb, "models and render targets");
+    add_cut_volume_options(c, o.cut_volumes);
     c.callback([&o] {
         o.width = o.size[0];
         o.height = o.size[1];
+        finish_cut_volume_options(o.cut_volumes);
+        try {
+            check_primaries_none(o.cut_volumes, primary_selecting_option(o), o.only == "primaries");
+        } catch (const std::invalid_argument& e) {
+            throw CLI::ValidationError(e.what());
+        }
         // Render targets are reserved from the one memory budget before the model is read.
         if (o.render_target_bytes() > o.memory_limit_bytes())
             throw CLI::ValidationError("--size", memory_limit_problem(o.render_target_bytes(), o.memory_limit_bytes(),

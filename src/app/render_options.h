@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "annotation/colour_bar_layout.h"
+#include "app/cut_volume_options.h"
 #include "app/option_checks.h"
 #include "cutaway/camera.h"
 #include "cutaway/frame_settings.h"
@@ -65,6 +66,7 @@ struct RenderOptions {
     std::string egl_platform = "auto";
     double memory_limit_gb = default_memory_limit_gib;
     std::string rank_slabs = "k";     ///< under mpirun: the axis the model is cut along into slabs
+    CutVolumeOptions cut_volumes;     ///< --cut-volume, --cut-volumes, --primaries
 
     std::size_t memory_limit_bytes() const;
     /// What the frame's targets and read-backs need for --size (render_target_bytes_per_pixel each).

@@ -107,6 +107,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       primary_(shaders),
       mean_filter_(shaders),
       cut_resolve_(shaders),
+      volume_cut_(shaders),
       ssao_(shaders),
       composite_(shaders),
       colour_bar_(shaders) {
@@ -190,6 +191,13 @@ void CutawayRenderer::select(const Primaries& primaries) {
     else select_range(primaries.range, primaries.box);
 }
 
+void CutawayRenderer::set_cut_volumes(const std::vector<shapes::TriangleMesh>& meshes) {
+    volume_cut_.set_volumes(meshes, frame_);
+    frozen_valid_ = false;
+}
+
+void CutawayRenderer::select_none() { set_primaries(std::vector<std::uint8_t>(grid_.cell_count(), 0)); }
+
 void CutawayRenderer::freeze(const std::optional<Camera>& camera) {
     frozen_camera_ = camera;
     frozen_valid_ = false;
@@ -215,7 +223,8 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
     status.gpu_memory_by_part = {{"grid", buffers_.memory_bytes()},
                                  {"culling", visible_.memory_bytes()},
                                  {"selection", selection_.memory_bytes()},
-                                 {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0}};
+                                 {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0},
+                                 {"cut_volumes", volume_cut_.memory_bytes()}};
     return status;
 }
 
@@ -306,6 +315,7 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
     state.frozen = frozen_camera_.has_value();
     state.frozen_cut_valid = frozen_valid_;
     state.cone_field_strategy = bool(find_cut_surface(cut_strategy(s)).cpu_reference);
+    state.cut_volumes = !volume_cut_.empty();
     state.distributed = bool(hooks_.combine_max);
     state.screen_passes = hooks_.screen_passes;
     return state;
@@ -355,6 +365,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     switch (pass) {
     case FramePass::clear_cut: cut_.clear(); return;
     case FramePass::strategy_cut: draw_strategy_cut(f); return;
+    case FramePass::volume_cut: volume_cut_.draw(cut_inputs(f.settings, f.cut_camera), cut_); return;
     case FramePass::rear_shell: rear_shell_.render(buffers_, f.cut_camera, f.plan.draw_primaries); return;
     case FramePass::combine_cut: {
         std::vector<const gl::Texture*> images;

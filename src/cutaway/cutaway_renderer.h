@@ -16,6 +16,7 @@
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
+#include "cutaway/cut_surface/volume_cut.h"
 #include "cutaway/exposed_surface.h"
 #include "cutaway/frame_plan.h"
 #include "cutaway/frame_settings.h"
@@ -164,6 +165,17 @@ public:
     /// The primary cells: given as flags (one per Eclipse cell), or chosen on the GPU as the active
     /// cells whose colouring value lies in a range (and inside an IJK box), which uploads nothing.
     void select(const Primaries& primaries);
+    /// No primary cell (`--primaries none`: the cut volumes alone cut).
+    void select_none();
+
+    /// The user's cut volumes (closed meshes in model coordinates), uploaded once; every frame's
+    /// stage 1 draws them into the cut beside the primaries' (FramePass::volume_cut). An empty list
+    /// removes them. A frozen cut is made again.
+    void set_cut_volumes(const std::vector<shapes::TriangleMesh>& meshes);
+    /// The passes of the last frame, by stage (FramePlan::describe in stats.json).
+    const FramePlan& last_plan() const { return last_plan_; }
+    /// Triangles of the cut volumes set.
+    std::size_t cut_volume_triangles() const { return volume_cut_.triangle_count(); }
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until freeze(std::nullopt).
     void freeze(const std::optional<Camera>& camera);
@@ -279,6 +291,7 @@ private:
     PrimaryPass primary_;
     MeanFilter mean_filter_;
     CutResolve cut_resolve_;
+    VolumeCut volume_cut_;
     Ssao ssao_;
     Composite composite_;
     ColourBar colour_bar_;

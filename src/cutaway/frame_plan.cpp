@@ -13,6 +13,7 @@ struct PassInfo {
 constexpr PassInfo pass_names[] = {
     {FramePass::clear_cut, "clear_cut"},
     {FramePass::strategy_cut, "strategy_cut"},
+    {FramePass::volume_cut, "volume_cut"},
     {FramePass::rear_shell, "rear_shell"},
     {FramePass::combine_cut, "combine_cut"},
     {FramePass::resolve_cut, "resolve_cut"},
@@ -34,12 +35,14 @@ constexpr PassInfo pass_names[] = {
 
 /// Stage 1 and what follows it: the strategy's cut, the distributed max, the mean filter; the cut
 /// is resolved (normals, clamp) at the end of whichever of them runs last.
-void plan_cut(const FrameSettings& s, FramePlan& plan) {
+void plan_cut(const FrameSettings& s, const RendererState& state, FramePlan& plan) {
     const bool filtered = plan.cut_drawn && s.mean_filter >= 3;
     const bool combined = plan.combine_seeds || plan.combine_cut_depth;
     PlannedStage cut{"cut_surface", {FramePass::clear_cut}};
     if (plan.cut_drawn) {
-        cut.passes.push_back(FramePass::strategy_cut);
+        // Without a primary set (--primaries none) the volumes alone cut.
+        if (s.primaries) cut.passes.push_back(FramePass::strategy_cut);
+        if (state.cut_volumes) cut.passes.push_back(FramePass::volume_cut);
         if (plan.clamp_to_rear_shell) cut.passes.push_back(FramePass::rear_shell);
         if (!combined && !filtered) cut.passes.push_back(FramePass::resolve_cut);
     }
@@ -91,7 +94,8 @@ PassTargets targets_of(FramePass pass, const FramePlan& plan) {
     const std::uint32_t clamp = plan.clamp_to_rear_shell ? target_rear_shell : 0;
     switch (pass) {
     case FramePass::clear_cut: return {0, target_cut_depth | target_cut_surface};
-    case FramePass::strategy_cut: return {0, target_cut_depth};
+    case FramePass::strategy_cut:
+    case FramePass::volume_cut: return {0, target_cut_depth};
     case FramePass::rear_shell: return {0, target_rear_shell};
     case FramePass::combine_cut: {
         const std::uint32_t images = (plan.combine_cut_depth ? target_cut_depth : 0) | (plan.combine_rear_shell ? target_rear_shell : 0);
@@ -137,18 +141,20 @@ std::vector<std::string> FramePlan::describe() const {
 FramePlan plan_frame(const FrameSettings& s, const RendererState& state) {
     FramePlan plan;
     plan.cut_needed = s.only != OnlyLayer::primaries;
-    plan.draw_primaries = s.only != OnlyLayer::secondaries;
+    plan.draw_primaries = s.only != OnlyLayer::secondaries && s.primaries;
     plan.cut_drawn = plan.cut_needed && s.cut_enabled;
     plan.clamp_to_rear_shell = !s.see_through;
     plan.makes_cut = !(state.frozen && state.frozen_cut_valid);
     const bool combined = plan.cut_drawn && state.distributed;
     // Cone-field strategies combine their seeds (inside stage 1, before the transform); the
     // others their cut. A max either way.
-    plan.combine_seeds = combined && state.cone_field_strategy;
-    plan.combine_cut_depth = combined && !state.cone_field_strategy;
+    // Every renderer draws the same cut volumes, so seeds combined before them suffice.
+    const bool seeds = state.cone_field_strategy && s.primaries;
+    plan.combine_seeds = combined && seeds;
+    plan.combine_cut_depth = combined && !seeds;
     plan.combine_rear_shell = combined && plan.clamp_to_rear_shell;
     plan.clip_view_rear_shell = plan.cut_drawn && state.frozen && plan.clamp_to_rear_shell;
-    if (plan.makes_cut) plan_cut(s, plan);
+    if (plan.makes_cut) plan_cut(s, state, plan);
     plan_secondaries(s, plan);
     plan_primaries_and_post(s, state, plan);
     return plan;

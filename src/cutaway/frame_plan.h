@@ -16,6 +16,7 @@ namespace cutaway::pipeline {
 enum class FramePass {
     clear_cut,           ///< the cut's depth image cleared to "nothing cut"
     strategy_cut,        ///< the cut-surface strategy draws the primaries' cut (stage 1)
+    volume_cut,          ///< the user's cut volumes drawn into the same cut by the same max (stage 1)
     rear_shell,          ///< the model's rear shell seen from the cut camera (the clamp)
     combine_cut,         ///< distributed: per-pixel max of the cut and rear shell over all renderers
     resolve_cut,         ///< normals and rear-shell clamp of the unfiltered cut into the cut surface
@@ -56,6 +57,7 @@ struct RendererState {
     bool frozen = false;             ///< freeze view is on
     bool frozen_cut_valid = false;   ///< the frozen camera's cut is made and still holds
     bool cone_field_strategy = false;  ///< the frame's strategy combines its seeds, not its cut
+    bool cut_volumes = false;        ///< cut volumes are set (CutawayRenderer::set_cut_volumes)
     bool distributed = false;        ///< hooks combine the frame over several renderers
     bool screen_passes = true;       ///< this renderer runs SSAO and post (false: a rank other than 0)
 };

@@ -19,6 +19,7 @@ constexpr NamedChoice<ColourScale> colour_scales[] = {
     {"auto", ColourScale::automatic}, {"linear", ColourScale::linear}, {"log", ColourScale::log}};
 constexpr NamedChoice<bool> on_off[] = {{"on", true}, {"off", false}};
 constexpr NamedChoice<bool> ssao_resolutions[] = {{"half", true}, {"full", false}};
+constexpr NamedChoice<bool> primary_sets[] = {{"property", true}, {"none", false}};
 
 }  // namespace
 
@@ -31,6 +32,7 @@ ChoiceTable<Stage2Passes> choices_of(Stage2Passes) { return stage2_passes; }
 ChoiceTable<ColourScale> choices_of(ColourScale) { return colour_scales; }
 ChoiceTable<bool> on_off_choices() { return on_off; }
 ChoiceTable<bool> ssao_resolution_choices() { return ssao_resolutions; }
+ChoiceTable<bool> primaries_choices() { return primary_sets; }
 
 std::string joined_choices(const std::vector<std::string>& names) {
     std::string text;

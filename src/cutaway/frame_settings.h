@@ -63,6 +63,9 @@ struct FrameSettings {
     bool contours = true;                  ///< shell contour lines (stage 3)
     bool hide_internal_lines = false;
     OnlyLayer only = OnlyLayer::both;
+    /// false (`--primaries none`): no primary set; the cut is made by the cut volumes alone and
+    /// stage 3 draws no primaries.
+    bool primaries = true;
     bool cut_enabled = true;               ///< false: no cut at all (the uncut reference frame)
     /// true: the cut may leave the model through its rear shell (background shows through), as
     /// the paper's frustums do; false: clamped to just in front of the farthest shell surface.

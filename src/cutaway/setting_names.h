@@ -32,6 +32,8 @@ ChoiceTable<ColourScale> choices_of(ColourScale);
 /// The two-way switches spelled as words on the command line.
 ChoiceTable<bool> on_off_choices();           ///< --ssao, --contours: on|off
 ChoiceTable<bool> ssao_resolution_choices();  ///< --ssao-resolution: half (true) | full
+/// --primaries: property (true: chosen by --property's range or fraction, or --select-by) | none
+ChoiceTable<bool> primaries_choices();
 
 template <typename Value>
 std::optional<Value> find_choice(ChoiceTable<Value> table, std::string_view name) {

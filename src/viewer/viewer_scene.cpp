@@ -9,7 +9,12 @@ namespace cutaway::viewer {
 
 ViewerScene::ViewerScene(app::LoadedModel model, const gl::ShaderLibrary& shaders, const app::RenderOptions& options,
                          int width, int height)
-    : model_(std::move(model)), shaders_(shaders), z_scale_(options.z_scale) {
+    : model_(std::move(model)),
+      shaders_(shaders),
+      z_scale_(options.z_scale),
+      primaries_(options.frame_settings().primaries),
+      volume_options_(options.cut_volumes),
+      memory_limit_bytes_(options.model_memory_limit_bytes()) {
     select(options);
     rebuild_renderer(width, height, options.frame_settings());
 }
@@ -29,11 +34,22 @@ void ViewerScene::select(const app::RenderOptions& options) {
     box_ = box;
     if (!renderer_) return;
     if (!same_values) apply_colouring(*renderer_);
-    renderer_->select({property_.primary_range, box_});
+    select_primaries(*renderer_);
+}
+
+void ViewerScene::select_primaries(pipeline::CutawayRenderer& renderer) const {
+    if (primaries_)
+        renderer.select({property_.primary_range, box_});
+    else
+        renderer.select_none();
 }
 
 void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings) {
     auto renderer = std::make_unique<pipeline::CutawayRenderer>(shaders_, model_.grid, z_scale_, width, height);
+    // Wells are not read from the model yet: a `well:` volume is refused as unknown.
+    if (!cut_volumes_)
+        cut_volumes_ = app::load_cut_volumes(volume_options_, renderer->frame(), volumes::WellPaths{}, memory_limit_bytes_);
+    renderer->set_cut_volumes(cut_volumes_->meshes);
     apply_selection(*renderer);
     // One frame compiles every program the settings use, so a broken shader fails here and the
     // previous renderer stays.
@@ -43,7 +59,7 @@ void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameS
 
 void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
     apply_colouring(renderer);
-    renderer.select({property_.primary_range, box_});
+    select_primaries(renderer);
 }
 
 void ViewerScene::apply_colouring(pipeline::CutawayRenderer& renderer) const {

@@ -40,12 +40,17 @@ public:
 private:
     void apply_selection(pipeline::CutawayRenderer& renderer) const;
     void apply_colouring(pipeline::CutawayRenderer& renderer) const;
+    void select_primaries(pipeline::CutawayRenderer& renderer) const;
 
     app::LoadedModel model_;
     const gl::ShaderLibrary& shaders_;
     double z_scale_;
     app::PropertyChoice property_;
     std::optional<grid::IjkBox> box_;
+    bool primaries_ = true;  ///< false: --primaries none
+    app::CutVolumeOptions volume_options_;
+    std::size_t memory_limit_bytes_ = 0;
+    std::optional<app::CutVolumeSet> cut_volumes_;  ///< built with the first renderer (its frame)
     PropertyHistogram histogram_;
     std::unique_ptr<pipeline::CutawayRenderer> renderer_;
 };

@@ -156,4 +156,17 @@ protected:
     fs::path scratch_;
 };
 
+/// The cases that reach the renderer (EGL on llvmpipe): a 64 x 64 frame, one repetition.
+class BadInputGl : public BadInput {
+protected:
+    std::vector<std::string> render_args(const fs::path& grid) const {
+        return {"render", grid.string(), "--size", "64", "64", "--repeat", "1", "--warmup", "0"};
+    }
+    ProcessResult render(const fs::path& grid, const std::vector<std::string>& more) const {
+        std::vector<std::string> args = render_args(grid);
+        args.insert(args.end(), more.begin(), more.end());
+        return cutaway(args);
+    }
+};
+
 }  // namespace cutaway::testing

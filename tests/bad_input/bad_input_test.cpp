@@ -331,18 +331,6 @@ TEST_F(BadInput, SeismicHeaderFields65535ArePrintedUnsigned) {
 
 // ---- cases that reach the renderer (EGL on llvmpipe) ------------------------------------------
 
-class BadInputGl : public BadInput {
-protected:
-    std::vector<std::string> render_args(const fs::path& grid) const {
-        return {"render", grid.string(), "--size", "64", "64", "--repeat", "1", "--warmup", "0"};
-    }
-    ProcessResult render(const fs::path& grid, const std::vector<std::string>& more) const {
-        std::vector<std::string> args = render_args(grid);
-        args.insert(args.end(), more.begin(), more.end());
-        return cutaway(args);
-    }
-};
-
 TEST_F(BadInputGl, FullDiskForTheImageOrTheStatsIsExit2) {
     const fs::path grid = file("tiny.grdecl", kTinyGrid);
     expect_refused(render(grid, {"--no-metrics", "--out", "/dev/full"}), {"/dev/full", "No space left on device"});

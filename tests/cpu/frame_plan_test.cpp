@@ -93,6 +93,39 @@ TEST(FramePlan, OnlyPrimariesDrawsNoCutAndNoSecondaries) {
     EXPECT_TRUE(plan.runs(FramePass::primaries));
 }
 
+TEST(FramePlan, CutVolumesDrawIntoTheCutAfterThePrimaries) {
+    RendererState volumes;
+    volumes.cut_volumes = true;
+    const FramePlan plan = plan_frame(FrameSettings{}, volumes);
+    EXPECT_EQ(passes_of(plan, "cut_surface"), (std::vector<FramePass>{FramePass::clear_cut, FramePass::strategy_cut,
+                                                                     FramePass::volume_cut, FramePass::rear_shell}));
+    EXPECT_EQ(first_unwritten_read(plan), "");
+    // Without volumes the pass is not planned.
+    EXPECT_FALSE(plan_frame(FrameSettings{}, RendererState{}).runs(FramePass::volume_cut));
+    // Freeze view keeps the volumes' cut with the primaries'.
+    volumes.frozen = volumes.frozen_cut_valid = true;
+    EXPECT_FALSE(plan_frame(FrameSettings{}, volumes).runs(FramePass::volume_cut));
+}
+
+TEST(FramePlan, PrimariesNoneCutsByVolumesAloneAndDrawsNoPrimaries) {
+    FrameSettings none;
+    none.primaries = false;
+    none.mean_filter = 0;
+    RendererState volumes;
+    volumes.cut_volumes = true;
+    const FramePlan plan = plan_frame(none, volumes);
+    EXPECT_EQ(passes_of(plan, "cut_surface"), (std::vector<FramePass>{FramePass::clear_cut, FramePass::volume_cut,
+                                                                     FramePass::rear_shell, FramePass::resolve_cut}));
+    EXPECT_FALSE(plan.runs(FramePass::primaries));
+    EXPECT_TRUE(plan.runs(FramePass::secondaries));
+    // Distributed with a cone-field strategy: no strategy runs, so the cut itself is combined.
+    volumes.distributed = volumes.cone_field_strategy = true;
+    const FramePlan ranks = plan_frame(none, volumes);
+    EXPECT_FALSE(ranks.combine_seeds);
+    EXPECT_TRUE(ranks.combine_cut_depth);
+    EXPECT_EQ(first_unwritten_read(ranks), "");
+}
+
 TEST(FramePlan, ThePapersPathListsSecondaryFacesUntimed) {
     FrameSettings s;
     s.draw = DrawMode::all_faces;
@@ -103,7 +136,7 @@ TEST(FramePlan, ThePapersPathListsSecondaryFacesUntimed) {
 
 TEST(FramePlan, EverySettingCombinationIsConsistent) {
     // Every combination of the switches that change the plan: no pass reads an unwritten target.
-    for (int bits = 0; bits < 1 << 10; ++bits) {
+    for (int bits = 0; bits < 1 << 12; ++bits) {
         FrameSettings s;
         s.see_through = bits & 1;
         s.mean_filter = (bits & 2) ? 9 : 0;
@@ -115,6 +148,8 @@ TEST(FramePlan, EverySettingCombinationIsConsistent) {
         state.frozen_cut_valid = (bits & 64) && (bits & 128);
         state.distributed = bits & 256;
         state.cone_field_strategy = bits & 512;
+        state.cut_volumes = bits & 1024;
+        s.primaries = !(bits & 2048);
         const FramePlan plan = plan_frame(s, state);
         EXPECT_EQ(first_unwritten_read(plan), "") << "combination " << bits;
     }

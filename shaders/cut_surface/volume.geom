@@ -1,0 +1,100 @@
+#version 450 core
+// Stage 1, cut volumes: what one triangle of a closed volume removes. With the depth test keeping
+// the farthest fragment (GL_GREATER), the union over the volume's triangles is everything between
+// the camera and the volume's rear, bevelled as the primaries' frustums are (frustum.geom):
+//  - the triangle itself, in clip space with w = s, so its depth is the true depth of the plane
+//    (volume.frag writes s; the rear triangles win the max);
+//  - for an aperture above 0, walls from it towards the camera, down to the rim depth (nothing in
+//    front of the model can be cut). In the perspective-divided space (u, v, s) of frustum.geom the
+//    point p's cut is a pyramid whose sides lean out by wall_slope() (the same function, the same
+//    --aperture): u in [u_p - l (s_p - s) / s_p, u_p + r (s_p - s) / s_p], likewise v. The union
+//    of the pyramids over the triangle is the convex hull of its corners' pyramids; its upper
+//    surface is the triangle, one plane through each edge (to the pyramid corner that lies
+//    farthest out across the edge: both sides are emitted, the test keeps the right one) and the
+//    pyramids' own sides at the corners, all of which are emitted (every piece lies inside the
+//    hull, so none cuts too much). At aperture 0 the walls follow view rays and cover no pixel:
+//    the cut is exactly the volume's silhouette at its rear depth.
+// A triangle with a corner at or in front of the near plane gets no walls (its clipped part is
+// drawn; the neighbouring triangles' walls bevel the rest).
+#include "cut_surface/wall_slope.glsl"
+
+layout(triangles) in;
+layout(triangle_strip, max_vertices = 51) out;
+
+in VolumeCorner {
+    vec3 eye;
+} corner[];
+
+out float eye_depth;  // s, the depth along the cut camera's view axis
+
+uniform vec2 projection_scale;  // P[0][0], P[1][1] of the cut camera
+uniform float near_plane;
+uniform float far_plane;
+uniform float rim_depth;
+uniform vec2 wall_angle;        // horizontal, vertical: half the full apertures, radians
+
+/// A point of the triangle: perspective (w = s), so varyings interpolate as in eye space.
+void emit_eye(vec3 eye) {
+    float s = -eye.z;
+    gl_Position = vec4(eye.xy * projection_scale, s * (2.0 * (s - near_plane) / (far_plane - near_plane) - 1.0), s);
+    eye_depth = s;
+    EmitVertex();
+}
+
+/// A point of a wall, (u, v) at depth s with w = 1: depth linear in screen space, as frustum.geom's.
+void emit_uv(vec2 uv, float s) {
+    gl_Position = vec4(uv * projection_scale, 2.0 * (s - near_plane) / (far_plane - near_plane) - 1.0, 1.0);
+    eye_depth = s;
+    EmitVertex();
+}
+
+vec2 uv[3];
+float depth[3];
+float rim[3];
+vec2 out_lo[3];  // how far the pyramid reaches left / down at the rim (positive)
+vec2 out_hi[3];  // right / up
+
+/// Corner `i`'s pyramid at the rim, on the sides `side` (-1 or +1 per axis).
+vec2 rim_corner(int i, vec2 side) {
+    return uv[i] + vec2(side.x > 0.0 ? out_hi[i].x : -out_lo[i].x, side.y > 0.0 ? out_hi[i].y : -out_lo[i].y);
+}
+
+void emit_edge_wall(int i, int j, vec2 side) {
+    emit_uv(uv[i], depth[i]);
+    emit_uv(uv[j], depth[j]);
+    emit_uv(rim_corner(i, side), rim[i]);
+    emit_uv(rim_corner(j, side), rim[j]);
+    EndPrimitive();
+}
+
+void emit_pyramid(int i) {
+    vec2 c00 = rim_corner(i, vec2(-1, -1)), c10 = rim_corner(i, vec2(1, -1));
+    vec2 c11 = rim_corner(i, vec2(1, 1)), c01 = rim_corner(i, vec2(-1, 1));
+    emit_uv(c00, rim[i]); emit_uv(uv[i], depth[i]); emit_uv(c10, rim[i]); emit_uv(c11, rim[i]);
+    EndPrimitive();
+    emit_uv(c11, rim[i]); emit_uv(uv[i], depth[i]); emit_uv(c01, rim[i]); emit_uv(c00, rim[i]);
+    EndPrimitive();
+}
+
+void main() {
+    for (int i = 0; i < 3; ++i) emit_eye(corner[i].eye);
+    EndPrimitive();
+    if (wall_angle.x <= 0.0 && wall_angle.y <= 0.0) return;
+    for (int i = 0; i < 3; ++i) {
+        depth[i] = -corner[i].eye.z;
+        if (depth[i] <= near_plane) return;
+        uv[i] = corner[i].eye.xy / depth[i];
+        rim[i] = min(rim_depth, depth[i]);
+        float reach = (depth[i] - rim[i]) / depth[i];
+        out_lo[i] = wall_slope(uv[i], -1.0, wall_angle) * reach;
+        out_hi[i] = wall_slope(uv[i], 1.0, wall_angle) * reach;
+    }
+    for (int i = 0; i < 3; ++i) {
+        int j = (i + 1) % 3;
+        vec2 across = vec2(uv[i].y - uv[j].y, uv[j].x - uv[i].x);
+        vec2 side = vec2(across.x >= 0.0 ? 1.0 : -1.0, across.y >= 0.0 ? 1.0 : -1.0);
+        emit_edge_wall(i, j, side);
+        emit_edge_wall(i, j, -side);
+    }
+    for (int i = 0; i < 3; ++i) emit_pyramid(i);
+}

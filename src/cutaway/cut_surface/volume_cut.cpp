@@ -1,0 +1,56 @@
+#include "cutaway/cut_surface/volume_cut.h"
+
+#include <stdexcept>
+
+#include "gl/uniforms.h"
+
+namespace cutaway::pipeline {
+
+VolumeCut::VolumeCut(const gl::ShaderLibrary& shaders)
+    : program_(shaders.build({{GL_VERTEX_SHADER, "cut_surface/volume.vert"},
+                              {GL_GEOMETRY_SHADER, "cut_surface/volume.geom"},
+                              {GL_FRAGMENT_SHADER, "cut_surface/volume.frag"}})) {}
+
+void VolumeCut::set_volumes(const std::vector<shapes::TriangleMesh>& meshes, const ModelFrame& frame) {
+    std::vector<float> corners;
+    for (const shapes::TriangleMesh& mesh : meshes)
+        for (const auto& triangle : mesh.triangles)
+            for (std::uint32_t index : triangle) {
+                if (index >= mesh.positions.size()) throw std::invalid_argument("cut volume: triangle index out of range");
+                const glm::vec3 p = frame.to_render(mesh.positions[index]);
+                corners.insert(corners.end(), {p.x, p.y, p.z});
+            }
+    triangles_ = corners.size() / 9;
+    positions_ = corners.empty() ? gl::Buffer() : gl::Buffer::from(std::span<const float>(corners));
+    glVertexArrayVertexBuffer(vertex_array_.id(), 0, positions_.id(), 0, GLsizei(3 * sizeof(float)));
+    glEnableVertexArrayAttrib(vertex_array_.id(), 0);
+    glVertexArrayAttribFormat(vertex_array_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vertex_array_.id(), 0, 0);
+}
+
+void VolumeCut::draw(const CutSurfaceInputs& in, const CutTargets& targets) const {
+    if (empty()) return;
+    const Camera& camera = in.cut_camera;
+    const gl::Program& p = program_;
+    gl::set_uniform(p, "cut_view", camera.view);
+    gl::set_uniform(p, "near_plane", camera.near_plane);
+    gl::set_uniform(p, "far_plane", camera.far_plane);
+    gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
+    gl::set_uniform(p, "rim_depth", in.rim_depth);
+    gl::set_uniform(p, "wall_angle", glm::vec2(in.wall_angle_h_rad, in.wall_angle_v_rad));
+    targets.framebuffer.bind();
+    glViewport(0, 0, camera.width, camera.height);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_GREATER);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    // A volume reaching beyond the far plane cuts to it rather than being clipped open there.
+    glEnable(GL_DEPTH_CLAMP);
+    vertex_array_.bind();
+    p.use();
+    glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
+    glDisable(GL_DEPTH_CLAMP);
+    glDepthFunc(GL_LESS);
+}
+
+}  // namespace cutaway::pipeline
