@@ -14,6 +14,10 @@
 //    pyramids' own sides at the corners, all of which are emitted (every piece lies inside the
 //    hull, so none cuts too much). At aperture 0 the walls follow view rays and cover no pixel:
 //    the cut is exactly the volume's silhouette at its rear depth.
+// Only rear triangles (facing away from the camera) are drawn: in a closed volume the view ray
+// through a front triangle's point leaves the volume through a rear one, farther at the same
+// (u, v), whose pyramid holds the front point's (the pyramid widens with depth), so the front
+// triangles add nothing to the max and would only double the fill.
 // A triangle with a corner at or in front of the near plane gets no walls (its clipped part is
 // drawn; the neighbouring triangles' walls bevel the rest).
 #include "cut_surface/wall_slope.glsl"
@@ -32,6 +36,7 @@ uniform float near_plane;
 uniform float far_plane;
 uniform float rim_depth;
 uniform vec2 wall_angle;        // horizontal, vertical: half the full apertures, radians
+uniform float outward_sign;     // +1: triangles wound outward in render space, -1: mirrored
 
 /// A point of the triangle: perspective (w = s), so varyings interpolate as in eye space.
 void emit_eye(vec3 eye) {
@@ -77,6 +82,8 @@ void emit_pyramid(int i) {
 }
 
 void main() {
+    vec3 outward = outward_sign * cross(corner[1].eye - corner[0].eye, corner[2].eye - corner[0].eye);
+    if (dot(outward, -corner[0].eye) > 0.0) return;  // faces the camera (the eye is at the origin)
     for (int i = 0; i < 3; ++i) emit_eye(corner[i].eye);
     EndPrimitive();
     if (wall_angle.x <= 0.0 && wall_angle.y <= 0.0) return;

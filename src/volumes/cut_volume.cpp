@@ -15,7 +15,10 @@ std::string number(double value) {
 
 std::string numbers(std::initializer_list<double> values) {
     std::string text;
-    for (double v : values) text += (text.empty() ? "" : ",") + number(v);
+    for (double v : values) {
+        if (!text.empty()) text += ',';
+        text += number(v);
+    }
     return text;
 }
 
@@ -27,7 +30,9 @@ struct SpecText {
         return "cylinder:" + numbers({c.from.x, c.from.y, c.from.z, c.to.x, c.to.y, c.to.z, c.radius});
     }
     std::string operator()(const WellVolume& w) const {
-        return "well:" + w.name + (w.radius ? "," + number(*w.radius) : std::string());
+        std::string text = "well:" + w.name;
+        if (w.radius) text.append(",").append(number(*w.radius));
+        return text;
     }
     std::string operator()(const MeshVolume& m) const { return "mesh:" + m.file; }
 };

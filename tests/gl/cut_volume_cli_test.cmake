@@ -55,7 +55,7 @@ endfunction()
 render(box --primaries none --cut-volume ${BOX})
 expect_volume(box box 12)
 render(cylinder --primaries none --cut-volume ${CYLINDER})
-expect_volume(cylinder cylinder 192)  # 48 sides: 96 wall triangles and 48 per cap
+expect_volume(cylinder cylinder 96)  # 24 sides: 48 wall triangles and 24 per cap
 render(mesh --primaries none --cut-volume ${MESH})
 expect_volume(mesh mesh 12)
 # A box away from the model cuts nothing: the volumes above did cut.

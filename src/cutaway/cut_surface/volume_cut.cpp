@@ -21,6 +21,12 @@ void VolumeCut::set_volumes(const std::vector<shapes::TriangleMesh>& meshes, con
                 corners.insert(corners.end(), {p.x, p.y, p.z});
             }
     triangles_ = corners.size() / 9;
+    // Triangles are wound outward in model coordinates; a mirroring model-to-render map (depth
+    // positive down) turns them inward, which the shader's rear-face test must know.
+    const glm::vec3 o = frame.to_render({0, 0, 0});
+    const float det = glm::dot(frame.to_render({1, 0, 0}) - o,
+                               glm::cross(frame.to_render({0, 1, 0}) - o, frame.to_render({0, 0, 1}) - o));
+    outward_sign_ = det < 0 ? -1.0f : 1.0f;
     positions_ = corners.empty() ? gl::Buffer() : gl::Buffer::from(std::span<const float>(corners));
     glVertexArrayVertexBuffer(vertex_array_.id(), 0, positions_.id(), 0, GLsizei(3 * sizeof(float)));
     glEnableVertexArrayAttrib(vertex_array_.id(), 0);
@@ -38,6 +44,7 @@ void VolumeCut::draw(const CutSurfaceInputs& in, const CutTargets& targets) cons
     gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
     gl::set_uniform(p, "rim_depth", in.rim_depth);
     gl::set_uniform(p, "wall_angle", glm::vec2(in.wall_angle_h_rad, in.wall_angle_v_rad));
+    gl::set_uniform(p, "outward_sign", outward_sign_);
     targets.framebuffer.bind();
     glViewport(0, 0, camera.width, camera.height);
     glEnable(GL_DEPTH_TEST);

@@ -36,6 +36,7 @@ private:
     gl::Buffer positions_;  ///< 3 corners per triangle, render space, float x y z
     gl::VertexArray vertex_array_;
     std::size_t triangles_ = 0;
+    float outward_sign_ = 1;  ///< -1 when the model-to-render map mirrors (triangles then wound inward)
 };
 
 }  // namespace cutaway::pipeline
