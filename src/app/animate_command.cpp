@@ -24,6 +24,7 @@
 #include "app/render_report.h"
 #include "app/run_context.h"
 #include "app/run_context_json.h"
+#include "app/frame_wells.h"
 #include "app/step_value_sources.h"
 #include "annotation/property_units.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
@@ -134,6 +135,8 @@ int animate(const AnimateOptions& options) {
     const grid::PrimaryRange colour_range = survey.colour_range;
     const float band = coherence == temporal::Coherence::smooth ? float(options.hysteresis) * (colour_range.max - colour_range.min) : 0.0f;
 
+    const StepWellSets step_wells(model, scene.wells, scene.well_radius, timeline.first_step, timeline.last_step);
+
     std::unique_ptr<gl::GlContext> context = gl::create_context(scene.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     const auto setup_started = std::chrono::steady_clock::now();
@@ -168,6 +171,7 @@ int animate(const AnimateOptions& options) {
     json frames = json::array();
     std::vector<std::uint8_t> previous_flags;
     std::vector<metrics::CutState> previous_states;
+    std::size_t shown_wells_step = timeline.first_step;
     const auto frames_started = std::chrono::steady_clock::now();
     for (std::size_t f = 0; f < frame_count; ++f) {
         interrupts.check();
@@ -177,6 +181,10 @@ int animate(const AnimateOptions& options) {
         // A step held (none, between report steps) uploads nothing: the same values and primaries.
         if (frame.values_changed) renderer.set_colouring(*frame.values, label);
         if (f == 0 || flags != previous_flags) renderer.select(flags);
+        // The report step shown (the one held until the next is reached) has its wells.
+        const auto wells_step = std::size_t(frame.time_step);
+        if (f == 0 || step_wells.changes(shown_wells_step, wells_step)) renderer.set_wells(step_wells.at(wells_step));
+        shown_wells_step = wells_step;
         pipeline::OrbitPose pose = scene.camera_pose();
         if (frame_count > 1) pose.azimuth_deg += float(options.orbit_deg * double(f) / double(frame_count - 1));
         const float bar_width = renderer.status(settings).colour_bar_reserved_width;

@@ -11,6 +11,7 @@
 
 #include "app/commands.h"
 #include "app/distributed_render.h"
+#include "app/frame_wells.h"
 #include "app/mpi_launch.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
@@ -160,6 +161,8 @@ int run_render(const RenderOptions& options) {
     LoadedModel model =
         load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options), render_outputs(options));
     hold_frame_properties(model, options);
+    // Paths need the corner depths, which the renderer releases once it has built its geometry.
+    const pipeline::WellSet wells = frame_wells(model, options.wells, options.well_radius, options.step);
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, colouring_options(model.grid, options));
@@ -179,6 +182,7 @@ int run_render(const RenderOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
+    renderer.set_wells(wells);
     renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by));
     if (selected_by)
         renderer.select(selected_by->flags);

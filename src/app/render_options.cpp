@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "annotation/property_units.h"
+#include "app/frame_wells.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
@@ -100,7 +101,8 @@ nlohmann::json RenderOptions::describe() const {
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
             {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)}, {"scale", scale},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
-            {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
+            {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check},
+            {"wells", wells}, {"well_radius", well_radius}};
 }
 
 void add_selection_options(CLI::App& c, RenderOptions& o) {
@@ -183,7 +185,9 @@ void add_scene_options(CLI::App& c, RenderOptions& o) {
     // Vertical exaggerations beyond 1000 flatten every model into a line.
     c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)")->check(finite_in(0, 1000));
     add_memory_limit_option(c, o.memory_limit_gb, "models and render targets");
+    add_well_options(c, o.wells, o.well_radius);
     c.callback([&o] {
+        check_well_option(o.wells);
         o.width = o.size[0];
         o.height = o.size[1];
         // Render targets are reserved from the one memory budget before the model is read.

@@ -109,7 +109,9 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       cut_resolve_(shaders),
       ssao_(shaders),
       composite_(shaders),
-      colour_bar_(shaders) {
+      colour_bar_(shaders),
+      wells_(shaders),
+      well_labels_(shaders) {
     // The GPU holds the pillars now: the CPU copy is not read again (compact_of_cell_ answers the
     // few Eclipse -> compact lookups a selection change needs, from ACTNUM).
     layout_.pillars = std::vector<float>();  // (= {} would keep the capacity)
@@ -190,6 +192,8 @@ void CutawayRenderer::select(const Primaries& primaries) {
     else select_range(primaries.range, primaries.box);
 }
 
+void CutawayRenderer::set_wells(const WellSet& wells) { wells_.set(wells, frame_); }
+
 void CutawayRenderer::freeze(const std::optional<Camera>& camera) {
     frozen_camera_ = camera;
     frozen_valid_ = false;
@@ -215,7 +219,8 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
     status.gpu_memory_by_part = {{"grid", buffers_.memory_bytes()},
                                  {"culling", visible_.memory_bytes()},
                                  {"selection", selection_.memory_bytes()},
-                                 {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0}};
+                                 {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0},
+                                 {"wells", wells_.memory_bytes()}};
     return status;
 }
 
@@ -308,6 +313,7 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
     state.cone_field_strategy = bool(find_cut_surface(cut_strategy(s)).cpu_reference);
     state.distributed = bool(hooks_.combine_max);
     state.screen_passes = hooks_.screen_passes;
+    state.wells = !wells_.empty();
     return state;
 }
 
@@ -383,6 +389,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     case FramePass::secondaries: draw_secondaries(f); return;
     case FramePass::bind_scene: scene_.framebuffer.bind(); return;
     case FramePass::primaries: primary_.draw_primaries(draw_context(f.camera), buffers_.primary_faces(), f.settings); return;
+    case FramePass::wells: wells_.draw(f.camera); return;
     case FramePass::shell_contours: primary_.draw_shell_depth(draw_context(f.camera), scene_); return;
     case FramePass::reset_depth_test: glDepthFunc(GL_LESS); return;
     case FramePass::combine_scene: hooks_.combine_scene(scene_); return;
@@ -393,6 +400,10 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
         return;
     case FramePass::colour_bar:
         colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
+        empty_vertex_array_.bind();
+        return;
+    case FramePass::well_labels:
+        well_labels_.draw(post_.final_framebuffer, wells_.heads(), f.camera, colour_bar_reserved_width(f.settings));
         empty_vertex_array_.bind();
         return;
     }

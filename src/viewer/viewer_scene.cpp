@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "app/frame_wells.h"
 #include "cutaway/camera.h"
 #include "grid/primary_selection.h"
 
@@ -21,6 +22,12 @@ void ViewerScene::select(const app::RenderOptions& options) {
         property_.owned = *std::exchange(property_.external, nullptr);
     app::hold_property(model_, options.property, options.step, options.model_memory_limit_bytes());
     app::PropertyChoice property = app::choose_property(model_.grid, options);
+    // A restart's wells change with the report step; a file's stay (read again only at the start).
+    if (wells_step_ == -2 || (options.step != wells_step_ && model_.report_steps)) {
+        wells_ = app::frame_wells(model_, options.wells, options.well_radius, options.step);
+        wells_step_ = options.step;
+        if (renderer_) renderer_->set_wells(wells_);
+    }
     std::optional<grid::IjkBox> box = app::choose_primary_range(model_.grid, property, options);
     // A new range over the same values re-uploads nothing: the renderer selects on the GPU.
     const bool same_values = renderer_ && property.label == property_.label;
@@ -42,6 +49,7 @@ void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameS
 }
 
 void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
+    renderer.set_wells(wells_);
     apply_colouring(renderer);
     renderer.select({property_.primary_range, box_});
 }

@@ -48,6 +48,8 @@ private:
     std::optional<grid::IjkBox> box_;
     PropertyHistogram histogram_;
     std::unique_ptr<pipeline::CutawayRenderer> renderer_;
+    pipeline::WellSet wells_;  ///< --wells at the report step shown
+    int wells_step_ = -2;      ///< the step wells_ belongs to (-2: none read yet)
 };
 
 /// Bins of the histogram drawn under the range sliders.
