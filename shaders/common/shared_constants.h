@@ -19,6 +19,12 @@ CUTAWAY_SHARED_CONST uint flag_cut_fill = 2u;    // a cell's inside seen through
 CUTAWAY_SHARED_CONST uint flag_border = 4u;      // border line where a face meets the cut
 CUTAWAY_SHARED_CONST uint flag_edge = 8u;        // cell edge line
 CUTAWAY_SHARED_CONST uint flag_shell_cut = 16u;  // border line on a shell face
+// A well tube (stage 3, primary/well.frag): its pixel shows no cell (id 0), and the flags' bits
+// from well_index_shift up hold the well's index in the renderer's well set. The distributed
+// compositor carries flags as floats, exact below 2^24: at most max_drawn_wells wells.
+CUTAWAY_SHARED_CONST uint flag_well = 32u;
+CUTAWAY_SHARED_CONST uint well_index_shift = 8u;
+CUTAWAY_SHARED_CONST uint max_drawn_wells = 65535u;
 
 #undef CUTAWAY_SHARED_CONST
 #ifdef __cplusplus

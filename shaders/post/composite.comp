@@ -72,7 +72,10 @@ void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, ivec2(viewport_size)))) return;
     uvec2 id = imageLoad(scene_id, texel).rg;
-    bool covered = id.r != 0u;
+    // A well tube shows no cell but covers the pixel; it keeps its colour as primaries do
+    // (saturation), and no silhouette or contour line crosses it.
+    bool well = (id.g & flag_well) != 0u;
+    bool covered = id.r != 0u || well;
     bool primary = (id.g & flag_primary) != 0u;
     vec3 colour = covered ? imageLoad(scene_colour, texel).rgb : background;
 #ifdef SSAO
@@ -81,14 +84,14 @@ void main() {
 #ifdef SATURATION
     if (covered) {
         vec3 hsv = rgb_to_hsv(colour);
-        hsv.y = clamp(hsv.y * (primary ? saturation_primary : saturation_secondary), 0.0, 1.0);
+        hsv.y = clamp(hsv.y * (primary || well ? saturation_primary : saturation_secondary), 0.0, 1.0);
         colour = hsv_to_rgb(hsv);
     }
 #endif
 #ifdef SILHOUETTE
     // A doubled line in its own colour (the red of the shell-cut lines means something else): the
     // pixels next to the primaries and the band's outermost pixels, the scene showing between.
-    if (!primary) {
+    if (!primary && !well) {
         ivec2 last = ivec2(viewport_size) - 1;
         int nearest = silhouette_width * silhouette_width + 1;  // squared pixel distance to a primary
         for (int dy = -silhouette_width; dy <= silhouette_width; ++dy)
@@ -117,7 +120,7 @@ void main() {
     // jagged line. The outline always draws: it keeps the model's extent in view.
     float shown = packed_value(imageLoad(normal_depth, texel).rg);
     bool shell_shown = shown > 0.0 && abs(shown - depth) <= contour_jump * depth;
-    if ((outline || (fold && shell_shown)) && !primary) colour = contour_colour;
+    if ((outline || (fold && shell_shown)) && !primary && !well) colour = contour_colour;
 #endif
     imageStore(final_colour, texel, vec4(colour, 1.0));
 }

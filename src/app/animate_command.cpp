@@ -24,6 +24,7 @@
 #include "app/render_report.h"
 #include "app/run_context.h"
 #include "app/run_context_json.h"
+#include "app/frame_wells.h"
 #include "app/step_value_sources.h"
 #include "annotation/property_units.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
@@ -134,15 +135,18 @@ int animate(const AnimateOptions& options) {
     const grid::PrimaryRange colour_range = survey.colour_range;
     const float band = coherence == temporal::Coherence::smooth ? float(options.hysteresis) * (colour_range.max - colour_range.min) : 0.0f;
 
+    const StepWellSets step_wells(model, scene.wells, scene.well_radius, timeline.first_step, timeline.last_step);
+    // A `well:` volume follows the well's path at the first step shown (one cut for the animation).
+    const volumes::WellPaths volume_wells = cut_volume_well_paths(model, scene.wells, int(timeline.first_step));
+
     std::unique_ptr<gl::GlContext> context = gl::create_context(scene.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     const auto setup_started = std::chrono::steady_clock::now();
     pipeline::CutawayRenderer renderer(shaders, grid, scene.z_scale, scene.width, scene.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), scene);
-    // Wells are not read from the model yet: a `well:` volume is refused as unknown.
     const CutVolumeSet cut_volumes =
-        load_cut_volumes(scene.cut_volumes, renderer.frame(), volumes::WellPaths{}, scene.model_memory_limit_bytes());
+        load_cut_volumes(scene.cut_volumes, renderer.frame(), volume_wells, scene.model_memory_limit_bytes());
     renderer.set_cut_volumes(cut_volumes.meshes);
     // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
     // redraws the whole cut another way at once (on petra it made the first step's largest
@@ -172,6 +176,7 @@ int animate(const AnimateOptions& options) {
     json frames = json::array();
     std::vector<std::uint8_t> previous_flags;
     std::vector<metrics::CutState> previous_states;
+    std::size_t shown_wells_step = timeline.first_step;
     const auto frames_started = std::chrono::steady_clock::now();
     for (std::size_t f = 0; f < frame_count; ++f) {
         interrupts.check();
@@ -183,6 +188,10 @@ int animate(const AnimateOptions& options) {
         // --primaries none: the volumes alone cut, whatever the steps' values select.
         if (!settings.primaries && f == 0) renderer.select_none();
         if (settings.primaries && (f == 0 || flags != previous_flags)) renderer.select(flags);
+        // The report step shown (the one held until the next is reached) has its wells.
+        const auto wells_step = std::size_t(frame.time_step);
+        if (f == 0 || step_wells.changes(shown_wells_step, wells_step)) renderer.set_wells(step_wells.at(wells_step));
+        shown_wells_step = wells_step;
         pipeline::OrbitPose pose = scene.camera_pose();
         if (frame_count > 1) pose.azimuth_deg += float(options.orbit_deg * double(f) / double(frame_count - 1));
         const float bar_width = renderer.status(settings).colour_bar_reserved_width;

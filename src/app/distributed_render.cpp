@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "app/exit_status.h"
+#include "app/frame_wells.h"
 #include "app/heap_policy.h"
 #include "app/model_source.h"
 #include "app/render_report.h"
@@ -74,6 +75,28 @@ void on_all_ranks(const distributed::MpiSession& mpi, const std::function<void()
     const std::string error = mpi.first_error(failure ? exit_status_of(failure).message : std::string());
     const int code = int(mpi.max(failure ? double(exit_status_of(failure).code) : 0.0));
     if (!error.empty()) throw AgreedFailure{error, code};
+}
+
+/// Collective: the tubes of `chosen` on the whole model, each rank giving the points of their paths
+/// its block (the cells `source` of `whole`) holds; an element-wise max over the ranks fills in
+/// the others (wells::well_path_points marks them -infinity). `bounds`: the whole model's.
+pipeline::WellSet distributed_wells(const distributed::MpiSession& mpi, const ChosenWells& chosen, const LoadedModel& model,
+                                    const grid::IjkBox& source, const grid::Box3& bounds, double well_radius) {
+    const wells::WellheadLevel level = wells::wellhead_level(bounds, model.grid.depth_direction());
+    std::vector<double> numbers;
+    for (const wells::Well& well : chosen.wells)
+        for (const grid::Point3& p : wells::well_path_points(well, model.grid, level, {source.i0, source.j0, source.k0}))
+            numbers.insert(numbers.end(), {p.x, p.y, p.z});
+    mpi.max(numbers);
+    std::vector<std::vector<grid::Point3>> paths;
+    std::size_t at = 0;
+    for (const wells::Well& well : chosen.wells) {
+        std::vector<grid::Point3> points;
+        for (std::size_t p = 0; p < 2 + well.connections.size(); ++p, at += 3) points.push_back({numbers[at], numbers[at + 1], numbers[at + 2]});
+        paths.push_back(wells::assemble_well_path(well, points));
+    }
+    // The widest of the ranks' radii: every rank draws the same tubes.
+    return drawn_wells(chosen.wells, paths, well_radius, mpi.max(wells::default_well_radius(model.grid, bounds)));
 }
 
 /// The values of `values` (one per cell of `source`, the cells `source_box`) at the active cells
@@ -138,12 +161,15 @@ struct RankScene {
             }
         });
         load_peak_bytes = double(run_context::proc_status_bytes("VmHWM")) - rss_before;
+        ChosenWells chosen_wells;
+        on_all_ranks(mpi, [&] { chosen_wells = choose_wells(model, whole_dims, options.wells, options.step); });
         on_all_ranks(mpi, [&] {
             const distributed::ModelPart part{model.grid, source, whole_dims};
             const grid::Box3 bounds = distributed::global_bounds(mpi, part);
             tolerance = grid::face_tolerance_for(bounds);
             frame = distributed::global_model_frame(mpi, part, bounds, options.z_scale);
             property.colour_range = distributed::global_value_range(mpi, own_range);
+            wells = distributed_wells(mpi, chosen_wells, model, source, bounds, options.well_radius);
             property.primary_range = options.range.empty()
                                          ? distributed::global_range_for_fraction(
                                                mpi, own_values, primary_fraction(options),
@@ -153,8 +179,8 @@ struct RankScene {
         on_all_ranks(mpi, [&] {
             check_view(frame, options);
             // Every rank draws every volume into its cut (the same on each: the max is unchanged).
-            // Wells are not read from the model yet: a `well:` volume is refused as unknown.
-            cut_volumes = load_cut_volumes(options.cut_volumes, frame, volumes::WellPaths{}, options.model_memory_limit_bytes());
+            // A `well:` volume cuts around a well --wells draws (the ranks assemble only those paths).
+            cut_volumes = load_cut_volumes(options.cut_volumes, frame, paths_of(wells), options.model_memory_limit_bytes());
             block = distributed::make_grid_block(model.grid, source, whole_dims, slab, tolerance);
             context = gl::create_context(options.context_options());
             shaders = std::make_unique<gl::ShaderLibrary>(gl::ShaderLibrary::default_root());
@@ -169,6 +195,7 @@ struct RankScene {
     void start(const RenderOptions& options) {
         const auto setup_started = std::chrono::steady_clock::now();
         rank.emplace(*shaders, std::move(*block), frame, options.width, options.height);
+        rank->renderer().set_wells(wells);
         const bool primaries = options.frame_settings().primaries;
         rank->set_colouring(property.values(), property.colour_bar_label(primaries));
         rank->renderer().set_cut_volumes(cut_volumes.meshes);
@@ -196,6 +223,7 @@ struct RankScene {
     std::optional<grid::IjkBox> ijk_box;
     pipeline::ModelFrame frame;
     CutVolumeSet cut_volumes;
+    pipeline::WellSet wells;
     double tolerance = 0;
     distributed::SlabAxis axis = distributed::SlabAxis::k;
     grid::IjkBox slab;

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <iostream>
 #include <map>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
@@ -86,17 +87,27 @@ nlohmann::json report_steps_json(const eclipse::ReportSteps& steps) {
     return list;
 }
 
-/// Every well of any step, in order of first appearance, with its type at the last step listing it.
+/// Every well of any step, in order of first appearance, with its type, wellhead (0-based) and
+/// connection count at the last step listing it (ICON read for the steps that list a well last).
 nlohmann::json wells_json(const eclipse::ReportSteps& steps) {
     std::vector<std::string> order;
-    std::map<std::string, std::string> type;
+    std::map<std::string, std::size_t> last_step;
     for (const eclipse::ReportStep& step : steps.steps())
         for (const eclipse::WellAtStep& well : step.wells) {
-            if (!type.count(well.name)) order.push_back(well.name);
-            type[well.name] = well.type;
+            if (!last_step.count(well.name)) order.push_back(well.name);
+            last_step[well.name] = step.index;
         }
+    std::map<std::string, nlohmann::json> described;
+    std::set<std::size_t> read;
+    for (const auto& [name, step] : last_step) {
+        if (!read.insert(step).second) continue;
+        for (const eclipse::WellAtStep& well : steps.wells_with_connections(step))
+            if (last_step[well.name] == step)
+                described[well.name] = {{"name", well.name}, {"type", well.type}, {"head", {well.head_i, well.head_j}},
+                                        {"connections", well.connections.size()}};
+    }
     nlohmann::json wells = nlohmann::json::array();
-    for (const std::string& name : order) wells.push_back({{"name", name}, {"type", type[name]}});
+    for (const std::string& name : order) wells.push_back(described[name]);
     return wells;
 }
 

@@ -186,6 +186,7 @@ LoadedModel load_block(const std::vector<std::string>& model, const grid::IjkBox
                     loaded.grid.set_dynamic_step(name, step, grid::box_values(*values, dims, box));
         }
         // No report_steps: they spread values over the whole grid's cells, not the box's.
+        loaded.block_wells_restart = whole.report_steps;
         loaded.description = whole.description + " (box cut from the whole grid)";
     } else if (is_preset(model)) {
         const generators::GeneratorParameters parameters = preset_parameters(model);

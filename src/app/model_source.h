@@ -23,6 +23,9 @@ struct LoadedModel {
     /// A simulator case's UNRST (null otherwise): its arrays are declared on the grid with their
     /// step count and held one step at a time (hold_property).
     std::shared_ptr<const eclipse::ReportSteps> report_steps;
+    /// A block of a simulator case (load_block) has no report_steps but keeps the case's UNRST
+    /// here for its wells (ReportSteps::wells_with_connections reads no cell array).
+    std::shared_ptr<const eclipse::ReportSteps> block_wells_restart;
     /// A simulator case's INIT: arrays not read by load_model are read by hold_property.
     std::optional<std::filesystem::path> init_file;
 };

@@ -11,6 +11,7 @@
 
 #include "app/commands.h"
 #include "app/distributed_render.h"
+#include "app/frame_wells.h"
 #include "app/mpi_launch.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
@@ -161,6 +162,9 @@ int run_render(const RenderOptions& options) {
     LoadedModel model =
         load_model(options.model, options.model_memory_limit_bytes(), property_to_load(options), render_outputs(options));
     hold_frame_properties(model, options);
+    // Paths need the corner depths, which the renderer releases once it has built its geometry.
+    const pipeline::WellSet wells = frame_wells(model, options.wells, options.well_radius, options.step);
+    const volumes::WellPaths volume_wells = cut_volume_well_paths(model, options.wells, options.step);
     // Where the memory goes (bytes resident after each phase; on llvmpipe GPU memory is host memory).
     json memory{{"resident_after_load", run_context::proc_status_bytes("VmRSS")}};
     PropertyChoice property = choose_property(model.grid, colouring_options(model.grid, options));
@@ -180,9 +184,9 @@ int run_render(const RenderOptions& options) {
     pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
-    // Wells are not read from the model yet: a `well:` volume is refused as unknown.
+    renderer.set_wells(wells);
     const CutVolumeSet cut_volumes =
-        load_cut_volumes(options.cut_volumes, renderer.frame(), volumes::WellPaths{}, options.model_memory_limit_bytes());
+        load_cut_volumes(options.cut_volumes, renderer.frame(), volume_wells, options.model_memory_limit_bytes());
     renderer.set_cut_volumes(cut_volumes.meshes);
     const bool primaries = options.frame_settings().primaries;
     renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by && primaries));

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "annotation/property_units.h"
+#include "app/frame_wells.h"
 #include "app/model_source.h"
 #include "app/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
@@ -121,7 +122,8 @@ nlohmann::json RenderOptions::describe() const {
             {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)},
             {"scale", scale}, {"colour_range", colour_range}, {"text_height_px", text_height_px},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
-            {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check}};
+            {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check},
+            {"wells", wells}, {"well_radius", well_radius}};
     description.update(cut_volumes.describe());
     return description;
 }
@@ -217,7 +219,9 @@ void add_scene_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--z-scale", o.z_scale, "vertical exaggeration (0: automatic)")->check(finite_in(0, 1000));
     add_memory_limit_option(c, o.memory_limit_gb, "models and render targets");
     add_cut_volume_options(c, o.cut_volumes);
+    add_well_options(c, o.wells, o.well_radius);
     c.callback([&o] {
+        check_well_option(o.wells);
         o.width = o.size[0];
         o.height = o.size[1];
         finish_cut_volume_options(o.cut_volumes);

@@ -67,6 +67,8 @@ struct RenderOptions {
     double memory_limit_gb = default_memory_limit_gib;
     std::string rank_slabs = "k";     ///< under mpirun: the axis the model is cut along into slabs
     CutVolumeOptions cut_volumes;     ///< --cut-volume, --cut-volumes, --primaries
+    std::vector<std::string> wells;   ///< --wells values (app/frame_wells.h)
+    double well_radius = 0;           ///< --well-radius, model units (0: automatic)
 
     std::size_t memory_limit_bytes() const;
     /// What the frame's targets and read-backs need for --size (render_target_bytes_per_pixel each).

@@ -2,6 +2,7 @@
 // The colour bar drawn into the image: gradient of the colour map, frame, title with unit, round
 // tick values (annotation::layout_colour_bar places them; text from stb_easy_font).
 #include "annotation/colour_bar_layout.h"
+#include "cutaway/overlay_batch.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_library.h"
 
@@ -17,8 +18,7 @@ public:
               const ColourBarLabel& label);
 
 private:
-    gl::Program program_;
-    gl::VertexArray vertex_array_;
+    OverlayBatch batch_;
 };
 
 }  // namespace cutaway::pipeline

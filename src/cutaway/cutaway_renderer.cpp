@@ -110,7 +110,9 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       volume_cut_(shaders),
       ssao_(shaders),
       composite_(shaders),
-      colour_bar_(shaders) {
+      colour_bar_(shaders),
+      wells_(shaders),
+      well_labels_(shaders) {
     // The GPU holds the pillars now: the CPU copy is not read again (compact_of_cell_ answers the
     // few Eclipse -> compact lookups a selection change needs, from ACTNUM).
     layout_.pillars = std::vector<float>();  // (= {} would keep the capacity)
@@ -198,6 +200,8 @@ void CutawayRenderer::set_cut_volumes(const std::vector<shapes::TriangleMesh>& m
 
 void CutawayRenderer::select_none() { set_primaries(std::vector<std::uint8_t>(grid_.cell_count(), 0)); }
 
+void CutawayRenderer::set_wells(const WellSet& wells) { wells_.set(wells, frame_); }
+
 void CutawayRenderer::freeze(const std::optional<Camera>& camera) {
     frozen_camera_ = camera;
     frozen_valid_ = false;
@@ -224,7 +228,8 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
                                  {"culling", visible_.memory_bytes()},
                                  {"selection", selection_.memory_bytes()},
                                  {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0},
-                                 {"cut_volumes", volume_cut_.memory_bytes()}};
+                                 {"cut_volumes", volume_cut_.memory_bytes()},
+                                 {"wells", wells_.memory_bytes()}};
     return status;
 }
 
@@ -318,6 +323,7 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
     state.cut_volumes = !volume_cut_.empty();
     state.distributed = bool(hooks_.combine_max);
     state.screen_passes = hooks_.screen_passes;
+    state.wells = !wells_.empty();
     return state;
 }
 
@@ -394,6 +400,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     case FramePass::secondaries: draw_secondaries(f); return;
     case FramePass::bind_scene: scene_.framebuffer.bind(); return;
     case FramePass::primaries: primary_.draw_primaries(draw_context(f.camera), buffers_.primary_faces(), f.settings); return;
+    case FramePass::wells: wells_.draw(f.camera); return;
     case FramePass::shell_contours: primary_.draw_shell_depth(draw_context(f.camera), scene_); return;
     case FramePass::reset_depth_test: glDepthFunc(GL_LESS); return;
     case FramePass::combine_scene: hooks_.combine_scene(scene_); return;
@@ -404,6 +411,10 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
         return;
     case FramePass::colour_bar:
         colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
+        empty_vertex_array_.bind();
+        return;
+    case FramePass::well_labels:
+        well_labels_.draw(post_.final_framebuffer, wells_.heads(), f.camera, colour_bar_reserved_width(f.settings));
         empty_vertex_array_.bind();
         return;
     }

@@ -31,6 +31,8 @@
 #include "cutaway/selection/primary_centroid.h"
 #include "cutaway/secondary_pass.h"
 #include "cutaway/visibility/visible_faces.h"
+#include "cutaway/well_labels.h"
+#include "cutaway/well_tubes.h"
 #include "gl/image.h"
 #include "gl/stage_timer.h"
 #include "grid/corner_point_grid.h"
@@ -177,6 +179,12 @@ public:
     /// Triangles of the cut volumes set.
     std::size_t cut_volume_triangles() const { return volume_cut_.triangle_count(); }
 
+    /// The wells drawn from now on (an empty set: none): their tubes are built and uploaded here,
+    /// once per set. Throws std::invalid_argument for a well whose path or radius makes no tube.
+    void set_wells(const WellSet& wells);
+    /// The wellheads of the set drawn (name, colour, render-space position).
+    const std::vector<WellHead>& well_heads() const { return wells_.heads(); }
+
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until freeze(std::nullopt).
     void freeze(const std::optional<Camera>& camera);
 
@@ -295,6 +303,8 @@ private:
     Ssao ssao_;
     Composite composite_;
     ColourBar colour_bar_;
+    WellTubes wells_;
+    WellLabels well_labels_;
     gl::VertexArray empty_vertex_array_;
     std::vector<std::pair<std::string, std::unique_ptr<CutSurfaceStrategy>>> strategies_;
     std::optional<Camera> frozen_camera_;

@@ -25,12 +25,14 @@ constexpr PassInfo pass_names[] = {
     {FramePass::secondaries, "secondaries"},
     {FramePass::bind_scene, "bind_scene"},
     {FramePass::primaries, "primaries"},
+    {FramePass::wells, "wells"},
     {FramePass::shell_contours, "shell_contours"},
     {FramePass::reset_depth_test, "reset_depth_test"},
     {FramePass::combine_scene, "combine_scene"},
     {FramePass::ssao, "ssao"},
     {FramePass::composite, "composite"},
     {FramePass::colour_bar, "colour_bar"},
+    {FramePass::well_labels, "well_labels"},
 };
 
 /// Stage 1 and what follows it: the strategy's cut, the distributed max, the mean filter; the cut
@@ -71,6 +73,7 @@ void plan_secondaries(const FrameSettings& s, FramePlan& plan) {
 void plan_primaries_and_post(const FrameSettings& s, const RendererState& state, FramePlan& plan) {
     PlannedStage primary{"primary", {FramePass::bind_scene}};
     if (plan.draw_primaries) primary.passes.push_back(FramePass::primaries);
+    if (state.wells) primary.passes.push_back(FramePass::wells);
     if (s.contours) primary.passes.push_back(FramePass::shell_contours);
     primary.passes.push_back(FramePass::reset_depth_test);
     plan.stages.push_back(primary);
@@ -79,6 +82,7 @@ void plan_primaries_and_post(const FrameSettings& s, const RendererState& state,
     if (s.ssao) plan.stages.push_back({"ssao", {FramePass::ssao}});
     PlannedStage post{"post", {FramePass::composite}};
     if (s.colour_bar) post.passes.push_back(FramePass::colour_bar);
+    if (state.wells) post.passes.push_back(FramePass::well_labels);
     plan.stages.push_back(post);
 }
 
@@ -111,13 +115,15 @@ PassTargets targets_of(FramePass pass, const FramePlan& plan) {
         return {target_faces | target_cut_surface | (plan.clip_view_rear_shell ? target_rear_shell : 0), target_scene};
     case FramePass::bind_scene:
     case FramePass::reset_depth_test: return {};
-    case FramePass::primaries: return {0, target_scene};
+    case FramePass::primaries:
+    case FramePass::wells: return {0, target_scene};
     case FramePass::shell_contours:
     case FramePass::combine_scene: return {target_scene, target_scene};
     case FramePass::ssao: return {target_scene, target_occlusion};
     case FramePass::composite:
         return {target_scene | (plan.runs(FramePass::ssao) ? target_occlusion : 0), target_final};
-    case FramePass::colour_bar: return {target_final, target_final};
+    case FramePass::colour_bar:
+    case FramePass::well_labels: return {target_final, target_final};
     }
     return {};
 }

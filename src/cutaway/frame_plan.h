@@ -28,12 +28,14 @@ enum class FramePass {
     secondaries,         ///< stage 2: clipped secondaries, cut fill, wireframe and borders
     bind_scene,          ///< the G-buffer bound again for stage 3
     primaries,           ///< stage 3: primary cells with their own edge colour
+    wells,               ///< stage 3: well tubes, never cut (drawn by every renderer of a distributed frame)
     shell_contours,      ///< stage 3: shell contours and shell-cut lines
     reset_depth_test,    ///< depth test back to GL_LESS after the scene
     combine_scene,       ///< distributed: the G-buffer composited over all renderers
     ssao,                ///< ambient occlusion over the G-buffer
     composite,           ///< shading, saturation, silhouette into the final image
     colour_bar,          ///< the colour bar onto the final image
+    well_labels,         ///< each well's name beside its wellhead, onto the final image
 };
 
 /// Images a pass reads or writes (bit flags).
@@ -60,6 +62,7 @@ struct RendererState {
     bool cut_volumes = false;        ///< cut volumes are set (CutawayRenderer::set_cut_volumes)
     bool distributed = false;        ///< hooks combine the frame over several renderers
     bool screen_passes = true;       ///< this renderer runs SSAO and post (false: a rank other than 0)
+    bool wells = false;              ///< the renderer holds well tubes to draw
 };
 
 /// A group of passes timed together under one stats.json stage name; `stage` empty: untimed work

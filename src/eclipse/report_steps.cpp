@@ -5,12 +5,12 @@
 #include <memory>
 #include <set>
 
-#include <opm/input/eclipse/Schedule/ScheduleTypes.hpp>
 #include <opm/io/eclipse/ERst.hpp>
 #include <opm/output/eclipse/VectorItems/intehead.hpp>
-#include <opm/output/eclipse/VectorItems/well.hpp>
 
 #include "eclipse/eclio_access.h"
+#include "eclipse/restart_arrays.h"
+#include "eclipse/restart_wells.h"
 
 namespace cutaway::eclipse {
 namespace {
@@ -19,7 +19,6 @@ namespace fs = std::filesystem;
 using Opm::EclIO::eclArrType;
 using Opm::EclIO::ERst;
 using Head = Opm::RestartIO::Helpers::VectorItems::intehead;
-namespace iwell = Opm::RestartIO::Helpers::VectorItems::IWell;
 
 const std::string unrst_expected = "an Eclipse unified restart file (UNRST: SEQNUM, INTEHEAD per report step)";
 
@@ -28,61 +27,6 @@ std::unique_ptr<ERst> open_unrst(const fs::path& unrst) {
     auto file = read_checked(unrst, "", unrst_expected, [&] { return std::make_unique<ERst>(unrst.string()); });
     if (file->numberOfReportSteps() == 0) throw EclipseError({unrst.string(), "SEQNUM", "at least one report step", "none"});
     return file;
-}
-
-std::string step_text(int report_number) { return " at report " + std::to_string(report_number); }
-
-template <typename T>
-const std::vector<T>& step_array(ERst& file, const fs::path& unrst, const std::string& name, int report_number) {
-    if (!file.hasArray(name, report_number))
-        throw EclipseError({unrst.string(), name + step_text(report_number), "the array in the step", "none"});
-    return read_checked(unrst, name + step_text(report_number), "a readable array",
-                        [&]() -> const std::vector<T>& { return file.getRestartData<T>(name, report_number); });
-}
-
-std::string trimmed(std::string text) {
-    text.erase(text.find_last_not_of(' ') + 1);
-    return text;
-}
-
-std::string well_type(int ecl_type) {
-    if (Opm::WellType::producer(ecl_type)) return "producer";
-    if (Opm::WellType::water_injector(ecl_type)) return "water_injector";
-    if (Opm::WellType::gas_injector(ecl_type)) return "gas_injector";
-    if (Opm::WellType::oil_injector(ecl_type)) return "oil_injector";
-    return "unknown";
-}
-
-std::string well_status(int status) {
-    using Status = iwell::Value::Status;
-    switch (status) {
-        case Status::Open: return "open";
-        case Status::Stop: return "stop";
-        case Status::Shut: return "shut";
-        case Status::Auto: return "auto";
-        default: return std::to_string(status);
-    }
-}
-
-/// The wells of a step from its INTEHEAD counts, ZWEL names and IWEL items.
-std::vector<WellAtStep> wells_at(ERst& file, const fs::path& unrst, int report_number, const std::vector<int>& head) {
-    const auto count = std::size_t(std::max(head[Head::NWELLS], 0));
-    if (count == 0) return {};
-    const auto words_per_well = std::size_t(head[Head::NZWELZ]);
-    const auto items_per_well = std::size_t(head[Head::NIWELZ]);
-    const auto& names = step_array<std::string>(file, unrst, "ZWEL", report_number);
-    const auto& items = step_array<int>(file, unrst, "IWEL", report_number);
-    if (names.size() < count * words_per_well || items.size() < count * items_per_well ||
-        items_per_well <= std::size_t(iwell::Status))
-        throw EclipseError({unrst.string(), "ZWEL, IWEL" + step_text(report_number),
-                            std::to_string(count) + " wells as INTEHEAD counts them",
-                            std::to_string(names.size()) + " ZWEL words, " + std::to_string(items.size()) + " IWEL items"});
-    std::vector<WellAtStep> wells;
-    for (std::size_t w = 0; w < count; ++w) {
-        const int* well = items.data() + w * items_per_well;
-        wells.push_back({trimmed(names[w * words_per_well]), well_type(well[iwell::WType]), well_status(well[iwell::Status])});
-    }
-    return wells;
 }
 
 /// Array `name` of one step per active cell, as floats (REAL or DOUB in the file).
@@ -148,7 +92,7 @@ ReportSteps::ReportSteps(fs::path unrst, const grid::CornerPointGrid& grid, std:
             const auto& doubles = step_array<double>(*file, file_, "DOUBHEAD", report_number);
             if (!doubles.empty()) step.elapsed_days = doubles.front();
         }
-        step.wells = wells_at(*file, file_, report_number, head);
+        step.wells = read_step_wells(*file, file_, report_number, head, false);
         steps_.push_back(std::move(step));
         const auto arrays = read_checked(file_, "report " + std::to_string(report_number), "a readable step",
                                          [&] { return file->listOfRstArrays(report_number); });
@@ -159,6 +103,18 @@ ReportSteps::ReportSteps(fs::path unrst, const grid::CornerPointGrid& grid, std:
     soil_derived_ = names.count("SWAT") && !names.count("SOIL");
     if (soil_derived_) names.insert("SOIL");
     names_.assign(names.begin(), names.end());
+}
+
+std::vector<WellAtStep> ReportSteps::wells_with_connections(std::size_t index) const {
+    if (index >= steps_.size())
+        throw EclipseError({file_.string(), "wells",
+                            "a report step index 0.." + std::to_string(steps_.size() - 1) + " (" +
+                                std::to_string(steps_.size()) + " steps)",
+                            std::to_string(index)});
+    const std::unique_ptr<ERst> file = open_unrst(file_);
+    const int report_number = steps_[index].report_number;
+    const auto& head = step_array<int>(*file, file_, "INTEHEAD", report_number);
+    return read_step_wells(*file, file_, report_number, head, true);
 }
 
 bool ReportSteps::has_property(const std::string& name) const {

@@ -12,11 +12,20 @@
 
 namespace cutaway::eclipse {
 
-/// A well as the restart file's IWEL/ZWEL arrays describe it at one report step.
+/// One connection of a well to a cell (ICON), 0-based cell indices.
+struct ConnectionAtStep {
+    int i = 0, j = 0, k = 0;
+    bool open = true;
+};
+
+/// A well as the restart file's IWEL/ZWEL (and ICON) arrays describe it at one report step.
 struct WellAtStep {
     std::string name;
     std::string type;    ///< producer | water_injector | gas_injector | oil_injector | unknown
     std::string status;  ///< open | stop | shut | auto, else the IWEL number
+    int head_i = -1, head_j = -1;  ///< wellhead column, 0-based
+    /// In the file's order; filled by ReportSteps::wells_with_connections only.
+    std::vector<ConnectionAtStep> connections;
 };
 
 struct ReportStep {
@@ -55,6 +64,9 @@ public:
     /// EclipseError for a step out of range, an array the step does not hold, an array whose length
     /// is not the active count, or a file that cannot be read any more.
     std::vector<float> values(const std::string& name, std::size_t index) const;
+    /// The wells of step `index` (0-based) with their connections (ICON), read afresh from the
+    /// file. Throws EclipseError for a step out of range or well arrays shorter than INTEHEAD says.
+    std::vector<WellAtStep> wells_with_connections(std::size_t index) const;
     /// The most one values() call holds while reading: the per-cell result plus EclIO's arrays.
     std::size_t read_bytes() const;
 

@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "app/frame_wells.h"
 #include "cutaway/camera.h"
 #include "grid/primary_selection.h"
 
@@ -26,6 +27,13 @@ void ViewerScene::select(const app::RenderOptions& options) {
         property_.owned = *std::exchange(property_.external, nullptr);
     app::hold_property(model_, options.property, options.step, options.model_memory_limit_bytes());
     app::PropertyChoice property = app::choose_property(model_.grid, options);
+    // A restart's wells change with the report step; a file's stay (read again only at the start).
+    if (wells_step_ == -2 || (options.step != wells_step_ && model_.report_steps)) {
+        wells_ = app::frame_wells(model_, options.wells, options.well_radius, options.step);
+        if (wells_step_ == -2) volume_wells_ = app::cut_volume_well_paths(model_, options.wells, options.step);
+        wells_step_ = options.step;
+        if (renderer_) renderer_->set_wells(wells_);
+    }
     std::optional<grid::IjkBox> box = app::choose_primary_range(model_.grid, property, options);
     // A new range over the same values re-uploads nothing: the renderer selects on the GPU.
     const bool same_values = renderer_ && property.label == property_.label;
@@ -46,9 +54,8 @@ void ViewerScene::select_primaries(pipeline::CutawayRenderer& renderer) const {
 
 void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings) {
     auto renderer = std::make_unique<pipeline::CutawayRenderer>(shaders_, model_.grid, z_scale_, width, height);
-    // Wells are not read from the model yet: a `well:` volume is refused as unknown.
     if (!cut_volumes_)
-        cut_volumes_ = app::load_cut_volumes(volume_options_, renderer->frame(), volumes::WellPaths{}, memory_limit_bytes_);
+        cut_volumes_ = app::load_cut_volumes(volume_options_, renderer->frame(), volume_wells_, memory_limit_bytes_);
     renderer->set_cut_volumes(cut_volumes_->meshes);
     apply_selection(*renderer);
     // One frame compiles every program the settings use, so a broken shader fails here and the
@@ -58,6 +65,7 @@ void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameS
 }
 
 void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
+    renderer.set_wells(wells_);
     apply_colouring(renderer);
     select_primaries(renderer);
 }

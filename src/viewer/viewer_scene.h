@@ -53,6 +53,9 @@ private:
     std::optional<app::CutVolumeSet> cut_volumes_;  ///< built with the first renderer (its frame)
     PropertyHistogram histogram_;
     std::unique_ptr<pipeline::CutawayRenderer> renderer_;
+    pipeline::WellSet wells_;  ///< --wells at the report step shown
+    volumes::WellPaths volume_wells_;  ///< every well's path at the first step read, for `well:` volumes
+    int wells_step_ = -2;      ///< the step wells_ belongs to (-2: none read yet)
 };
 
 /// Bins of the histogram drawn under the range sliders.

@@ -136,7 +136,7 @@ TEST(FramePlan, ThePapersPathListsSecondaryFacesUntimed) {
 
 TEST(FramePlan, EverySettingCombinationIsConsistent) {
     // Every combination of the switches that change the plan: no pass reads an unwritten target.
-    for (int bits = 0; bits < 1 << 12; ++bits) {
+    for (int bits = 0; bits < 1 << 13; ++bits) {
         FrameSettings s;
         s.see_through = bits & 1;
         s.mean_filter = (bits & 2) ? 9 : 0;
@@ -150,9 +150,32 @@ TEST(FramePlan, EverySettingCombinationIsConsistent) {
         state.cone_field_strategy = bits & 512;
         state.cut_volumes = bits & 1024;
         s.primaries = !(bits & 2048);
+        state.wells = bits & 4096;
         const FramePlan plan = plan_frame(s, state);
         EXPECT_EQ(first_unwritten_read(plan), "") << "combination " << bits;
     }
+}
+
+TEST(FramePlan, WellsAreDrawnAfterThePrimariesAndLabelledAfterTheColourBar) {
+    EXPECT_FALSE(plan_frame(FrameSettings{}, RendererState{}).runs(FramePass::wells));
+    RendererState state;
+    state.wells = true;
+    const FramePlan plan = plan_frame(FrameSettings{}, state);
+    EXPECT_EQ(passes_of(plan, "primary"), (std::vector<FramePass>{FramePass::bind_scene, FramePass::primaries, FramePass::wells,
+                                                                   FramePass::shell_contours, FramePass::reset_depth_test}));
+    EXPECT_EQ(passes_of(plan, "post"),
+              (std::vector<FramePass>{FramePass::composite, FramePass::colour_bar, FramePass::well_labels}));
+    // Wells are a layer of their own: drawn without primaries too.
+    FrameSettings only_secondaries;
+    only_secondaries.only = OnlyLayer::secondaries;
+    EXPECT_TRUE(plan_frame(only_secondaries, state).runs(FramePass::wells));
+    // Distributed: every rank draws the tubes (depth-composited); only the display rank labels.
+    state.distributed = true;
+    state.screen_passes = false;
+    const FramePlan rank = plan_frame(FrameSettings{}, state);
+    EXPECT_TRUE(rank.runs(FramePass::wells));
+    EXPECT_FALSE(rank.runs(FramePass::well_labels));
+    EXPECT_EQ(first_unwritten_read(rank), "");
 }
 
 TEST(FramePlan, AnUnwrittenReadIsFound) {
