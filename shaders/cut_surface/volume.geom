@@ -10,19 +10,24 @@
 //    --aperture): u in [u_p - l (s_p - s) / s_p, u_p + r (s_p - s) / s_p], likewise v. The union
 //    of the pyramids over the triangle is the convex hull of its corners' pyramids; its upper
 //    surface is the triangle, one plane through each edge (to the pyramid corner that lies
-//    farthest out across the edge: both sides are emitted, the test keeps the right one) and the
-//    pyramids' own sides at the corners, all of which are emitted (every piece lies inside the
-//    hull, so none cuts too much). At aperture 0 the walls follow view rays and cover no pixel:
+//    farthest out across the edge, on the side away from the triangle) and the pyramids' own
+//    sides at the corners (every piece lies inside the hull, so none cuts too much). At aperture 0 the walls follow view rays and cover no pixel:
 //    the cut is exactly the volume's silhouette at its rear depth.
 // Only rear triangles (facing away from the camera) are drawn: in a closed volume the view ray
 // through a front triangle's point leaves the volume through a rear one, farther at the same
 // (u, v), whose pyramid holds the front point's (the pyramid widens with depth), so the front
 // triangles add nothing to the max and would only double the fill.
+// Walls and corner pyramids only along the silhouette (edges whose neighbour faces the camera),
+// leaning out of it: inside the silhouette the rear triangles themselves bound the cut. The walls
+// of inner edges, one per edge of every rear triangle, and the inward walls filled the screen many
+// times over for the same image wherever the rear surface is less steep than the walls; where it
+// is steeper (a vertical face seen from above), a deep corner's pyramid would reach over a
+// shallower part: that bevel is left out, the cut follows the volume's rear surface there.
 // A triangle with a corner at or in front of the near plane gets no walls (its clipped part is
 // drawn; the neighbouring triangles' walls bevel the rest).
 #include "cut_surface/wall_slope.glsl"
 
-layout(triangles) in;
+layout(triangles_adjacency) in;
 layout(triangle_strip, max_vertices = 51) out;
 
 in VolumeCorner {
@@ -81,27 +86,39 @@ void emit_pyramid(int i) {
     EndPrimitive();
 }
 
+/// Whether the triangle a b c, wound outward, faces the camera (the eye is at the origin).
+bool faces_camera(vec3 a, vec3 b, vec3 c) {
+    return dot(outward_sign * cross(b - a, c - a), -a) > 0.0;
+}
+
 void main() {
-    vec3 outward = outward_sign * cross(corner[1].eye - corner[0].eye, corner[2].eye - corner[0].eye);
-    if (dot(outward, -corner[0].eye) > 0.0) return;  // faces the camera (the eye is at the origin)
-    for (int i = 0; i < 3; ++i) emit_eye(corner[i].eye);
+    // Corners 0, 2, 4; vertex 2i + 1 lies across edge (2i, 2i + 2) in the neighbouring triangle.
+    vec3 eye[3] = vec3[3](corner[0].eye, corner[2].eye, corner[4].eye);
+    if (faces_camera(eye[0], eye[1], eye[2])) return;
+    for (int i = 0; i < 3; ++i) emit_eye(eye[i]);
     EndPrimitive();
     if (wall_angle.x <= 0.0 && wall_angle.y <= 0.0) return;
+    bool silhouette[3];
+    for (int i = 0; i < 3; ++i)  // the neighbour holds the edge the other way round
+        silhouette[i] = faces_camera(eye[(i + 1) % 3], eye[i], corner[2 * i + 1].eye);
+    if (!silhouette[0] && !silhouette[1] && !silhouette[2]) return;
     for (int i = 0; i < 3; ++i) {
-        depth[i] = -corner[i].eye.z;
+        depth[i] = -eye[i].z;
         if (depth[i] <= near_plane) return;
-        uv[i] = corner[i].eye.xy / depth[i];
+        uv[i] = eye[i].xy / depth[i];
         rim[i] = min(rim_depth, depth[i]);
         float reach = (depth[i] - rim[i]) / depth[i];
         out_lo[i] = wall_slope(uv[i], -1.0, wall_angle) * reach;
         out_hi[i] = wall_slope(uv[i], 1.0, wall_angle) * reach;
     }
     for (int i = 0; i < 3; ++i) {
+        if (!silhouette[i]) continue;
         int j = (i + 1) % 3;
+        // The wall leans out of the silhouette: away from the triangle's third corner.
         vec2 across = vec2(uv[i].y - uv[j].y, uv[j].x - uv[i].x);
-        vec2 side = vec2(across.x >= 0.0 ? 1.0 : -1.0, across.y >= 0.0 ? 1.0 : -1.0);
-        emit_edge_wall(i, j, side);
-        emit_edge_wall(i, j, -side);
+        if (dot(across, uv[(i + 2) % 3] - uv[i]) > 0.0) across = -across;
+        emit_edge_wall(i, j, vec2(across.x >= 0.0 ? 1.0 : -1.0, across.y >= 0.0 ? 1.0 : -1.0));
     }
-    for (int i = 0; i < 3; ++i) emit_pyramid(i);
+    for (int i = 0; i < 3; ++i)
+        if (silhouette[i] || silhouette[(i + 2) % 3]) emit_pyramid(i);
 }

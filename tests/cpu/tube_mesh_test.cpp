@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "shapes/triangle_adjacency.h"
 #include "shapes/tube_mesh.h"
 #include "mesh_checks.h"
 
@@ -50,6 +51,32 @@ TEST(TubeMesh, RefusesDegenerateInput) {
     EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, 0, 1}}, std::nan("")), std::invalid_argument);
     EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, 0, 1}}, 1.0, 2), std::invalid_argument);
     EXPECT_THROW(tube_mesh({{0, 0, 0}, {0, std::nan(""), 1}}, 1.0), std::invalid_argument);
+}
+
+TEST(TriangleAdjacency, EveryEdgeOfAClosedTubeFindsItsNeighbour) {
+    // Rings and caps repeat positions: the neighbour across each edge is found by position, and
+    // it is a different triangle holding the edge the other way round.
+    const TriangleMesh tube = tube_mesh({{0, 0, 0}, {0, 0, 4}, {3, 0, 4}}, 1.0, 6);
+    const auto adjacency = triangle_adjacency(tube);
+    ASSERT_EQ(adjacency.size(), tube.triangles.size());
+    const auto same = [&](std::uint32_t a, std::uint32_t b) {  // as triangle_adjacency rounds: 1e-9 of the extent
+        const grid::Point3 &p = tube.positions[a], &q = tube.positions[b];
+        return std::abs(p.x - q.x) < 1e-8 && std::abs(p.y - q.y) < 1e-8 && std::abs(p.z - q.z) < 1e-8;
+    };
+    for (std::size_t t = 0; t < adjacency.size(); ++t)
+        for (int e = 0; e < 3; ++e) {
+            const std::uint32_t from = adjacency[t][2 * e], to = adjacency[t][(2 * e + 2) % 6], across = adjacency[t][2 * e + 1];
+            EXPECT_FALSE(same(across, from) || same(across, to)) << "triangle " << t << " edge " << e;
+            EXPECT_FALSE(same(across, tube.triangles[t][(e + 2) % 3])) << "open edge at triangle " << t << " edge " << e;
+        }
+}
+
+TEST(TriangleAdjacency, AnOpenEdgeGetsTheTrianglesOwnThirdVertex) {
+    TriangleMesh single;
+    single.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    single.triangles = {{0, 1, 2}};
+    const auto adjacency = triangle_adjacency(single);
+    EXPECT_EQ(adjacency[0], (std::array<std::uint32_t, 6>{0, 2, 1, 0, 2, 1}));
 }
 
 }  // namespace

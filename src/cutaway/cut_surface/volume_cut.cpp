@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "gl/uniforms.h"
+#include "shapes/triangle_adjacency.h"
 
 namespace cutaway::pipeline {
 
@@ -12,15 +13,20 @@ VolumeCut::VolumeCut(const gl::ShaderLibrary& shaders)
                               {GL_FRAGMENT_SHADER, "cut_surface/volume.frag"}})) {}
 
 void VolumeCut::set_volumes(const std::vector<shapes::TriangleMesh>& meshes, const ModelFrame& frame) {
+    // Each triangle with the vertex across each edge (GL_TRIANGLES_ADJACENCY): the shader draws
+    // walls only along the silhouette.
     std::vector<float> corners;
-    for (const shapes::TriangleMesh& mesh : meshes)
+    for (const shapes::TriangleMesh& mesh : meshes) {
         for (const auto& triangle : mesh.triangles)
-            for (std::uint32_t index : triangle) {
+            for (std::uint32_t index : triangle)
                 if (index >= mesh.positions.size()) throw std::invalid_argument("cut volume: triangle index out of range");
+        for (const auto& six : shapes::triangle_adjacency(mesh))
+            for (std::uint32_t index : six) {
                 const glm::vec3 p = frame.to_render(mesh.positions[index]);
                 corners.insert(corners.end(), {p.x, p.y, p.z});
             }
-    triangles_ = corners.size() / 9;
+    }
+    triangles_ = corners.size() / 18;
     // Triangles are wound outward in model coordinates; a mirroring model-to-render map (depth
     // positive down) turns them inward, which the shader's rear-face test must know.
     const glm::vec3 o = frame.to_render({0, 0, 0});
@@ -55,7 +61,7 @@ void VolumeCut::draw(const CutSurfaceInputs& in, const CutTargets& targets) cons
     glEnable(GL_DEPTH_CLAMP);
     vertex_array_.bind();
     p.use();
-    glDrawArrays(GL_TRIANGLES, 0, GLsizei(3 * triangles_));
+    glDrawArrays(GL_TRIANGLES_ADJACENCY, 0, GLsizei(6 * triangles_));
     glDisable(GL_DEPTH_CLAMP);
     glDepthFunc(GL_LESS);
 }

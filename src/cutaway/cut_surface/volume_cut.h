@@ -33,7 +33,7 @@ public:
 
 private:
     gl::Program program_;
-    gl::Buffer positions_;  ///< 3 corners per triangle, render space, float x y z
+    gl::Buffer positions_;  ///< 6 per triangle (corners and the vertices across its edges), render space, float x y z
     gl::VertexArray vertex_array_;
     std::size_t triangles_ = 0;
     float outward_sign_ = 1;  ///< -1 when the model-to-render map mirrors (triangles then wound inward)
