@@ -89,7 +89,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
-    return {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
+    return {{"model", model}, {"property", property}, {"range", range}, {"colour_range", colour_range}, {"primary_fraction", primary_fraction},
             {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"stage2_passes", pipeline::to_string(s.stage2_passes)}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
@@ -107,6 +107,11 @@ void add_selection_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)")
         ->check(property_name());
     c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2)->check(finite_in(-FLT_MAX, FLT_MAX));
+    c.add_option("--colour-range", o.colour_range,
+                 "colour scale LO HI of the property (default: its 2nd-98th percentile; animate: min-max over the "
+                 "animated steps): one scale for frames of several steps")
+        ->expected(2)
+        ->check(finite_in(-FLT_MAX, FLT_MAX));
     c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)")
         ->check(finite_above(0, 1));
     c.add_option("--time-step,--step", o.step,
@@ -228,6 +233,14 @@ annotation::ColourBarLabel PropertyChoice::colour_bar_label(bool mark_primary_ra
     return bar;
 }
 
+grid::PrimaryRange given_colour_range(const std::vector<float>& range, bool log_scale) {
+    if (range.size() != 2 || !(range[0] < range[1]))
+        throw std::invalid_argument("--colour-range: expected LO HI with LO < HI");
+    if (log_scale && !(range[0] > 0))
+        throw std::invalid_argument("--colour-range: expected LO > 0 on a log scale (--scale linear for others)");
+    return {range[0], range[1]};
+}
+
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer) {
     PropertyChoice choice;
     const std::vector<std::string> statics = grid.property_names();
@@ -279,6 +292,7 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
         choice.colour_range = grid::active_quantile_range(grid, choice.values(), choice.name, colour_quantiles[0],
                                                           colour_quantiles[1], false);
     }
+    if (!options.colour_range.empty()) choice.colour_range = given_colour_range(options.colour_range, choice.log_scale);
     choice.unit_system = grid.metadata().unit_system;
     return choice;
 }
