@@ -72,7 +72,7 @@ temporal::AnimationTimeline timeline_of(const AnimateOptions& options, std::size
     return timeline;
 }
 
-/// What the animation's report steps hold, read once before the frames.
+/// What the animation's report steps hold, read before the frames.
 struct StepSurvey {
     grid::PrimaryRange colour_range;    ///< min and max over active cells of every step: one colour scale
     std::size_t most_primaries = 0;     ///< the largest primary set of a step (selected anew)
@@ -82,15 +82,10 @@ StepSurvey survey_steps(const grid::CornerPointGrid& grid, const temporal::StepV
                         const temporal::AnimationTimeline& timeline, const grid::PrimaryRange& primary_range,
                         const std::optional<grid::IjkBox>& box) {
     StepSurvey survey;
-    for (std::size_t step = timeline.first_step; step <= timeline.last_step; ++step) {
-        const std::vector<float> values = source.values(step);
-        const grid::PrimaryRange r = grid::active_value_range(grid, values, source.property());
-        survey.colour_range = step == timeline.first_step
-                                  ? r
-                                  : grid::PrimaryRange{std::min(survey.colour_range.min, r.min), std::max(survey.colour_range.max, r.max)};
+    survey.colour_range = temporal::value_range_over_steps(grid, source, timeline.first_step, timeline.last_step);
+    for (std::size_t step = timeline.first_step; step <= timeline.last_step; ++step)
         survey.most_primaries = std::max(survey.most_primaries, grid::count_primaries(grid::select_primaries(
-                                                                    grid, values, source.property(), primary_range, box)));
-    }
+                                                                    grid, source.values(step), source.property(), primary_range, box)));
     return survey;
 }
 

@@ -87,6 +87,7 @@ TEST(AnimationTimeline, NoneHoldsTheStepSmoothBlendsTheNext) {
 
 TEST(Coherence, NamesRoundTripAndUnknownNamesAreRefused) {
     for (Coherence c : {Coherence::none, Coherence::smooth}) EXPECT_EQ(parse_coherence(to_string(c)), c);
+    EXPECT_EQ(coherence_names(), (std::vector<std::string>{"none", "smooth"}));
     try {
         parse_coherence("fast");
         FAIL() << "no exception";
