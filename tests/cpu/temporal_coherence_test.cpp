@@ -124,7 +124,11 @@ TEST(CutOpening, OpensFromTheFirstPrimariesAtOneStepPerFrameAndClosesWithoutThem
     EXPECT_EQ(opening.next(7), 1.0f);   // stays open while there are primaries
     EXPECT_EQ(opening.next(0), 0.0f);
     EXPECT_EQ(opening.next(2), 0.0f);   // opens again from the narrowest
-    EXPECT_EQ(CutOpening(1).next(5), 0.0f);
+    EXPECT_EQ(CutOpening(1).next(0), 0.0f);
+    CutOpening from_start(4);
+    EXPECT_EQ(from_start.next(5), 1.0f);  // primaries in the first frame: nothing shown before, the cut is open
+    EXPECT_EQ(from_start.next(0), 0.0f);
+    EXPECT_EQ(from_start.next(5), 0.0f);  // later appearances open gradually again
     EXPECT_THROW(CutOpening(0), std::invalid_argument);
 }
 

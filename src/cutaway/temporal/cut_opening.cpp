@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 namespace cutaway::temporal {
 
@@ -11,6 +12,7 @@ CutOpening::CutOpening(std::size_t frames_to_open) : frames_to_open_(frames_to_o
 }
 
 float CutOpening::next(std::size_t primary_cells) {
+    if (std::exchange(first_frame_, false) && primary_cells > 0) frames_open_ = frames_to_open_;
     if (primary_cells == 0) {
         frames_open_ = 0;
         return 0.0f;

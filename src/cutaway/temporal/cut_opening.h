@@ -19,12 +19,14 @@ public:
     /// The next frame's opening in [0, 1] (opened_aperture_deg's `opening`) from its primary
     /// count: 0 on the frame the first primaries appear, growing by 1 / frames_to_open per frame
     /// while there are primaries, up to 1; 0 on a frame without primaries (there is no cut, and
-    /// the next primaries open it again).
+    /// the next primaries open it again). Primaries in the very first frame find the cut open:
+    /// nothing was shown before it, so there is nothing to flicker against.
     float next(std::size_t primary_cells);
 
 private:
     std::size_t frames_to_open_;
     std::size_t frames_open_ = 0;  ///< frames with primaries in a row, this one included (0: none now)
+    bool first_frame_ = true;
 };
 
 /// The full opening angle (degrees) of a cut `opening` of the way (0..1) from half of `full_deg`
