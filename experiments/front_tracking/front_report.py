@@ -207,6 +207,11 @@ def readme(document):
                                          f"({w['primaries_before']} -> {w['primaries_after']} primaries)"
                                          for mode, w in entry["largest_flicker"].items())
               for name, entry in document["models"].items()]
+    lines += ["", "Smooth spreads a step's many entries and exits over its frames (pops and flicker fall about as many "
+                  "times as there are frames per step) and opens the cut gradually where primaries appear from none. "
+                  "A single cell entering in a new place opens its own cone in one frame in both modes: where the "
+                  "largest flicker is such an event (a few primaries before and after), smooth cannot lower it, and "
+                  "pops of one or two cells cannot be split over frames."]
     lines += ["",
               "## animate against render", "",
               f"{timing['model']}, {timing['size'][0]}x{timing['size'][1]}, {timing['frames']} frames, smooth, same run "
