@@ -32,6 +32,7 @@
 #include "cutaway/renderer_readback.h"
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
+#include "cutaway/temporal/cut_opening.h"
 #include "cutaway/temporal/step_values.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
@@ -72,7 +73,7 @@ temporal::AnimationTimeline timeline_of(const AnimateOptions& options, std::size
     return timeline;
 }
 
-/// What the animation's report steps hold, read once before the frames.
+/// What the animation's report steps hold, read before the frames.
 struct StepSurvey {
     grid::PrimaryRange colour_range;    ///< min and max over active cells of every step: one colour scale
     std::size_t most_primaries = 0;     ///< the largest primary set of a step (selected anew)
@@ -82,15 +83,10 @@ StepSurvey survey_steps(const grid::CornerPointGrid& grid, const temporal::StepV
                         const temporal::AnimationTimeline& timeline, const grid::PrimaryRange& primary_range,
                         const std::optional<grid::IjkBox>& box) {
     StepSurvey survey;
-    for (std::size_t step = timeline.first_step; step <= timeline.last_step; ++step) {
-        const std::vector<float> values = source.values(step);
-        const grid::PrimaryRange r = grid::active_value_range(grid, values, source.property());
-        survey.colour_range = step == timeline.first_step
-                                  ? r
-                                  : grid::PrimaryRange{std::min(survey.colour_range.min, r.min), std::max(survey.colour_range.max, r.max)};
+    survey.colour_range = temporal::value_range_over_steps(grid, source, timeline.first_step, timeline.last_step);
+    for (std::size_t step = timeline.first_step; step <= timeline.last_step; ++step)
         survey.most_primaries = std::max(survey.most_primaries, grid::count_primaries(grid::select_primaries(
-                                                                    grid, values, source.property(), primary_range, box)));
-    }
+                                                                    grid, source.values(step), source.property(), primary_range, box)));
     return survey;
 }
 
@@ -99,6 +95,28 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 metrics::PixelIds view(const pipeline::IdImage& ids) { return {ids.width, ids.height, ids.cell, ids.flags}; }
+
+/// The drawn frame's image metrics into its stats entry: cut_flicker against `previous_states`
+/// (the frame before's cut states, empty for the first frame; replaced by this frame's),
+/// context_share, and primary_exposure against a primaries-only frame drawn with `primaries_only`.
+void add_image_metrics(json& entry, pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& primaries_only,
+                       const pipeline::Camera& camera, std::vector<metrics::CutState>& previous_states) {
+    const pipeline::IdImage ids = pipeline::FrameReadback(renderer).read_ids();
+    std::vector<metrics::CutState> states = metrics::cut_states(ids.cell, ids.flags);
+    if (!previous_states.empty()) entry["cut_flicker"] = metrics::cut_flicker(previous_states, states).fraction;
+    previous_states = std::move(states);
+    entry["context_share"] = metrics::context_share(view(ids)).fraction;
+    renderer.render(primaries_only, camera);
+    const metrics::Exposure exposure = metrics::primary_exposure(view(pipeline::FrameReadback(renderer).read_ids()), view(ids));
+    put_metric(entry, "primary_exposure", exposure.fraction, exposure.primary_pixels, "no primary pixel in the primaries-only frame");
+}
+
+/// `settings` with the cut `opening` of the way open (temporal::CutOpening, 1: as set).
+pipeline::FrameSettings opened_to(pipeline::FrameSettings settings, float opening) {
+    settings.aperture_h_deg = temporal::opened_aperture_deg(settings.aperture_h_deg, opening);
+    settings.aperture_v_deg = temporal::opened_aperture_deg(settings.aperture_v_deg, opening);
+    return settings;
+}
 
 int animate(const AnimateOptions& options) {
     // Before any thread starts (OpenMP in the generator, llvmpipe's, the encoder's): see interrupt_guard.h.
@@ -132,7 +150,8 @@ int animate(const AnimateOptions& options) {
     const grid::PrimaryRange primary_range = first_step.primary_range;
     first_step.owned = std::vector<float>();
     const StepSurvey survey = survey_steps(grid, source, timeline, primary_range, box);
-    const grid::PrimaryRange colour_range = survey.colour_range;
+    const grid::PrimaryRange colour_range =
+        scene.colour_range.empty() ? survey.colour_range : given_colour_range(scene.colour_range, false);
     const float band = coherence == temporal::Coherence::smooth ? float(options.hysteresis) * (colour_range.max - colour_range.min) : 0.0f;
 
     const StepWellSets step_wells(model, scene.wells, scene.well_radius, timeline.first_step, timeline.last_step);
@@ -200,7 +219,8 @@ int animate(const AnimateOptions& options) {
             renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *scene.freeze_pose, scene.width, scene.height, bar_width));
         const double upload_ms = milliseconds_since(started);
         // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
-        const double draw_ms = renderer.render(settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
+        const pipeline::FrameSettings frame_settings = opened_to(settings, frame.cut_opening);
+        const double draw_ms = renderer.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
         gl::RgbaImage image = renderer.read_image();
         double png_ms = 0;  // an extra output, left out of the frame's time
         if (!options.frames_dir.empty()) {
@@ -216,23 +236,15 @@ int animate(const AnimateOptions& options) {
 
         json entry{{"frame", f}, {"time_step", frame.time_step}, {"ms", ms},
                    {"ms_by_part", {{"upload", upload_ms}, {"draw", draw_ms}, {"readback_and_encoder", ms - upload_ms - draw_ms}}},
-                   {"primary_cells", grid::count_primaries(flags)}};
-        if (options.time_against_render) entry["render_ms"] = renderer.render(settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
+                   {"primary_cells", frame.primary_cells}, {"cut_opening", frame.cut_opening}};
+        if (options.time_against_render)
+            entry["render_ms"] = renderer.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
         if (f > 0) {
             const metrics::PopCounts pops = metrics::count_pops(previous_flags, flags);
             entry["pop_in"] = pops.in;
             entry["pop_out"] = pops.out;
         }
-        if (options.metrics) {
-            const pipeline::IdImage ids = pipeline::FrameReadback(renderer).read_ids();
-            std::vector<metrics::CutState> states = metrics::cut_states(ids.cell, ids.flags);
-            if (f > 0) entry["cut_flicker"] = metrics::cut_flicker(previous_states, states).fraction;
-            previous_states = std::move(states);
-            renderer.render(primaries_only, camera);
-            const metrics::Exposure exposure = metrics::primary_exposure(view(pipeline::FrameReadback(renderer).read_ids()), view(ids));
-            put_metric(entry, "primary_exposure", exposure.fraction, exposure.primary_pixels,
-                       "no primary pixel in the primaries-only frame");
-        }
+        if (options.metrics) add_image_metrics(entry, renderer, primaries_only, camera, previous_states);
         previous_flags = flags;
         frames.push_back(std::move(entry));
         progress.show(f + 1);

@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "app/option_checks.h"
+#include "cutaway/temporal/coherence.h"
 
 namespace cutaway::app {
 namespace {
@@ -47,7 +48,7 @@ void add_animate_options(CLI::App& c, AnimateOptions& o) {
     c.add_option("--coherence", o.coherence,
                  "none: each report step shown until the next, primaries selected anew (the paper) | smooth: values "
                  "interpolated between steps, primaries kept by hysteresis (default)")
-        ->check(one_of({"none", "smooth"}));
+        ->check(one_of(temporal::coherence_names()));
     c.add_option("--hysteresis", o.hysteresis,
                  "smooth: a primary stays primary until its value leaves the range widened by this fraction of the "
                  "property's span on each side")

@@ -37,6 +37,17 @@ void put_frame_summaries(json& stats, const json& frames, double encoder_finish_
     put_extreme(stats, "cut_flicker_max", frames, "cut_flicker", true, "one frame, or --no-metrics");
     put_extreme(stats, "primary_exposure_min", frames, "primary_exposure", false,
                 "--no-metrics, or no frame has a primary pixel");
+    std::vector<double> shares;
+    for (const json& frame : frames)
+        if (frame.contains("context_share")) shares.push_back(frame["context_share"].get<double>());
+    if (shares.empty()) {
+        stats["context_share_mean"] = nullptr;
+        stats["context_share_mean_absent"] = "--no-metrics";
+    } else {
+        double sum = 0;
+        for (double share : shares) sum += share;
+        stats["context_share_mean"] = sum / double(shares.size());
+    }
     std::vector<double> frame_ms;
     for (const json& frame : frames) frame_ms.push_back(frame["ms"].get<double>());
     stats["frame_ms_median"] = metrics::median(frame_ms);

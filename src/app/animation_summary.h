@@ -1,6 +1,7 @@
 #pragma once
 // stats.json summaries of `cutaway animate` from its per-frame entries: pop_max, cut_flicker_max,
-// primary_exposure_min, the median frame time and, when the frames were timed against render,
+// primary_exposure_min, context_share_mean (the mean over frames of the share of model pixels
+// showing the context's own surface), the median frame time and, when the frames were timed against render,
 // frame_over_render.
 #include <nlohmann/json.hpp>
 

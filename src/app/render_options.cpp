@@ -45,16 +45,6 @@ std::string names_of(const std::vector<std::string>& names) {
     return text.empty() ? "none" : text;
 }
 
-/// --colour-range LO HI as the colour map's range: LO below HI, both above 0 on a logarithmic scale.
-grid::PrimaryRange given_colour_range(const std::vector<float>& range, bool log_scale) {
-    if (!(range[0] < range[1]))
-        throw std::invalid_argument("--colour-range " + std::to_string(range[0]) + " " + std::to_string(range[1]) +
-                                    ": expected LO below HI");
-    if (log_scale && !(range[0] > 0))
-        throw std::invalid_argument("--colour-range: a logarithmic scale needs LO above 0 (or --scale linear)");
-    return {range[0], range[1]};
-}
-
 }  // namespace
 
 gl::ContextOptions RenderOptions::context_options() const {
@@ -110,8 +100,8 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
-    nlohmann::json description = {{"model", model}, {"property", property}, {"range", range}, {"primary_fraction", primary_fraction},
-            {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"stage2_passes", pipeline::to_string(s.stage2_passes)}, {"seeds", pipeline::to_string(s.seeds)},
+    nlohmann::json description = {{"model", model}, {"property", property}, {"range", range}, {"colour_range", colour_range},
+            {"primary_fraction", primary_fraction}, {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"stage2_passes", pipeline::to_string(s.stage2_passes)}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
@@ -120,7 +110,7 @@ nlohmann::json RenderOptions::describe() const {
             {"ssao_resolution", s.ssao_half_resolution ? "half" : "full"}, {"saturation", s.saturation},
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
             {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)},
-            {"scale", scale}, {"colour_range", colour_range}, {"text_height_px", text_height_px},
+            {"scale", scale}, {"text_height_px", text_height_px},
             {"camera", camera}, {"freeze_camera", freeze_camera}, {"z_scale", z_scale},
             {"fovy_deg", pipeline::default_fovy_deg}, {"egl_platform", egl_platform}, {"exact_check", exact_check},
             {"wells", wells}, {"well_radius", well_radius}};
@@ -132,6 +122,11 @@ void add_selection_options(CLI::App& c, RenderOptions& o) {
     c.add_option("--property", o.property, "property that colours cells and selects primaries (default PORO)")
         ->check(property_name());
     c.add_option("--range", o.range, "primary range LO HI of the property")->expected(2)->check(finite_in(-FLT_MAX, FLT_MAX));
+    c.add_option("--colour-range", o.colour_range,
+                 "colour scale LO HI of the property (default: its 2nd-98th percentile; animate: min-max over the "
+                 "animated steps): one scale for frames of several steps")
+        ->expected(2)
+        ->check(finite_in(-FLT_MAX, FLT_MAX));
     c.add_option("--primary-fraction", o.primary_fraction, "primaries = this top fraction of active cells (default 0.01)")
         ->check(finite_above(0, 1));
     c.add_option("--time-step,--step", o.step,
@@ -184,11 +179,6 @@ void add_frame_options(CLI::App& c, RenderOptions& o) {
     add_choice(c, "--only", o.only, pipeline::choices_of(pipeline::OnlyLayer{}), "layers drawn");
     add_choice(c, "--scale", o.scale, pipeline::choices_of(pipeline::ColourScale{}),
                "colour scale: auto (logarithmic for permeabilities, PERM*; linear otherwise) | linear | log");
-    c.add_option("--colour-range", o.colour_range,
-                 "LO HI of the colour map (default: the property's 2nd..98th percentile); one range for panels or "
-                 "steps that must compare")
-        ->expected(2)
-        ->check(finite_in(-FLT_MAX, FLT_MAX));
     // 200 px capitals already fill a 4K image's colour bar with a handful of digits.
     c.add_option("--text-height", o.text_height_px,
                  "capitals of the colour bar's text at least this tall, pixels (default: 2% of the image height); "
@@ -271,6 +261,14 @@ annotation::ColourBarLabel PropertyChoice::colour_bar_label(bool mark_primary_ra
     bar.min_text_px = text_height_px;
     if (mark_primary_range) bar.primary_range = annotation::ColourBarLabel::Span{primary_range.min, primary_range.max};
     return bar;
+}
+
+grid::PrimaryRange given_colour_range(const std::vector<float>& range, bool log_scale) {
+    if (range.size() != 2 || !(range[0] < range[1]))
+        throw std::invalid_argument("--colour-range: expected LO HI with LO < HI");
+    if (log_scale && !(range[0] > 0))
+        throw std::invalid_argument("--colour-range: expected LO > 0 on a log scale (--scale linear for others)");
+    return {range[0], range[1]};
 }
 
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer) {

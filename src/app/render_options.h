@@ -30,6 +30,7 @@ struct RenderOptions {
     std::vector<std::string> model;   ///< GRDECL file(s) loaded onto one grid, preset:NAME, or CASE.EGRID
     std::string property;             ///< empty: PORO, else the first property
     std::vector<float> range;         ///< LO HI
+    std::vector<float> colour_range;  ///< --colour-range LO HI (empty: from the values shown)
     double primary_fraction = 0;      ///< 0: --range or the default 1%
     int step = -1;                    ///< --time-step: report step of a dynamic property (-1: none given)
     std::vector<int> ijk_box;         ///< I0 J0 K0 I1 J1 K1
@@ -42,7 +43,6 @@ struct RenderOptions {
     std::string contours = "on";
     std::string only = "both";
     std::string scale = "auto";  ///< pipeline::ColourScale by name
-    std::vector<float> colour_range;  ///< LO HI of the colour map (empty: the values' 2nd..98th percentile)
     float text_height_px = 0;         ///< capitals of the image's text at least this tall (0: 2% of the height)
     std::string seeds = "boxes";
     std::string draw = "visible";
@@ -83,6 +83,10 @@ struct RenderOptions {
     /// Every effective option, for stats.json.
     nlohmann::json describe() const;
 };
+
+/// --colour-range LO HI as a range; throws std::invalid_argument naming the option unless LO < HI
+/// (and LO > 0 on a log scale).
+grid::PrimaryRange given_colour_range(const std::vector<float>& range, bool log_scale);
 
 /// Which cells are primaries: --property, --range, --primary-fraction, --step, --ijk-box.
 void add_selection_options(CLI::App& command, RenderOptions& options);

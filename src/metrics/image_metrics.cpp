@@ -33,6 +33,16 @@ std::size_t context_pixels(const PixelIds& frame) {
     return count;
 }
 
+std::size_t model_pixels(const PixelIds& frame) {
+    return std::size_t(std::count_if(frame.cell.begin(), frame.cell.end(), [](std::uint32_t cell) { return cell != 0; }));
+}
+
+ContextShare context_share(const PixelIds& frame) {
+    ContextShare share{0, context_pixels(frame), model_pixels(frame)};
+    if (share.model > 0) share.fraction = double(share.context) / double(share.model);
+    return share;
+}
+
 ContextKept context_kept(std::size_t kept, std::size_t kept_180, std::size_t uncut) {
     ContextKept result{1, kept, kept_180, uncut};
     if (uncut > kept_180)

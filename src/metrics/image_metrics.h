@@ -32,6 +32,19 @@ Exposure primary_exposure(const PixelIds& primaries_only, const PixelIds& cutawa
 /// (not cut fill, not a border line).
 std::size_t context_pixels(const PixelIds& frame);
 
+/// Pixels showing any cell (primary, secondary, cut fill or border).
+std::size_t model_pixels(const PixelIds& frame);
+
+struct ContextShare {
+    double fraction = 0;           ///< context / model (0 when the frame shows no cell)
+    std::size_t context = 0;       ///< context_pixels
+    std::size_t model = 0;         ///< model_pixels
+};
+
+/// context_share: the share of the model's pixels that show the context's own surface (secondary
+/// cells as the model has them). Needs no second frame, so an animation measures it every frame.
+ContextShare context_share(const PixelIds& frame);
+
 struct ContextKept {
     double fraction = 1;         ///< (kept - kept_180) / (uncut - kept_180), clamped to [0, 1]
     std::size_t kept = 0;        ///< context pixels of the cutaway frame

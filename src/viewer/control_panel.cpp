@@ -6,6 +6,7 @@
 
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/setting_names.h"
+#include "cutaway/temporal/coherence.h"
 
 namespace cutaway::viewer {
 namespace {
@@ -41,6 +42,17 @@ std::vector<std::string> property_names(const grid::CornerPointGrid& grid) {
     return names;
 }
 
+/// Play/pause, the frames drawn from one report step to the next and how they move between
+/// steps (none: each step held; smooth: interpolated, as `cutaway animate --coherence`). The
+/// player reads them each frame, so they need no Change bit.
+void play_controls(ViewerState& state) {
+    if (ImGui::Button(state.playing ? "pause [SPACE]" : "play [SPACE]")) state.playing = !state.playing;
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120);
+    choice_combo("coherence", state.coherence, temporal::coherence_names());
+    ImGui::SliderInt("frames/step", &state.frames_per_step, 1, 60);
+}
+
 unsigned property_section(ViewerState& state, const ViewerScene& scene) {
     app::RenderOptions& o = state.options;
     const app::PropertyChoice& property = scene.property();
@@ -73,9 +85,7 @@ unsigned property_section(ViewerState& state, const ViewerScene& scene) {
             o.step = step;
             changes |= change_selection;
         }
-        ImGui::Checkbox("play", &state.playing);
-        ImGui::SameLine();
-        ImGui::SliderInt("frames/step", &state.play_every_frames, 1, 60);
+        play_controls(state);
     }
     return changes;
 }
@@ -155,6 +165,7 @@ unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const 
         ImGui::TextWrapped("%s", scene.description().c_str());
         ImGui::TextDisabled("%s", info.gl_renderer.c_str());
         if (!info.message.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.3f, 1), "%s", info.message.c_str());
+        if (!info.step_caption.empty()) ImGui::TextUnformatted(info.step_caption.c_str());
         if (ImGui::CollapsingHeader("property and primaries", ImGuiTreeNodeFlags_DefaultOpen))
             changes |= property_section(state, scene);
         if (ImGui::CollapsingHeader("cut", ImGuiTreeNodeFlags_DefaultOpen)) changes |= cut_section(state);

@@ -1,6 +1,6 @@
 #pragma once
 // The viewer's control panel (Dear ImGui): property and primary range over its histogram, time
-// step and play, apertures, strategy, border mode, mean filter, SSAO, saturation, silhouette,
+// step, play with its coherence and frames per step, apertures, strategy, border mode, mean filter, SSAO, saturation, silhouette,
 // internal lines, freeze view, render scale, camera reset and screenshot.
 #include <string>
 
@@ -14,6 +14,7 @@ struct PanelInfo {
     std::string gl_renderer;
     int render_width = 0, render_height = 0;
     std::string message;  ///< last error or notice (shader reload, bad range), shown in colour
+    std::string step_caption;  ///< property, date and fractional step shown (empty: a static property)
 };
 
 /// Buttons that ask the viewer to do something rather than change the state.

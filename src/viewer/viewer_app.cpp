@@ -15,8 +15,11 @@
 #include "gl/gl_error.h"
 #include "gl/image.h"
 #include "io/output_batch.h"
+#include "cutaway/temporal/cut_opening.h"
 #include "viewer/camera_controller.h"
 #include "viewer/option_tokens.h"
+#include "viewer/step_clock.h"
+#include "viewer/step_overlay.h"
 #include "viewer/timing_overlay.h"
 
 namespace cutaway::viewer {
@@ -139,9 +142,15 @@ bool ViewerApp::frame(bool last_frame_due) {
     if (state_.ui_visible) {
         info_.render_width = render_width();
         info_.render_height = render_height();
+        info_.step_caption = scene_->step_count() == 0
+                                 ? std::string()
+                                 : step_caption(scene_->property().name, date_at(scene_->report_steps(), shown_time_step()),
+                                                shown_time_step(), scene_->step_count());
         changes |= draw_control_panel(state_, *scene_, info_, requests);
         const pipeline::CutawayRenderer& renderer = scene_->renderer();
-        draw_timing_overlay(timings_, renderer.status(settings_).colour_bar_reserved_width / float(renderer.status().width));
+        const float colour_bar_share = renderer.status(settings_).colour_bar_reserved_width / float(renderer.status().width);
+        draw_step_overlay(info_.step_caption, colour_bar_share);
+        draw_timing_overlay(timings_, colour_bar_share);
     }
     if (requests.reset_camera) changes |= press_key("R");
     if (requests.screenshot) changes |= press_key("F12");
@@ -258,6 +267,10 @@ bool ViewerApp::run_step(const ScriptStep& step, unsigned& changes) {
     else if (step.action == "freeze") {
         if (on_off(step.args.at(0)) != state_.frozen_pose.has_value()) changes |= press_key("F");
     } else if (step.action == "play") state_.playing = on_off(step.args.at(0));
+    else if (step.action == "playback") {
+        state_.coherence = step.args.at(0);
+        state_.frames_per_step = std::stoi(step.args.at(1));
+    }
     else if (step.action == "ui") state_.ui_visible = on_off(step.args.at(0));
     else if (step.action == "screenshot") {
         screenshot_due_ = step.args.at(0);
@@ -274,15 +287,39 @@ bool ViewerApp::run_step(const ScriptStep& step, unsigned& changes) {
 }
 
 unsigned ViewerApp::advance_play() {
-    const std::size_t steps = scene_->step_count();
-    if (!state_.playing || steps == 0 || frame_index_ % std::max(1, state_.play_every_frames) != 0) return change_none;
-    state_.options.step = int((std::size_t(std::max(state_.options.step, 0)) + 1) % steps);
-    return change_selection;
+    if (!state_.playing || scene_->step_count() == 0) {
+        if (!player_) return change_none;
+        player_.reset();  // paused: the frame stays, the cut opens in full
+        return change_frame;
+    }
+    const temporal::Coherence coherence = temporal::parse_coherence(state_.coherence);
+    const std::size_t frames_per_step = std::size_t(std::max(1, state_.frames_per_step));
+    if (!player_ || player_->settings().coherence != coherence || player_->settings().frames_per_step != frames_per_step)
+        player_ = scene_->player(coherence, frames_per_step, std::size_t(std::max(state_.options.step, 0)));
+    const temporal::CoherentSequence::Frame frame = player_->next();
+    scene_->show(frame);
+    played_time_step_ = frame.time_step;
+    played_cut_opening_ = frame.cut_opening;
+    state_.options.step = int(frame.time_step);  // the step slider follows the played frames
+    return change_frame;
 }
+
+pipeline::FrameSettings ViewerApp::frame_settings() const {
+    pipeline::FrameSettings settings = state_.options.frame_settings();
+    if (player_) {
+        settings.aperture_h_deg = temporal::opened_aperture_deg(settings.aperture_h_deg, played_cut_opening_);
+        settings.aperture_v_deg = temporal::opened_aperture_deg(settings.aperture_v_deg, played_cut_opening_);
+    }
+    return settings;
+}
+
+double ViewerApp::shown_time_step() const { return player_ ? played_time_step_ : double(std::max(state_.options.step, 0)); }
 
 void ViewerApp::apply(unsigned changes) {
     if (changes == change_none) return;
-    settings_ = state_.options.frame_settings();
+    // A new step, property or range starts playing afresh from the options' step.
+    if (changes & change_selection) player_.reset();
+    settings_ = frame_settings();
     if (changes & change_selection) {
         try {
             scene_->select(state_.options);

@@ -38,6 +38,11 @@ private:
     unsigned mouse_camera();
     bool run_step(const ScriptStep& step, unsigned& changes);
     unsigned advance_play();
+    /// The frame's settings: the options' with, while playing, the cut as open as the played frame
+    /// has it (temporal::CutOpening).
+    pipeline::FrameSettings frame_settings() const;
+    /// The fractional report step shown: the played frame's while playing, else the options' step.
+    double shown_time_step() const;
     void apply(unsigned changes);
     /// Whether the view moves now (a drag, the wheel in the last moments, a script's drag); a
     /// change of that re-renders (smaller as it starts, the full size as it stops).
@@ -67,6 +72,9 @@ private:
     ShaderWatcher shader_watcher_;
     std::chrono::steady_clock::time_point last_shader_scan_{};
     std::unique_ptr<ViewerScene> scene_;
+    std::unique_ptr<StepPlayer> player_;   ///< while playing
+    double played_time_step_ = 0;          ///< the played frame's fractional report step
+    float played_cut_opening_ = 1;         ///< the played frame's cut opening
     pipeline::FrameSettings settings_;
     FrameTimings timings_;
     PanelInfo info_;

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "app/frame_wells.h"
+#include "app/step_value_sources.h"
 #include "cutaway/camera.h"
 #include "grid/primary_selection.h"
 
@@ -39,6 +40,7 @@ void ViewerScene::select(const app::RenderOptions& options) {
     const bool same_values = renderer_ && property.label == property_.label;
     if (!same_values) histogram_ = active_histogram(model_.grid, property.values(), histogram_bins);
     property_ = std::move(property);
+    options_colour_range_ = options.colour_range;
     box_ = box;
     if (!renderer_) return;
     if (!same_values) apply_colouring(*renderer_);
@@ -76,6 +78,41 @@ void ViewerScene::apply_colouring(pipeline::CutawayRenderer& renderer) const {
 
 std::size_t ViewerScene::primary_count() const { return renderer_ ? renderer_->status().primary_cells : 0; }
 
-std::size_t ViewerScene::step_count() const { return model_.grid.step_count(property_.name); }
+std::size_t ViewerScene::step_count() const {
+    if (model_.report_steps && model_.report_steps->has_property(property_.name)) return model_.report_steps->step_count();
+    return model_.grid.step_count(property_.name);
+}
+
+const std::vector<eclipse::ReportStep>& ViewerScene::report_steps() const {
+    static const std::vector<eclipse::ReportStep> none;
+    return model_.report_steps ? model_.report_steps->steps() : none;
+}
+
+std::unique_ptr<StepPlayer> ViewerScene::player(temporal::Coherence coherence, std::size_t frames_per_step,
+                                                std::size_t start_step) {
+    // animate's --hysteresis default: a primary stays until it leaves the range widened by 2% of the span.
+    constexpr float hysteresis = 0.02f;
+    const PlaybackSettings settings{coherence, frames_per_step, property_.primary_range,
+                              coherence == temporal::Coherence::smooth
+                                  ? hysteresis * (property_.colour_range.max - property_.colour_range.min)
+                                  : 0.0f,
+                              box_};
+    std::unique_ptr<temporal::StepValueSource> source = app::step_values_of(model_, property_.name);
+    // One colour scale for every played step (--colour-range, else the values' span over all of
+    // them): a step's own percentiles would recolour the front as it moves.
+    playing_colours_ = property_.colour_bar_label();
+    playing_colours_.property = property_.name;  // the overlay shows the date and step
+    if (options_colour_range_.empty()) {
+        const grid::PrimaryRange span = temporal::value_range_over_steps(model_.grid, *source, 0, source->step_count() - 1);
+        playing_colours_.min = span.min;
+        playing_colours_.max = span.max;
+    }
+    return std::make_unique<StepPlayer>(model_.grid, std::move(source), settings, start_step);
+}
+
+void ViewerScene::show(const temporal::CoherentSequence::Frame& frame) {
+    if (frame.values_changed) renderer_->set_colouring(*frame.values, playing_colours_);
+    renderer_->select(*frame.flags);
+}
 
 }  // namespace cutaway::viewer

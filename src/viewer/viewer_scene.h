@@ -10,6 +10,7 @@
 #include "cutaway/cutaway_renderer.h"
 #include "gl/shader_library.h"
 #include "viewer/property_histogram.h"
+#include "viewer/step_player.h"
 
 namespace cutaway::viewer {
 
@@ -36,6 +37,16 @@ public:
     const PropertyHistogram& histogram() const { return histogram_; }
     /// Time steps of the property shown (0 for a static one).
     std::size_t step_count() const;
+    /// A simulator case's report steps with their dates (empty for other models).
+    const std::vector<eclipse::ReportStep>& report_steps() const;
+
+    /// A player of the shown property's steps from `start_step`, with the shown primary range and
+    /// `animate`'s default hysteresis; fixes the colour scale the played frames use (reads every
+    /// step once unless --colour-range gives it). Throws std::invalid_argument for a static property.
+    std::unique_ptr<StepPlayer> player(temporal::Coherence coherence, std::size_t frames_per_step, std::size_t start_step);
+    /// Shows a played frame: its values on the shown property's colour range (when they changed)
+    /// and its primaries.
+    void show(const temporal::CoherentSequence::Frame& frame);
 
 private:
     void apply_selection(pipeline::CutawayRenderer& renderer) const;
@@ -51,6 +62,8 @@ private:
     app::CutVolumeOptions volume_options_;
     std::size_t memory_limit_bytes_ = 0;
     std::optional<app::CutVolumeSet> cut_volumes_;  ///< built with the first renderer (its frame)
+    std::vector<float> options_colour_range_;      ///< --colour-range of the last selection (empty: none)
+    annotation::ColourBarLabel playing_colours_;   ///< the played frames' colour scale (player())
     PropertyHistogram histogram_;
     std::unique_ptr<pipeline::CutawayRenderer> renderer_;
     pipeline::WellSet wells_;  ///< --wells at the report step shown

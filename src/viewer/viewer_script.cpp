@@ -114,6 +114,14 @@ void check_on_off(Args& args) {
     if (args[0] != "on" && args[0] != "off") throw LineProblem{"'" + args[0] + "' is neither on nor off"};
 }
 
+void check_playback(Args& args) {
+    require_count(args, 2);
+    if (args[0] != "none" && args[0] != "smooth") throw LineProblem{"coherence '" + args[0] + "' is neither none nor smooth"};
+    number_in(args[1], "FRAMES_PER_STEP", 1, 1000);
+    if (args[1].find_first_not_of("0123456789") != std::string::npos)
+        throw LineProblem{"FRAMES_PER_STEP '" + args[1] + "' is not a whole number"};
+}
+
 void check_screenshot(Args& args) { require_count(args, 1); }
 
 void check_quit(Args& args) { require_count(args, 0); }
@@ -125,7 +133,7 @@ struct ActionRule {
     void (*check)(Args& args);  ///< throws LineProblem; may normalise args
 };
 
-constexpr std::array<ActionRule, 14> action_rules{{
+constexpr std::array<ActionRule, 15> action_rules{{
     {"wait", "wait N (whole number of frames, 0..100000)", "render N frames before the next action", check_wait},
     {"sleep", "sleep SECONDS (0..3600)", "keep drawing for SECONDS of wall clock before the next action", check_sleep},
     {"orbit", "orbit DAZ DEL (degrees)", "add DAZ to the azimuth and DEL to the elevation", check_orbit},
@@ -141,6 +149,9 @@ constexpr std::array<ActionRule, 14> action_rules{{
      check_on_off},
     {"freeze", "freeze on|off", "freeze or release the cut surface", check_on_off},
     {"play", "play on|off", "play or pause the time steps", check_on_off},
+    {"playback", "playback none|smooth FRAMES_PER_STEP (1..1000)",
+     "how play moves between report steps: coherence (as cutaway animate's) and frames from one step to the next",
+     check_playback},
     {"ui", "ui on|off", "show or hide the panel", check_on_off},
     {"screenshot", "screenshot FILE", "save the next frame as a PNG", check_screenshot},
     {"quit", "quit (no arguments)", "close the viewer", check_quit},

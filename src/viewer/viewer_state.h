@@ -2,6 +2,7 @@
 // Everything the viewer's controls change. Selection and frame switches are the very options
 // `cutaway render` takes (RenderOptions), so a view can be reproduced headless with the same flags.
 #include <optional>
+#include <string>
 
 #include "app/render_options.h"
 #include "cutaway/camera.h"
@@ -13,7 +14,8 @@ struct ViewerState {
     pipeline::OrbitPose pose;                      ///< the model camera
     std::optional<pipeline::OrbitPose> frozen_pose;  ///< freeze view: the cut camera's pose
     bool playing = false;                          ///< advance the time step of a dynamic property
-    int play_every_frames = 1;                     ///< frames per time step while playing
+    int frames_per_step = 8;                       ///< frames from one report step to the next while playing
+    std::string coherence = "smooth";              ///< how play moves between steps (temporal::Coherence by name)
     bool ui_visible = true;                        ///< control panel and timing overlay
     float render_scale = 1;                        ///< render size / window framebuffer size
     /// While the view moves, frames are drawn smaller to hold this many per second (interaction_

@@ -48,6 +48,19 @@ TEST(ImageMetrics, ContextPixelsLeaveOutPrimariesFillAndBorders) {
     EXPECT_EQ(context_pixels(f.ids()), 1u);
 }
 
+TEST(ImageMetrics, ContextShareIsContextOverPixelsShowingACell) {
+    Frame f(5, 1);  // the last pixel stays background: left out of the model's pixels
+    f.set(0, 0, 1, 0);
+    f.set(1, 0, 2, 0);
+    f.set(2, 0, 3, flag_primary);
+    f.set(3, 0, 4, flag_cut_fill);
+    const ContextShare share = context_share(f.ids());
+    EXPECT_EQ(share.context, 2u);
+    EXPECT_EQ(share.model, 4u);
+    EXPECT_DOUBLE_EQ(share.fraction, 0.5);
+    EXPECT_DOUBLE_EQ(context_share(Frame(3, 1).ids()).fraction, 0.0);  // no cell: no share, no division by zero
+}
+
 /// A straight band of width `w` at `angle` through a 200 x 200 image.
 Frame band(double w, double angle) {
     Frame f(200, 200);

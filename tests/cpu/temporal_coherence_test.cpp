@@ -10,6 +10,7 @@
 
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
+#include "cutaway/temporal/cut_opening.h"
 #include "cutaway/temporal/paced_transition.h"
 #include "cutaway/temporal/primary_tracker.h"
 #include "grid/box_grid.h"
@@ -86,6 +87,7 @@ TEST(AnimationTimeline, NoneHoldsTheStepSmoothBlendsTheNext) {
 
 TEST(Coherence, NamesRoundTripAndUnknownNamesAreRefused) {
     for (Coherence c : {Coherence::none, Coherence::smooth}) EXPECT_EQ(parse_coherence(to_string(c)), c);
+    EXPECT_EQ(coherence_names(), (std::vector<std::string>{"none", "smooth"}));
     try {
         parse_coherence("fast");
         FAIL() << "no exception";
@@ -109,6 +111,38 @@ TEST(PrimaryTracker, HysteresisKeepsAPrimaryInsideTheBand) {
     EXPECT_EQ(anew.update(second), (std::vector<std::uint8_t>{0, 0, 0}));
     EXPECT_THROW(kept.update({NAN, 0.5f, 0.5f}), std::invalid_argument);
     EXPECT_THROW(PrimaryTracker(grid, "V", {0.5f, 0.6f}, -1.0f), std::invalid_argument);
+}
+
+TEST(CutOpening, OpensFromTheFirstPrimariesAtOneStepPerFrameAndClosesWithoutThem) {
+    CutOpening opening(4);
+    EXPECT_EQ(opening.next(0), 0.0f);   // nothing to open for
+    EXPECT_EQ(opening.next(3), 0.0f);   // the primaries' first frame: the narrowest cut
+    EXPECT_EQ(opening.next(50), 0.25f);
+    EXPECT_EQ(opening.next(50), 0.5f);
+    EXPECT_EQ(opening.next(1), 0.75f);
+    EXPECT_EQ(opening.next(7), 1.0f);
+    EXPECT_EQ(opening.next(7), 1.0f);   // stays open while there are primaries
+    EXPECT_EQ(opening.next(0), 0.0f);
+    EXPECT_EQ(opening.next(2), 0.0f);   // opens again from the narrowest
+    EXPECT_EQ(CutOpening(1).next(0), 0.0f);
+    CutOpening from_start(4);
+    EXPECT_EQ(from_start.next(5), 1.0f);  // primaries in the first frame: nothing shown before, the cut is open
+    EXPECT_EQ(from_start.next(0), 0.0f);
+    EXPECT_EQ(from_start.next(5), 0.0f);  // later appearances open gradually again
+    EXPECT_THROW(CutOpening(0), std::invalid_argument);
+}
+
+TEST(CutOpening, ApertureGrowsFromHalfToFullByEqualStepsOfCrossSection) {
+    // The ends are exact (float rounding of tan and atan only).
+    EXPECT_NEAR(opened_aperture_deg(60, 0), 30, 1e-4);
+    EXPECT_NEAR(opened_aperture_deg(60, 1), 60, 1e-4);
+    EXPECT_NEAR(opened_aperture_deg(60, 2), 60, 1e-4);  // clamped
+    // tan^2(half angle) is linear in the opening: equal steps uncover about equal areas.
+    const auto area = [](float opening) { return std::pow(std::tan(opened_aperture_deg(60, opening) * M_PI / 360), 2); };
+    EXPECT_NEAR(area(0.5f) - area(0.25f), area(1.0f) - area(0.75f), 1e-5);
+    for (float t = 0.05f; t <= 1.0f; t += 0.05f) EXPECT_GT(opened_aperture_deg(60, t), opened_aperture_deg(60, t - 0.05f));
+    // Flat walls (180): the angle itself is interpolated.
+    EXPECT_NEAR(opened_aperture_deg(180, 0.5f), 135, 1e-4);
 }
 
 TEST(PacedTransition, ChangesSpreadEvenlyInCrossingOrderAndValuesMeetTheLimitThen) {
@@ -211,6 +245,25 @@ TEST_F(ShockFront, SmoothSpreadsEachStepsChangesOverItsFrames) {
     // 0.15 to 0.55-0.75 in a step and crosses 0.55 past 3/4 of it).
     EXPECT_GT(none_max, 0u);
     EXPECT_LE(smooth_max, (none_max + per_step - 1) / per_step);
+}
+
+TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensTheCutGradually) {
+    // A band the front reaches only at step 2: the primaries appear during the animation.
+    const grid::PrimaryRange late{0.75f, 0.8f};
+    const AnimationTimeline timeline{0, 4, 4};
+    CoherentSequence none(grid, source, timeline, Coherence::none, late, 0.0f);
+    CoherentSequence smooth(grid, source, timeline, Coherence::smooth, late, 0.0f);
+    std::size_t appeared = timeline.frame_count();
+    for (std::size_t f = 0; f < timeline.frame_count(); ++f) {
+        const CoherentSequence::Frame n = none.next(), s = smooth.next();
+        EXPECT_EQ(n.primary_cells, metrics::count_pops(std::vector<std::uint8_t>(n.flags->size(), 0), *n.flags).in) << f;
+        EXPECT_EQ(n.cut_opening, 1.0f) << f;  // the paper's cut: always the full aperture
+        if (s.primary_cells > 0 && appeared == timeline.frame_count()) appeared = f;
+        const float expected = s.primary_cells == 0 ? 0.0f : std::min(1.0f, float(f - appeared) / 4.0f);
+        EXPECT_EQ(s.cut_opening, expected) << f;
+    }
+    EXPECT_GT(appeared, 0u);  // the band is empty at step 0
+    EXPECT_LT(appeared, timeline.frame_count() - 5);  // and the cut opens in full before the end
 }
 
 TEST_F(ShockFront, SmoothHysteresisKeepsPrimariesTheBandCovers) {

@@ -39,12 +39,13 @@ TEST(ViewerScript, FullScriptParsesToSteps) {
         "freeze on\n"
         "drag on\n"
         "play off\n"
+        "playback none 6\n"
         "ui off\n"
         "   screenshot  out/frame.png\n"
         "quit\n";
     const ViewerScript script = parse_viewer_script_text(text, "tour.txt");
     EXPECT_EQ(script.path, "tour.txt");
-    ASSERT_EQ(script.steps.size(), 14u);
+    ASSERT_EQ(script.steps.size(), 15u);
     const auto expect_step = [&](std::size_t index, int line, const std::string& action, const Args& args) {
         SCOPED_TRACE(index);
         EXPECT_EQ(script.steps[index].line, line);
@@ -62,9 +63,10 @@ TEST(ViewerScript, FullScriptParsesToSteps) {
     expect_step(8, 11, "freeze", {"on"});
     expect_step(9, 12, "drag", {"on"});
     expect_step(10, 13, "play", {"off"});
-    expect_step(11, 14, "ui", {"off"});
-    expect_step(12, 15, "screenshot", {"out/frame.png"});
-    expect_step(13, 16, "quit", {});
+    expect_step(11, 14, "playback", {"none", "6"});
+    expect_step(12, 15, "ui", {"off"});
+    expect_step(13, 16, "screenshot", {"out/frame.png"});
+    expect_step(14, 17, "quit", {});
     EXPECT_EQ(describe(script, script.steps[5]), "tour.txt:8: set --border threshold --ssao off");
 }
 
@@ -116,6 +118,10 @@ const RefusedCase refused_cases[] = {
     {"key Q\n", 1, "unknown key 'Q'", "key NAME (F, H, R, SPACE, F12 or ESCAPE)"},
     {"sleep -1\n", 1, "SECONDS -1 is out of range", "sleep SECONDS (0..3600)"},
     {"freeze yes\n", 1, "'yes' is neither on nor off", "freeze on|off"},
+    {"playback fast 4\n", 1, "coherence 'fast' is neither none nor smooth", "playback none|smooth FRAMES_PER_STEP"},
+    {"playback smooth 0\n", 1, "FRAMES_PER_STEP 0 is out of range", "playback none|smooth FRAMES_PER_STEP (1..1000)"},
+    {"playback smooth 2.5\n", 1, "FRAMES_PER_STEP '2.5' is not a whole number", "playback none|smooth"},
+    {"playback smooth\n", 1, "1 argument given", "playback none|smooth"},
 };
 
 TEST(ViewerScript, EveryErrorNamesItsLineAndTheExpectedForm) {
@@ -136,7 +142,7 @@ TEST(ViewerScript, HelpListsEveryAction) {
     const std::string help = script_actions_help();
     for (const std::string& action : script_actions())
         EXPECT_NE(help.find("  " + action), std::string::npos) << action;
-    EXPECT_EQ(script_actions().size(), 14u);
+    EXPECT_EQ(script_actions().size(), 15u);
 }
 
 class ViewerScriptFileTest : public ::testing::Test {

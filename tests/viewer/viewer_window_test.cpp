@@ -221,13 +221,13 @@ TEST_F(ViewerWindowTest, ScriptDrivesCameraAndEveryControl) {
                                        "screenshot " << path("frozen.png") << "\n"
                                        "freeze off\n"
                                        "screenshot " << path("unfrozen.png") << "\n"
-                                       "set --property SWAT --range 0.5 1\nplay on\nwait 3\nplay off\n"
+                                       "set --property SWAT --range 0.5 1\nplayback smooth 1\nplay on\nwait 3\nplay off\n"
                                        "screenshot " << path("played.png") << "\n"
                                        "key R\nui on\nkey H\nwait 1\nquit\n";
     const CommandResult view = run_command(view_command("--no-ui --script " + path("tour.txt") + " --stats " + path("stats.json")));
     ASSERT_EQ(view.exit_code, 0) << view.output;
     for (const char* step : {"tour.txt:3: orbit 40 10", "tour.txt:8: set --strategy chamfer-34", "tour.txt:11: key F",
-                             "tour.txt:16: set --property SWAT --range 0.5 1", "tour.txt:25: quit"})
+                             "tour.txt:16: set --property SWAT --range 0.5 1", "tour.txt:26: quit"})
         EXPECT_NE(view.output.find(step), std::string::npos) << step << "\n" << view.output;
     const auto image = [&](const char* name) { return gl::read_png(path(name)); };
     // Each group of actions changes the picture (a no-op action would leave it bit-identical).
@@ -245,6 +245,24 @@ TEST_F(ViewerWindowTest, ScriptDrivesCameraAndEveryControl) {
     EXPECT_EQ(stats["configuration"]["property"], "SWAT");
     EXPECT_GT(stats["configuration"]["step"].get<int>(), 0) << "play advanced the SWAT time step";
     EXPECT_GT(stats["median_stages_ms"]["total"].get<double>(), 0);
+}
+
+TEST_F(ViewerWindowTest, PlaybackHoldsEachStepUnderNoneAndMovesBetweenStepsUnderSmooth) {
+    // Two frames drawn within the first of 20 frames per step: `none` shows step 0 in both, so
+    // they are bit-identical; `smooth` interpolates the values (and paces the primaries) towards
+    // step 1, so the second differs. preset:petra's SWAT changes at every cell the flood reaches.
+    const auto play = [&](const std::string& coherence) {
+        std::ofstream(path(coherence + ".txt")) << "set --property SWAT --range 0.5 1\nplayback " << coherence
+                                                << " 20\nplay on\nwait 2\nscreenshot " << path(coherence + "_a.png")
+                                                << "\nwait 3\nscreenshot " << path(coherence + "_b.png") << "\nquit\n";
+        const CommandResult view = run_command(view_command("--no-ui --script " + path(coherence + ".txt")));
+        EXPECT_EQ(view.exit_code, 0) << view.output;
+        return differing_fraction(gl::read_png(path(coherence + "_a.png")), gl::read_png(path(coherence + "_b.png")), 0);
+    };
+    EXPECT_EQ(play("none"), 0.0);
+    // A fifth of a step moves the front's colours over a visible share of the frame (measured
+    // about 1-10%; any change at all proves the interpolation, 0.1% leaves room for the driver).
+    EXPECT_GT(play("smooth"), 0.001);
 }
 
 TEST_F(ViewerWindowTest, EditedShadersAreReloadedAndBrokenOnesReported) {

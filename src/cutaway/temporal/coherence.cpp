@@ -7,20 +7,26 @@
 namespace cutaway::temporal {
 namespace {
 
-constexpr std::pair<Coherence, const char*> coherence_names[] = {{Coherence::none, "none"},
+constexpr std::pair<Coherence, const char*> coherence_table[] = {{Coherence::none, "none"},
                                                                  {Coherence::smooth, "smooth"}};
 
 }  // namespace
 
+std::vector<std::string> coherence_names() {
+    std::vector<std::string> names;
+    for (const auto& entry : coherence_table) names.emplace_back(entry.second);
+    return names;
+}
+
 const char* to_string(Coherence coherence) {
-    for (const auto& [value, name] : coherence_names)
+    for (const auto& [value, name] : coherence_table)
         if (value == coherence) return name;
     return "unknown";
 }
 
 Coherence parse_coherence(const std::string& name) {
     std::string known;
-    for (const auto& [value, text] : coherence_names) {
+    for (const auto& [value, text] : coherence_table) {
         if (name == text) return value;
         known.append(known.empty() ? "" : "|").append(text);
     }

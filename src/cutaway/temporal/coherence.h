@@ -3,6 +3,7 @@
 // behaviour (`none`) or the time-coherent one (`smooth`). No OpenGL here.
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace cutaway::temporal {
 
@@ -17,6 +18,8 @@ enum class Coherence {
 
 /// The names the CLI, stats.json and the viewer use.
 const char* to_string(Coherence coherence);
+/// Every mode's name, in the table's order (the CLI's choices, the viewer's combo).
+std::vector<std::string> coherence_names();
 /// Throws std::invalid_argument "--coherence 'x': expected none|smooth".
 Coherence parse_coherence(const std::string& name);
 

@@ -1,5 +1,6 @@
 #include "cutaway/temporal/coherent_sequence.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -14,6 +15,13 @@ CoherentSequence::CoherentSequence(const grid::CornerPointGrid& grid, const Step
         throw std::invalid_argument("animation steps " + std::to_string(timeline_.first_step) + ".." +
                                     std::to_string(timeline_.last_step) + ": expected FIRST <= LAST < " +
                                     std::to_string(source_.step_count()) + " and frames per step >= 1");
+    if (coherence_ == Coherence::smooth) opening_.emplace(timeline_.frames_per_step);
+}
+
+CoherentSequence::Frame CoherentSequence::finished(Frame frame) {
+    frame.primary_cells = std::size_t(std::count_if(frame.flags->begin(), frame.flags->end(), [](std::uint8_t f) { return f != 0; }));
+    if (opening_) frame.cut_opening = opening_->next(frame.primary_cells);
+    return frame;
 }
 
 std::vector<float> CoherentSequence::read(std::size_t step) {
@@ -55,13 +63,13 @@ CoherentSequence::Frame CoherentSequence::next() {
         result.flags = &was_;
         // Held steps (none between report steps) change nothing.
         result.values_changed = new_step || coherence_ == Coherence::smooth;
-        return result;
+        return finished(result);
     }
     transition_.values_at(blend.weight, lower_, upper_, blended_);
     transition_.flags_at(blend.weight, was_, is_, flags_);
     result.values = &blended_;
     result.flags = &flags_;
-    return result;
+    return finished(result);
 }
 
 }  // namespace cutaway::temporal

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cutaway/temporal/coherence.h"
+#include "cutaway/temporal/cut_opening.h"
 #include "cutaway/temporal/paced_transition.h"
 #include "cutaway/temporal/primary_tracker.h"
 #include "cutaway/temporal/step_values.h"
@@ -27,6 +28,11 @@ public:
         const std::vector<float>* values = nullptr;  ///< one per Eclipse cell
         const std::vector<std::uint8_t>* flags = nullptr;  ///< one per Eclipse cell, 1 = primary
         bool values_changed = true;   ///< false: the same values as the frame before
+        std::size_t primary_cells = 0;  ///< flags set
+        /// How far the cut is open (opened_aperture_deg): 1 under none; under smooth the cut opens
+        /// at a bounded speed where primaries appear from none (CutOpening, one report step's
+        /// frames to open).
+        float cut_opening = 1;
     };
     /// The next frame (0, 1, ... timeline.frame_count() - 1); the pointers stay valid until the
     /// next call. Throws std::logic_error past the last frame.
@@ -40,6 +46,8 @@ private:
     /// the transition between them.
     void advance_to(std::size_t step);
     std::vector<float> read(std::size_t step);
+    /// Counts the frame's primaries and sets its cut opening.
+    Frame finished(Frame frame);
 
     const StepValueSource& source_;
     AnimationTimeline timeline_;
@@ -52,6 +60,7 @@ private:
     std::vector<float> lower_, upper_, blended_;
     std::vector<std::uint8_t> was_, is_, flags_;  ///< flags at the lower and upper steps, and between
     PacedTransition transition_;
+    std::optional<CutOpening> opening_;  ///< smooth only
     std::size_t steps_read_ = 0;
 };
 

@@ -1,5 +1,6 @@
 #include "cutaway/temporal/step_values.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -13,6 +14,16 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 }  // namespace
+
+grid::PrimaryRange value_range_over_steps(const grid::CornerPointGrid& grid, const StepValueSource& source,
+                                          std::size_t first, std::size_t last) {
+    grid::PrimaryRange range;
+    for (std::size_t step = first; step <= last; ++step) {
+        const grid::PrimaryRange r = grid::active_value_range(grid, source.values(step), source.property());
+        range = step == first ? r : grid::PrimaryRange{std::min(range.min, r.min), std::max(range.max, r.max)};
+    }
+    return range;
+}
 
 GridStepValues::GridStepValues(const grid::CornerPointGrid& grid, std::string property)
     : grid_(grid), property_(std::move(property)) {

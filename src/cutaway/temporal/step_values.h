@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "grid/corner_point_grid.h"
+#include "grid/primary_selection.h"
 
 namespace cutaway::temporal {
 
@@ -21,6 +22,11 @@ public:
     /// (< step_count()); a reader may load the step on this call, so callers keep what they need.
     virtual std::vector<float> values(std::size_t step) const = 0;
 };
+
+/// The smallest and largest value over active cells of steps first..last (inclusive) of `source`:
+/// one colour scale for an animation over them. Reads each step once.
+grid::PrimaryRange value_range_over_steps(const grid::CornerPointGrid& grid, const StepValueSource& source,
+                                          std::size_t first, std::size_t last);
 
 /// Steps held in a CornerPointGrid (CornerPointGrid::dynamic_property).
 class GridStepValues final : public StepValueSource {

@@ -1,0 +1,234 @@
+"""Figures, targets and the README of the front-tracking experiment, from the animations' stats."""
+import datetime
+import math
+import os
+import statistics
+
+import compose
+import cutaway_experiment as cx
+
+# The issue's targets: both modes keep every primary pixel visible; smooth lowers the largest
+# cut flicker and the largest pop at least this many times; smooth keeps the context within this
+# relative distance of none's; animate costs at most this many times render's frames.
+FLICKER_RATIO, POP_RATIO, CONTEXT_TOLERANCE, ANIMATE_OVER_RENDER = 3.0, 3.0, 0.10, 1.2
+MODE_COLOURS = {"none": "tab:red", "smooth": "tab:blue"}
+
+
+def median(values):
+    return statistics.median(values) if values else None
+
+
+def protocol(camera, video, models):
+    """The experiment's configuration, recorded with its results."""
+    return {"camera": list(camera), "models": {n: {**m, "range": list(m["range"]), "size": list(m["size"])}
+                                               for n, m in models.items()},
+            "video": video,
+            "context_share": "per frame: pixels showing a secondary cell's own surface (not primary, cut fill or "
+                             "border line) over pixels showing any cell. The target compares its mean over the frames "
+                             "at report steps, where both modes show the same step's values (between steps none still "
+                             "shows the step before while smooth moves on: a growing front leaves smooth less context "
+                             "there by the lag alone); the mean over all frames is reported beside it",
+            "targets": {"primary_exposure_min": 1.0, "cut_flicker_max none/smooth": FLICKER_RATIO,
+                        "pop_max none/smooth": POP_RATIO, "context_share at report steps |smooth/none - 1|": CONTEXT_TOLERANCE,
+                        "frame_over_render": ANIMATE_OVER_RENDER}}
+
+
+def four_steps(model, step_count):
+    """Four report steps spread over the animated ones (first and last included)."""
+    first, last = model["steps"] or (0, step_count - 1)
+    return sorted({round(first + (last - first) * k / 3) for k in range(4)})
+
+
+def _date_at(steps, time_step):
+    """The date at a fractional report step, interpolated between the two report dates."""
+    lower = min(int(math.floor(time_step)), len(steps) - 1)
+    upper = min(lower + 1, len(steps) - 1)
+    a, b = (datetime.date.fromisoformat(steps[i]["date"][:10]) for i in (lower, upper))
+    return a + datetime.timedelta(days=round((b - a).days * (time_step - lower)))
+
+
+def compose_panels(rows, title, path):
+    return compose.compose(rows, title, path)
+
+
+def dates_figure(name, model, steps, frames, path):
+    """2 x 4 panels: the video frames halfway between report steps at 4 dates, none above smooth
+    (halfway is where the modes differ: none still shows the step before, smooth its way to the next)."""
+    first, last = model["steps"] or (0, len(steps) - 1)
+    frames_per_step = model["frames_per_step"]
+    chosen = sorted({round(first + (last - 1 - first) * k / 3) for k in range(4)})
+    rows, shown = [], []
+    for mode in ("none", "smooth"):
+        row = []
+        for step in chosen:
+            frame = (step - first) * frames_per_step + frames_per_step // 2
+            time_step = first + frame / frames_per_step
+            held = f", shows step {step}" if mode == "none" else ""
+            row.append((f"{mode}: {_date_at(steps, time_step)} (step {time_step:g}{held})",
+                        os.path.join(frames[mode], f"frame_{frame:05d}.png")))
+            if mode == "none":
+                shown.append({"frame": frame, "time_step": time_step, "date": str(_date_at(steps, time_step))})
+        rows.append(row)
+    compose.compose(rows, f"{name}: the front at 4 dates, {model['property']} {model['range'][0]}-{model['range'][1]} "
+                          f"(top: --coherence none, bottom: smooth)", path)
+    return shown
+
+
+SUMMARIES = ("pop_max", "cut_flicker_max", "primary_exposure_min", "context_share_mean", "frame_count", "frames_wall_s",
+             "frame_ms_median", "report_steps_read")
+
+
+def model_entry(case, model, steps, runs, dates):
+    entry = {"case": case, "report_steps": len(steps), "first_date": steps[0]["date"], "last_date": steps[-1]["date"],
+             "range": list(model["range"]), "dates_figure": dates, "runs": {}}
+    for mode, stats in runs.items():
+        frames = stats["frames"]
+        at_steps = [f["context_share"] for f in frames if "context_share" in f and float(f["time_step"]).is_integer()]
+        entry["runs"][mode] = {
+            **{k: stats.get(k) for k in SUMMARIES},
+            "context_share_at_steps": statistics.mean(at_steps) if at_steps else None,
+            "colour_range": stats["property"]["colour_range"], "primary_range": stats["property"]["primary_range"],
+            "hysteresis_band": stats["property"]["hysteresis_band"], "strategy": stats["strategy"],
+            "configuration": stats["configuration"], "size": stats["size"],
+            "per_frame": {"time_step": [f["time_step"] for f in frames],
+                          "cut_flicker": [f.get("cut_flicker") for f in frames],
+                          "pops": [f.get("pop_in", 0) + f.get("pop_out", 0) for f in frames],
+                          "primary_cells": [f["primary_cells"] for f in frames],
+                          "context_share": [f.get("context_share") for f in frames],
+                          "cut_opening": [f.get("cut_opening") for f in frames]}}
+    entry["largest_flicker"] = {mode: _largest_flicker(run["per_frame"]) for mode, run in entry["runs"].items()}
+    return entry
+
+
+def _largest_flicker(series):
+    """The frame with the largest cut flicker: its time and the primary counts around it."""
+    flicker = series["cut_flicker"]
+    frame = max((f for f in range(1, len(flicker)) if flicker[f] is not None), key=lambda f: flicker[f])
+    return {"frame": frame, "time_step": series["time_step"][frame], "cut_flicker": flicker[frame],
+            "primaries_before": series["primary_cells"][frame - 1], "primaries_after": series["primary_cells"][frame]}
+
+
+def _ratio(none, smooth):
+    if smooth == 0:
+        return math.inf if none > 0 else 1.0
+    return none / smooth
+
+
+def targets(document):
+    """Each target per model, with the numbers that decide it."""
+    result = {}
+    for name, entry in document["models"].items():
+        none, smooth = entry["runs"]["none"], entry["runs"]["smooth"]
+        flicker = _ratio(none["cut_flicker_max"], smooth["cut_flicker_max"])
+        pops = _ratio(none["pop_max"], smooth["pop_max"])
+        context = smooth["context_share_at_steps"] / none["context_share_at_steps"] - 1 if none["context_share_at_steps"] else math.inf
+        result[name] = {
+            "primary_exposure_min": {"none": none["primary_exposure_min"], "smooth": smooth["primary_exposure_min"],
+                                     "holds": none["primary_exposure_min"] == 1.0 and smooth["primary_exposure_min"] == 1.0},
+            "cut_flicker_max": {"none": none["cut_flicker_max"], "smooth": smooth["cut_flicker_max"], "ratio": flicker,
+                                "holds": flicker >= FLICKER_RATIO},
+            "pop_max": {"none": none["pop_max"], "smooth": smooth["pop_max"], "ratio": pops, "holds": pops >= POP_RATIO},
+            "context_share_at_steps": {"none": none["context_share_at_steps"], "smooth": smooth["context_share_at_steps"],
+                                       "relative_change": context, "holds": abs(context) <= CONTEXT_TOLERANCE,
+                                       "all_frames": {"none": none["context_share_mean"], "smooth": smooth["context_share_mean"]}}}
+    timing = document["timing"]
+    result["animate_over_render"] = {"model": timing["model"], "ratio": timing["frame_over_render"],
+                                     "holds": timing["frame_over_render"] <= ANIMATE_OVER_RENDER}
+    return result
+
+
+def flicker_pops_figure(document, path):
+    """Per model (columns): cut_flicker and pops (in + out) per frame against the fractional report
+    step, both modes."""
+    plt = cx.pyplot()
+    names = list(document["models"])
+    fig, axes = plt.subplots(2, len(names), figsize=(4.2 * len(names), 5.2), squeeze=False)
+    for c, name in enumerate(names):
+        for mode, run in document["models"][name]["runs"].items():
+            series = run["per_frame"]
+            t = series["time_step"]
+            axes[0][c].plot(t[1:], series["cut_flicker"][1:], label=mode, color=MODE_COLOURS[mode], linewidth=0.9)
+            axes[1][c].plot(t[1:], series["pops"][1:], label=mode, color=MODE_COLOURS[mode], linewidth=0.9)
+        axes[0][c].set_title(f"{name}: cut flicker per frame")
+        axes[0][c].set_ylabel("share of model pixels changed")
+        axes[1][c].set_title(f"{name}: primary pops per frame")
+        axes[1][c].set_ylabel("cells in + out")
+        axes[1][c].set_xlabel("report step (fractional)")
+        for ax in (axes[0][c], axes[1][c]):
+            ax.legend(title="--coherence")
+    cx.save_figure(fig, path)
+    plt.close(fig)
+
+
+def _mark(holds):
+    return "pass" if holds else "FAIL"
+
+
+def _number(value, digits=4):
+    if value is None:
+        return "-"
+    if isinstance(value, float) and math.isinf(value):
+        return "inf"
+    return f"{value:.{digits}g}" if isinstance(value, float) else str(value)
+
+
+def readme(document):
+    p, t = document["protocol"], document["targets"]
+    context = document["context"]
+    lines = ["# Front tracking over simulated time (issue 44)", "",
+             "Generated by experiments/front_tracking/run.py" + (" --quick" if document["quick"] else "") +
+             f" from front_tracking.json; git {context['git_revision']}, {context['gl_renderer']}, "
+             f"LP_NUM_THREADS={context['lp_num_threads']}, {context['cpu_model']}.", "",
+             "Each model's simulation (OPM Flow) animated by `cutaway animate CASE.EGRID --property P --range LO HI` "
+             "with the same frames under `--coherence none` (the paper: a step shown until the next, primaries "
+             "selected anew) and `smooth` (values interpolated, hysteresis, paced entries and exits, the cut opening "
+             "at a bounded speed where primaries appear).", "",
+             "Context: " + p["context_share"] + ".", "",
+             "## Targets", "",
+             "| model | property, size, frames | exposure min none / smooth | cut flicker max none / smooth (ratio) "
+             "| pop max none / smooth (ratio) | context share at report steps none / smooth (change); all frames |",
+             "|---|---|---|---|---|---|"]
+    for name, entry in document["models"].items():
+        m, model = t[name], p["models"][name]
+        e, f, q, c = m["primary_exposure_min"], m["cut_flicker_max"], m["pop_max"], m["context_share_at_steps"]
+        lines.append(f"| {name} ({entry['report_steps']} steps, {entry['first_date'][:10]} .. {entry['last_date'][:10]}) | "
+                     f"{model['property']} {model['range'][0]:g}-{model['range'][1]:g}, {model['size'][0]}x{model['size'][1]}, "
+                     f"{entry['runs']['none']['frame_count']} frames ({model['frames_per_step']} per step) | "
+                     f"{_number(e['none'])} / {_number(e['smooth'])} {_mark(e['holds'])} | "
+                     f"{_number(f['none'], 3)} / {_number(f['smooth'], 3)} ({_number(f['ratio'], 3)}x) {_mark(f['holds'])} | "
+                     f"{q['none']} / {q['smooth']} ({_number(q['ratio'], 3)}x) {_mark(q['holds'])} | "
+                     f"{_number(c['none'], 3)} / {_number(c['smooth'], 3)} ({100 * c['relative_change']:+.1f}%) {_mark(c['holds'])}; "
+                     f"{_number(c['all_frames']['none'], 3)} / {_number(c['all_frames']['smooth'], 3)} |")
+    timing, a = document["timing"], t["animate_over_render"]
+    lines += ["", f"Targets: exposure min 1.0 in both modes; none/smooth ratio of cut flicker max and of pop max at least "
+                  f"{FLICKER_RATIO:g}; context share of smooth within {100 * CONTEXT_TOLERANCE:.0f}% of none's.", "",
+              "Where each largest flicker happens (fractional report step, primary cells before and after):", ""]
+    lines += [f"- {name}: " + "; ".join(f"{mode} {_number(w['cut_flicker'], 3)} at step {w['time_step']:g} "
+                                         f"({w['primaries_before']} -> {w['primaries_after']} primaries)"
+                                         for mode, w in entry["largest_flicker"].items())
+              for name, entry in document["models"].items()]
+    lines += ["", "Smooth spreads a step's many entries and exits over its frames (pops and flicker fall about as many "
+                  "times as there are frames per step) and opens the cut gradually where primaries appear from none. "
+                  "A single cell entering in a new place opens its own cone in one frame in both modes: where the "
+                  "largest flicker is such an event (a few primaries before and after), smooth cannot lower it, and "
+                  "pops of one or two cells cannot be split over frames."]
+    lines += ["",
+              "## animate against render", "",
+              f"{timing['model']}, {timing['size'][0]}x{timing['size'][1]}, {timing['frames']} frames, smooth, same run "
+              f"(`--time-against-render`): animate's frames (upload, draw, read-back, H.264 encoding, ffmpeg's finish) "
+              f"cost {a['ratio']:.3f}x render's draws of the same frames (target <= {ANIMATE_OVER_RENDER:g}: "
+              f"{_mark(a['holds'])}); median frame {timing['frame_ms_median']:.1f} ms against {timing['render_ms_median']:.1f} ms.",
+              "", "## Files", "",
+              "- `stats_MODEL_MODE.json`: each metric run's stats.json (per frame: time_step, primary_exposure, pop_in, "
+              "pop_out, cut_flicker, context_share, cut_opening, ms; summaries; configuration; machine)",
+              f"- `MODEL_MODE.mp4`: the videos, {p['video']['size'][0]}x{p['video']['size'][1]}, {p['video']['fps']} fps, "
+              f"crf {p['video']['crf']}",
+              "- `front_dates_MODEL.png`: the front at 4 dates halfway between report steps, none above smooth",
+              "- `flicker_pops.png` (and .pdf): cut flicker and pops per frame, both modes",
+              f"- `fig11_aperture180_waterflood.png`: the paper's figure 11 (aperture 180) at 4 report steps of "
+              f"{document['fig11']['model']}, one colour range for all steps", "",
+              "![flicker and pops](flicker_pops.png)", "",
+              "![figure 11 on a waterflood](fig11_aperture180_waterflood.png)", ""]
+    for name in document["models"]:
+        lines += [f"![{name} front at 4 dates](front_dates_{name}.png)", ""]
+    return "\n".join(lines)
