@@ -217,6 +217,17 @@ def cutaway_runs(document):
     return rows
 
 
+def device_label(stats):
+    """What measured a timing plot, for its title: the GL renderer, a software rasteriser named so."""
+    renderer = (stats or {}).get("gl_renderer") or "unknown renderer"
+    if "llvmpipe" in renderer:
+        threads = (stats or {}).get("lp_num_threads")
+        if threads in (None, "unset"):
+            threads = os.environ.get("LP_NUM_THREADS", f"{os.cpu_count()} (llvmpipe's default)")
+        return f"software rasteriser (llvmpipe, {threads} threads): not a GPU"
+    return renderer
+
+
 def pyplot():
     """matplotlib.pyplot (Agg) with the experiments' one style."""
     plt = exio.require_matplotlib()

@@ -107,10 +107,11 @@ def measure(exp):
     fraction_rows, _ = sweeps.sweep(exp, sweep_model, sweep_size, [(f, ["--primary-fraction", f]) for f in fractions],
                                     figure_specs.CAMERA, repeat)
     label = f"{sweep_model}, {sweep_size[0]}x{sweep_size[1]}"
+    device = cx.device_label(stats)
     sweeps.plot_sweep(exp, aperture_rows, "full aperture angle (degrees, horizontal = vertical)",
-                      f"Frame time vs aperture ({label}, 1% primaries)", exp.path("time_vs_aperture.png"))
+                      f"Frame time vs aperture ({label}, 1% primaries)\n{device}", exp.path("time_vs_aperture.png"))
     sweeps.plot_sweep(exp, fraction_rows, "primary fraction (of active cells, log scale)",
-                      f"Frame time vs primary fraction ({label}, aperture 60 degrees)",
+                      f"Frame time vs primary fraction ({label}, aperture 60 degrees)\n{device}",
                       exp.path("time_vs_primary_fraction.png"), log_x=True)
     return {
         "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),
