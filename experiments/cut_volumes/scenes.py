@@ -58,7 +58,8 @@ def icosahedron(centre, radii):
 
 
 def write_mesh_obj(bounds, folder):
-    """An icosahedron in the middle of the model, wider than deep as the reservoir is, written as
+    """An icosahedron in the middle of the model, wider than deep as the reservoir is, reaching
+    above the top (so that the cut opens the surface) but not through the bottom, written as
     FOLDER/blob.obj; returns the `mesh:FILE` spec."""
     lo, hi = bounds["min"], bounds["max"]
     radii = [0.3 * (hi[0] - lo[0]), 0.3 * (hi[1] - lo[1]), 0.45 * (hi[2] - lo[2])]
