@@ -215,9 +215,8 @@ def report(exp, document):
         headline=f"{len(checked) - len(missed)} of {len(checked)} cost targets hold" +
                  (f" (missed: {', '.join(missed)})" if missed else ""))
     result.section("Cost per volume kind and count",
-                   "A volume adds its stage 1 work (cut_surface; added: over the frame without volumes) but removes "
-                   "what it cuts away from stage 2 (secondary) and the passes after it, so a frame with a volume can be "
-                   "faster than the frame without. Stage 1 draws every rear triangle of a volume with its bevelled walls "
+                   "A volume adds its stage 1 work (cut_surface; added: over the frame without volumes) and changes "
+                   "stage 2's (secondary) by what it cuts away. Stage 1 draws every rear triangle of a volume with its bevelled walls "
                    "towards the camera (shaders/cut_surface/volume.geom), so its added time follows the triangle count.")
     result.table(["volumes", "count", "triangles", "frame ms", "cut_surface ms", "added", "secondary ms",
                   "SSAO+filter+post ms", "frame / no volume", "target"], cost_rows(rows), align="lrrrrrrrrl")
