@@ -1,6 +1,8 @@
 #!/usr/bin/python3
-"""Cut volumes and wells (issue 45): their cost in the main job's frame, a panel per volume kind,
-and a waterflood's front seen inside a cut around its injector.
+"""Cut volumes and wells (issue 45): frame cost per kind and count, a panel per kind, a waterflood.
+
+The cost in the main job's frame, a panel per volume kind, and a waterflood's front seen inside a
+cut around its injector.
 
 Interface (for experiments/run_all):
   experiments/cut_volumes/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
