@@ -27,7 +27,7 @@ STAGE_LABELS = {"cut_surface": "stage 1: cut surface", "culling": "culling (visi
                 "primary": "stage 3: primaries", "ssao": "SSAO", "mean_filter": "mean filter",
                 "post": "composite (post)", "total": "total"}
 write_json = exio.write_json
-TOOLS = {"cutaway": "cutaway", "bench": "bench_cutaway"}
+TOOLS = {"cutaway": "cutaway", "bench": "bench_cutaway", "bench_cut_volumes": "bench_cut_volumes"}
 
 
 class Experiment:
@@ -123,12 +123,13 @@ class Experiment:
                              stdout=subprocess.PIPE, text=True).stdout
         return json.loads(out)
 
-    def benchmark(self, *flags, progress=False):
-        """`bench_cutaway FLAGS` with JSON output; returns the parsed document (context + benchmarks).
-        `progress`: let its console table through (one line per finished benchmark), for long runs."""
+    def benchmark(self, *flags, progress=False, tool="bench"):
+        """`bench_cutaway FLAGS` (or the Google Benchmark program `tool` names in TOOLS) with JSON
+        output; returns the parsed document (context + benchmarks). `progress`: let its console
+        table through (one line per finished benchmark), for long runs."""
         with tempfile.TemporaryDirectory(prefix="cutaway-bench-") as scratch:
             out = os.path.join(scratch, "bench.json")
-            subprocess.run([self.bench, *map(str, flags), "--benchmark_out=" + out, "--benchmark_out_format=json"],
+            subprocess.run([self.tools[tool], *map(str, flags), "--benchmark_out=" + out, "--benchmark_out_format=json"],
                            check=True, stdout=None if progress else subprocess.DEVNULL)
             with open(out) as f:
                 return json.load(f)
