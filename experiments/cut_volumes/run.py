@@ -218,8 +218,9 @@ def report(exp, document):
                  (f" (missed: {', '.join(missed)})" if missed else ""))
     result.section("Cost per volume kind and count",
                    "A volume adds its stage 1 work (cut_surface; added: over the frame without volumes) and changes "
-                   "stage 2's (secondary) by what it cuts away. Stage 1 draws every rear triangle of a volume with its bevelled walls "
-                   "towards the camera (shaders/cut_surface/volume.geom), so its added time follows the triangle count.")
+                   "stage 2's (secondary) by what it cuts away. Stage 1 draws each volume's rear triangles, and bevelled walls "
+                   "towards the camera along its silhouette (shaders/cut_surface/volume.geom): the walls' fill, which grows "
+                   "with the silhouette's length on screen and the volume count, is most of its added time.")
     result.table(["volumes", "count", "triangles", "frame ms", "cut_surface ms", "added", "secondary ms",
                   "SSAO+filter+post ms", "frame / no volume", "target"], cost_rows(rows), align="lrrrrrrrrl")
     result.text(per_triangle_sentence(rows)).text(drift_sentence(rows))

@@ -10,14 +10,15 @@
 //    --aperture): u in [u_p - l (s_p - s) / s_p, u_p + r (s_p - s) / s_p], likewise v. The union
 //    of the pyramids over the triangle is the convex hull of its corners' pyramids; its upper
 //    surface is the triangle, one plane through each edge (to the pyramid corner that lies
-//    farthest out across the edge, on the side away from the triangle) and the pyramids' own
-//    sides at the corners (every piece lies inside the hull, so none cuts too much). At aperture 0 the walls follow view rays and cover no pixel:
+//    farthest out across the edge, on the side away from the triangle) and, at the corners, the
+//    part of the corner's pyramid between two walls (every piece lies inside the hull, so none
+//    cuts too much). At aperture 0 the walls follow view rays and cover no pixel:
 //    the cut is exactly the volume's silhouette at its rear depth.
 // Only rear triangles (facing away from the camera) are drawn: in a closed volume the view ray
 // through a front triangle's point leaves the volume through a rear one, farther at the same
 // (u, v), whose pyramid holds the front point's (the pyramid widens with depth), so the front
 // triangles add nothing to the max and would only double the fill.
-// Walls and corner pyramids only along the silhouette (edges whose neighbour faces the camera),
+// Walls and corner fans only along the silhouette (edges whose neighbour faces the camera),
 // leaning out of it: inside the silhouette the rear triangles themselves bound the cut. The walls
 // of inner edges, one per edge of every rear triangle, and the inward walls filled the screen many
 // times over for the same image wherever the rear surface is less steep than the walls; where it
@@ -28,7 +29,7 @@
 #include "cut_surface/wall_slope.glsl"
 
 layout(triangles_adjacency) in;
-layout(triangle_strip, max_vertices = 51) out;
+layout(triangle_strip, max_vertices = 33) out;
 
 in VolumeCorner {
     vec3 eye;
@@ -77,12 +78,22 @@ void emit_edge_wall(int i, int j, vec2 side) {
     EndPrimitive();
 }
 
-void emit_pyramid(int i) {
-    vec2 c00 = rim_corner(i, vec2(-1, -1)), c10 = rim_corner(i, vec2(1, -1));
-    vec2 c11 = rim_corner(i, vec2(1, 1)), c01 = rim_corner(i, vec2(-1, 1));
-    emit_uv(c00, rim[i]); emit_uv(uv[i], depth[i]); emit_uv(c10, rim[i]); emit_uv(c11, rim[i]);
-    EndPrimitive();
-    emit_uv(c11, rim[i]); emit_uv(uv[i], depth[i]); emit_uv(c01, rim[i]); emit_uv(c00, rim[i]);
+/// The per-axis side (-1 or +1) a direction points to.
+vec2 quadrant(vec2 direction) {
+    return vec2(direction.x >= 0.0 ? 1.0 : -1.0, direction.y >= 0.0 ? 1.0 : -1.0);
+}
+
+/// At silhouette corner `i`, the part of its pyramid between the wall's rim end (on the side
+/// `outward` points to) and the side the edge runs on to (`along`, away from the edge): a convex
+/// corner turns by less than 180 degrees, so the two edges meeting there, each covering the quarter
+/// turn from its outward normal towards its own continuation, close the gap between their walls.
+/// Outward and along are perpendicular, so their sides differ in one axis at most: one triangle.
+void emit_corner_fan(int i, vec2 outward, vec2 along) {
+    vec2 from_side = quadrant(outward), to_side = quadrant(along);
+    if (from_side == to_side) return;
+    emit_uv(uv[i], depth[i]);
+    emit_uv(rim_corner(i, from_side), rim[i]);
+    emit_uv(rim_corner(i, to_side), rim[i]);
     EndPrimitive();
 }
 
@@ -117,8 +128,8 @@ void main() {
         // The wall leans out of the silhouette: away from the triangle's third corner.
         vec2 across = vec2(uv[i].y - uv[j].y, uv[j].x - uv[i].x);
         if (dot(across, uv[(i + 2) % 3] - uv[i]) > 0.0) across = -across;
-        emit_edge_wall(i, j, vec2(across.x >= 0.0 ? 1.0 : -1.0, across.y >= 0.0 ? 1.0 : -1.0));
+        emit_edge_wall(i, j, quadrant(across));
+        emit_corner_fan(j, across, uv[j] - uv[i]);
+        emit_corner_fan(i, across, uv[i] - uv[j]);
     }
-    for (int i = 0; i < 3; ++i)
-        if (silhouette[i] || silhouette[(i + 2) % 3]) emit_pyramid(i);
 }
