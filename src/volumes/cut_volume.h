@@ -56,7 +56,8 @@ std::string spec_text(const CutVolume& volume);
 void check_volume(const CutVolume& volume);
 
 /// Sides of the polygon a cylinder's or well's cross-section is made of: the tube is inscribed in
-/// the circle, so its silhouette lies within R (1 - cos(pi / sides)) = 0.9% of R inside it.
-inline constexpr int tube_sides = 24;
+/// the circle, so its silhouette lies within R (1 - cos(pi / sides)) = 1.9% of R inside it (the
+/// drawn well tubes have as many sides, so a cut around a well follows its tube).
+inline constexpr int tube_sides = 16;
 
 }  // namespace cutaway::volumes

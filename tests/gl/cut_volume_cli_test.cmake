@@ -55,7 +55,7 @@ endfunction()
 render(box --primaries none --cut-volume ${BOX})
 expect_volume(box box 12)
 render(cylinder --primaries none --cut-volume ${CYLINDER})
-expect_volume(cylinder cylinder 96)  # 24 sides: 48 wall triangles and 24 per cap
+expect_volume(cylinder cylinder 64)  # 16 sides: 32 wall triangles and 16 per cap
 render(mesh --primaries none --cut-volume ${MESH})
 expect_volume(mesh mesh 12)
 # A box away from the model cuts nothing: the volumes above did cut.
