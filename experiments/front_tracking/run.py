@@ -33,6 +33,7 @@ sys.path.insert(0, HERE)
 import cutaway_experiment as cx  # noqa: E402
 import front_cases  # noqa: E402
 import front_report  # noqa: E402
+import report_markdown as md  # noqa: E402
 
 MODES = ("none", "smooth")
 FULL_SIZE, QUICK_SIZE = (1920, 1080), (320, 180)
@@ -126,13 +127,9 @@ class FrontExperiment:
         return front_report.compose_panels([panels], title, self.out("fig11_aperture180_waterflood.png"))
 
 
-def main():
-    outputs = ["front_tracking.json", "README.md", "flicker_pops.png", "fig11_aperture180_waterflood.png"]
-    exp = cx.Experiment("front_tracking", __doc__, [])
+def measure(exp):
+    """Simulates, animates and draws every model; returns the document (front_tracking.json)."""
     models = QUICK_MODELS if exp.quick else FULL_MODELS
-    exp.outputs = [os.path.join(exp.results, o) for o in outputs]
-    if exp.up_to_date():
-        return
     if not shutil.which("flow"):
         raise SystemExit("flow: not installed (scripts/install-deps.sh installs libopm-simulators-bin)")
     build = os.path.dirname(os.path.dirname(exp.cutaway))
@@ -154,16 +151,22 @@ def main():
         document["fig11"] = {"model": waterflood, **front.fig11(waterflood, models[waterflood], case["egrid"],
                                                                  front_cases.report_steps(exp, case["egrid"]), colour_range,
                                                                  scratch)}
-        timing_model = waterflood
-        document["timing"] = front.timing_run(timing_model, models[timing_model], document["models"][timing_model]["case"]["egrid"],
+        document["timing"] = front.timing_run(waterflood, models[waterflood], document["models"][waterflood]["case"]["egrid"],
                                               scratch)
     document["targets"] = front_report.targets(document)
     document["context"] = exp.context({"gl_renderer": document["timing"]["gl_renderer"]})
     front_report.flicker_pops_figure(document, front.out("flicker_pops.png"))
-    cx.write_json(front.out("front_tracking.json"), document)
-    with open(front.out("README.md"), "w") as f:
-        f.write(front_report.readme(document))
-    print("wrote", os.path.relpath(front.out("README.md"), cx.REPO))
+    return document
+
+
+def report(exp, document):
+    result = md.Report(front_report.TITLE, front_report.MEASURES, headline=front_report.headline(document))
+    result.body += front_report.readme_body(document)
+    return result
+
+
+def main():
+    cx.Experiment(__doc__, "front_tracking.json").run(measure, report)
 
 
 if __name__ == "__main__":
