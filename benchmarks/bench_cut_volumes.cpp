@@ -133,7 +133,7 @@ void bm_frame(benchmark::State& state, pipeline::CutawayRenderer& renderer, cons
     }
     counters.set_counters(state);
     state.counters["frame_ms"] = metrics::median(frames);
-    state.counters["volume_triangles"] = double(renderer.cut_volume_triangles());
+    state.counters["volume_triangles"] = double(renderer.status().cut_volume_triangles);
     state.counters["volumes"] = double(c.meshes.size());
 }
 

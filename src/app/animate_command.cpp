@@ -205,7 +205,7 @@ int animate(const AnimateOptions& options) {
         // A step held (none, between report steps) uploads nothing: the same values and primaries.
         if (frame.values_changed) renderer.set_colouring(*frame.values, label);
         // --primaries none: the volumes alone cut, whatever the steps' values select.
-        if (!settings.primaries && f == 0) renderer.select_none();
+        if (!settings.primaries && f == 0) renderer.select(pipeline::Primaries::none());
         if (settings.primaries && (f == 0 || flags != previous_flags)) renderer.select(flags);
         // The report step shown (the one held until the next is reached) has its wells.
         const auto wells_step = std::size_t(frame.time_step);
@@ -221,7 +221,7 @@ int animate(const AnimateOptions& options) {
         // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
         const pipeline::FrameSettings frame_settings = opened_to(settings, frame.cut_opening);
         const double draw_ms = renderer.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
-        gl::RgbaImage image = renderer.read_image();
+        gl::RgbaImage image = pipeline::FrameReadback(renderer).read_image();
         double png_ms = 0;  // an extra output, left out of the frame's time
         if (!options.frames_dir.empty()) {
             const auto png_started = std::chrono::steady_clock::now();

@@ -4,6 +4,7 @@
 // global (active cells per layer, model frame, face tolerance, colour and primary ranges) comes
 // from the blocks by collectives, equal to what one process computes from the whole model.
 #include "app/distributed_render.h"
+#include "cutaway/renderer_readback.h"
 
 #include <algorithm>
 #include <chrono>
@@ -202,7 +203,7 @@ struct RankScene {
         if (primaries)
             rank->select_range(property.primary_range, ijk_box);
         else
-            rank->renderer().select_none();
+            rank->renderer().select(pipeline::Primaries::none());
         glFinish();
         setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
         property.owned = std::vector<float>();  // (= {} would keep the capacity)
@@ -363,7 +364,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
 
     // Committed together once the stats are written too (render_command.cpp).
     io::OutputBatch outputs;
-    outputs.write(options.out, gl::encode_png(rank.renderer().read_image(), options.out));
+    outputs.write(options.out, gl::encode_png(pipeline::FrameReadback(rank.renderer()).read_image(), options.out));
     if (!options.cell_ids.empty())
         outputs.write(options.cell_ids,
                       gl::encode_png(pipeline::encode_cell_ids(rank.composited_ids(), options.width, options.height),
@@ -399,7 +400,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     stats["configuration"] = options.describe();
     stats["configuration"]["rank_slabs"] = options.rank_slabs;
     stats["configuration"]["cut_volumes"] = scene.cut_volumes.describe();
-    stats["plan"] = rank.renderer().last_plan().describe();
+    stats["plan"] = rank.renderer().status().last_plan.describe();
     stats["warmup"] = options.warmup;
     stats["repeat"] = options.repeat;
     stats["distributed"] = distributed_json(mpi, scene, gathered, stage_order, rank.last_exchange().allreduce_bytes);

@@ -149,10 +149,10 @@ std::vector<pipeline::FrameTimes> timed_frames(pipeline::CutawayRenderer& render
 
 /// The image and --cell-ids, staged in `outputs`.
 void stage_images(io::OutputBatch& outputs, const pipeline::CutawayRenderer& renderer, const RenderOptions& options) {
-    outputs.write(options.out, gl::encode_png(renderer.read_image(), options.out));
+    outputs.write(options.out, gl::encode_png(pipeline::FrameReadback(renderer).read_image(), options.out));
     if (!options.cell_ids.empty())
         outputs.write(options.cell_ids,
-                      gl::encode_png(pipeline::encode_cell_ids(renderer.read_eclipse_ids(), options.width, options.height),
+                      gl::encode_png(pipeline::encode_cell_ids(pipeline::FrameReadback(renderer).read_eclipse_ids(), options.width, options.height),
                                      options.cell_ids));
 }
 
@@ -191,7 +191,7 @@ int run_render(const RenderOptions& options) {
     const bool primaries = options.frame_settings().primaries;
     renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by && primaries));
     if (!primaries)
-        renderer.select_none();
+        renderer.select(pipeline::Primaries::none());
     else if (selected_by)
         renderer.select(selected_by->flags);
     else
@@ -211,7 +211,7 @@ int run_render(const RenderOptions& options) {
     const pipeline::FrameSettings settings = options.frame_settings();
     const pipeline::Camera camera = frame_camera(renderer, settings, options);
     const std::vector<pipeline::FrameTimes> runs = timed_frames(renderer, settings, camera, options);
-    const std::vector<std::string> frame_plan = renderer.last_plan().describe();  // before the metrics' frames
+    const std::vector<std::string> frame_plan = renderer.status().last_plan.describe();  // before the metrics' frames
     memory["resident_after_frames"] = run_context::proc_status_bytes("VmRSS");
     // Committed together once the stats are written too: a failed --stats leaves no image behind.
     io::OutputBatch outputs;

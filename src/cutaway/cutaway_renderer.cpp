@@ -189,8 +189,12 @@ void CutawayRenderer::set_hooks(FrameHooks hooks) {
 }
 
 void CutawayRenderer::select(const Primaries& primaries) {
-    if (primaries.flags) set_primaries(*primaries.flags);
-    else select_range(primaries.range, primaries.box);
+    if (primaries.flags && primaries.flags->empty())
+        set_primaries(std::vector<std::uint8_t>(grid_.cell_count(), 0));  // Primaries::none()
+    else if (primaries.flags)
+        set_primaries(*primaries.flags);
+    else
+        select_range(primaries.range, primaries.box);
 }
 
 void CutawayRenderer::set_cut_volumes(const std::vector<shapes::TriangleMesh>& meshes) {
@@ -198,7 +202,6 @@ void CutawayRenderer::set_cut_volumes(const std::vector<shapes::TriangleMesh>& m
     frozen_valid_ = false;
 }
 
-void CutawayRenderer::select_none() { set_primaries(std::vector<std::uint8_t>(grid_.cell_count(), 0)); }
 
 void CutawayRenderer::set_wells(const WellSet& wells) { wells_.set(wells, frame_); }
 
@@ -230,6 +233,9 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
                                  {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0},
                                  {"cut_volumes", volume_cut_.memory_bytes()},
                                  {"wells", wells_.memory_bytes()}};
+    status.last_plan = last_plan_;
+    status.cut_volume_triangles = volume_cut_.triangle_count();
+    status.well_heads = wells_.heads();
     return status;
 }
 

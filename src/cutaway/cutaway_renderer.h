@@ -102,7 +102,9 @@ struct Primaries {
     Primaries(std::vector<std::uint8_t> cell_flags) : flags(std::move(cell_flags)) {}
     Primaries(const grid::PrimaryRange& value_range, const std::optional<grid::IjkBox>& ijk_box = std::nullopt)
         : range(value_range), box(ijk_box) {}
-    std::optional<std::vector<std::uint8_t>> flags;
+    /// No primary cell (`--primaries none`: the cut volumes alone cut).
+    static Primaries none() { return Primaries(std::vector<std::uint8_t>{}); }
+    std::optional<std::vector<std::uint8_t>> flags;  ///< one per Eclipse cell; empty: none()
     grid::PrimaryRange range;
     std::optional<grid::IjkBox> box;
 };
@@ -129,6 +131,9 @@ struct RendererStatus {
     /// path's culling, the primary selection, the plain frame's exposed surface (0 until drawn).
     std::vector<std::pair<std::string, std::size_t>> gpu_memory_by_part;
     std::size_t gpu_memory_bytes() const;
+    FramePlan last_plan;                    ///< the passes of the last frame (FramePlan::describe in stats.json)
+    std::size_t cut_volume_triangles = 0;   ///< triangles of the cut volumes set
+    std::vector<WellHead> well_heads;       ///< the wells drawn: name, colour, render-space position
 };
 
 class CutawayRenderer {
@@ -167,23 +172,15 @@ public:
     /// The primary cells: given as flags (one per Eclipse cell), or chosen on the GPU as the active
     /// cells whose colouring value lies in a range (and inside an IJK box), which uploads nothing.
     void select(const Primaries& primaries);
-    /// No primary cell (`--primaries none`: the cut volumes alone cut).
-    void select_none();
 
     /// The user's cut volumes (closed meshes in model coordinates), uploaded once; every frame's
     /// stage 1 draws them into the cut beside the primaries' (FramePass::volume_cut). An empty list
     /// removes them. A frozen cut is made again.
     void set_cut_volumes(const std::vector<shapes::TriangleMesh>& meshes);
-    /// The passes of the last frame, by stage (FramePlan::describe in stats.json).
-    const FramePlan& last_plan() const { return last_plan_; }
-    /// Triangles of the cut volumes set.
-    std::size_t cut_volume_triangles() const { return volume_cut_.triangle_count(); }
 
     /// The wells drawn from now on (an empty set: none): their tubes are built and uploaded here,
     /// once per set. Throws std::invalid_argument for a well whose path or radius makes no tube.
     void set_wells(const WellSet& wells);
-    /// The wellheads of the set drawn (name, colour, render-space position).
-    const std::vector<WellHead>& well_heads() const { return wells_.heads(); }
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until freeze(std::nullopt).
     void freeze(const std::optional<Camera>& camera);
@@ -203,9 +200,6 @@ public:
     /// What the last frame (render or render_baseline) drew; the culling's counts are read back.
     FacesDrawn faces_drawn() const;
 
-    gl::RgbaImage read_image() const;
-    /// Eclipse cell index + 1 of every pixel of the last frame (0: no cell), rows bottom to top.
-    std::vector<std::uint32_t> read_eclipse_ids() const;
     /// Copies the last frame onto `framebuffer` (0: a window's) over the rectangle (x0, y0)-(x1, y1),
     /// scaled with linear filtering when the sizes differ.
     void present(unsigned framebuffer, int x0, int y0, int x1, int y1) const;
@@ -240,6 +234,8 @@ private:
     void select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box);
     /// Per-pixel cell + 1 and flags of the last frame (frame_outputs.glsl).
     IdImage read_ids() const;
+    gl::RgbaImage read_image() const;
+    std::vector<std::uint32_t> read_eclipse_ids() const;
     float colour_bar_reserved_width(const FrameSettings& settings) const;
     RendererState state_for(const FrameSettings& settings) const;
     void run_pass(FramePass pass, const FrameStep& step);

@@ -1,6 +1,7 @@
 #pragma once
 // Images of the renderer's last frame read back from the GPU, apart from its production interface:
-// FrameReadback holds what the image metrics read (ids, depths, the cut), RendererProbe adds what
+// FrameReadback holds what outputs and the image metrics read (the image, cell ids, depths, the
+// cut), RendererProbe adds what
 // tests and diagnostics look at (the culling's faces, the window depth, the face buffer's
 // capacity, the CPU cone-field references behind `render --exact-check`).
 #include <cstddef>
@@ -16,6 +17,11 @@ namespace cutaway::pipeline {
 class FrameReadback {
 public:
     explicit FrameReadback(const CutawayRenderer& renderer) : renderer_(renderer) {}
+
+    /// The last frame's final image (the PNG `render` writes), rows bottom to top.
+    gl::RgbaImage read_image() const { return renderer_.read_image(); }
+    /// Eclipse cell index + 1 of every pixel of the last frame (0: no cell), rows bottom to top.
+    std::vector<std::uint32_t> read_eclipse_ids() const { return renderer_.read_eclipse_ids(); }
 
     /// Per-pixel ids read back: compact cell + 1 (0 = background) and flags (shared_constants.h).
     IdImage read_ids() const { return renderer_.read_ids(); }

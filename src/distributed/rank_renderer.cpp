@@ -1,4 +1,5 @@
 #include "distributed/rank_renderer.h"
+#include "cutaway/renderer_readback.h"
 
 #include <algorithm>
 #include <utility>
@@ -24,7 +25,7 @@ RankRenderer::RankRenderer(const gl::ShaderLibrary& shaders, GridBlock block, co
         return pipeline::CentreSum{{values[0], values[1], values[2]}, std::uint64_t(values[3])};
     };
     hooks.combine_scene = [this](const pipeline::SceneTargets& scene) {
-        std::vector<std::uint32_t> ids = renderer_.read_eclipse_ids();
+        std::vector<std::uint32_t> ids = pipeline::FrameReadback(renderer_).read_eclipse_ids();
         for (std::uint32_t& id : ids) id = block_.whole_id(id);
         compositor_.composite(scene, ids);
     };

@@ -51,7 +51,7 @@ void ViewerScene::select_primaries(pipeline::CutawayRenderer& renderer) const {
     if (primaries_)
         renderer.select({property_.primary_range, box_});
     else
-        renderer.select_none();
+        renderer.select(pipeline::Primaries::none());
 }
 
 void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cutaway/cutaway_renderer.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "grid/cell_geometry.h"
 #include "volumes/volume_mesh.h"
@@ -110,9 +111,9 @@ TEST(CutVolumeGl, BoxCutIsExactAtApertureZero) {
         renderer->set_cut_volumes({volumes::box_mesh(lo, hi)});
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height, 0);
         renderer->render(uncut, camera);
-        const std::vector<std::uint32_t> before = renderer->read_eclipse_ids();
+        const std::vector<std::uint32_t> before = pipeline::FrameReadback(*renderer).read_eclipse_ids();
         renderer->render(settings, camera);
-        const std::vector<std::uint32_t> after = renderer->read_eclipse_ids();
+        const std::vector<std::uint32_t> after = pipeline::FrameReadback(*renderer).read_eclipse_ids();
         const std::vector<bool> within = cells_inside(grid, lo, hi);
         const std::vector<Vec2> hull = convex_hull(projected_corners(renderer->frame(), camera, lo, hi));
         std::size_t inside_shown = 0, changed_outside = 0;
@@ -154,10 +155,10 @@ TEST(CutVolumeGl, VolumesAndApertureOnlyEverCutMore) {
     for (float aperture : {0.0f, 60.0f, 120.0f}) {
         s.aperture_h_deg = s.aperture_v_deg = aperture;
         renderer->render(s, camera);
-        const std::vector<std::uint32_t> ids = renderer->read_eclipse_ids();
+        const std::vector<std::uint32_t> ids = pipeline::FrameReadback(*renderer).read_eclipse_ids();
         s.cut_enabled = false;
         renderer->render(s, camera);
-        const std::vector<std::uint32_t> plain = renderer->read_eclipse_ids();
+        const std::vector<std::uint32_t> plain = pipeline::FrameReadback(*renderer).read_eclipse_ids();
         s.cut_enabled = true;
         std::size_t changed = 0;
         for (std::size_t i = 0; i < ids.size(); ++i) changed += ids[i] != plain[i];

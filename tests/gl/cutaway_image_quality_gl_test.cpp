@@ -24,11 +24,11 @@ double background_in_silhouette(pipeline::CutawayRenderer& renderer, pipeline::F
                                 const pipeline::Camera& camera, const std::optional<pipeline::Camera>& frozen = {}) {
     if (frozen) renderer.freeze(*frozen);
     renderer.render(settings, camera);
-    const std::vector<std::uint32_t> cut = renderer.read_eclipse_ids();
+    const std::vector<std::uint32_t> cut = pipeline::FrameReadback(renderer).read_eclipse_ids();
     renderer.freeze(std::nullopt);
     settings.cut_enabled = false;
     renderer.render(settings, camera);
-    const std::vector<std::uint32_t> uncut = renderer.read_eclipse_ids();
+    const std::vector<std::uint32_t> uncut = pipeline::FrameReadback(renderer).read_eclipse_ids();
     std::size_t silhouette = 0, holes = 0;
     for (std::size_t i = 0; i < cut.size(); ++i) {
         if (uncut[i] == 0) continue;
@@ -161,7 +161,7 @@ FillLuminance fill_luminance(pipeline::CutawayRenderer& renderer, const pipeline
                              const pipeline::Camera& camera, bool cut_fill) {
     renderer.render(settings, camera);
     const pipeline::IdImage ids = pipeline::RendererProbe(renderer).read_ids();
-    const gl::RgbaImage image = renderer.read_image();
+    const gl::RgbaImage image = pipeline::FrameReadback(renderer).read_image();
     std::vector<double> values;
     std::size_t lines = 0;
     for (std::size_t i = 0; i < ids.cell.size(); ++i) {

@@ -32,7 +32,7 @@ Shaded render(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings setti
               const pipeline::Camera& camera) {
     settings.stage2_passes = passes;
     renderer.render(settings, camera);
-    return {renderer.read_image(), pipeline::RendererProbe(renderer).read_ids()};
+    return {pipeline::FrameReadback(renderer).read_image(), pipeline::RendererProbe(renderer).read_ids()};
 }
 
 void check_deferred(const grid::CornerPointGrid& grid, unsigned seed) {

@@ -52,7 +52,7 @@ void check_framing(const grid::CornerPointGrid& grid, const char* name, int widt
                                                                     renderer->status(settings).colour_bar_reserved_width);
         settings.cut_enabled = false;  // the whole model's extent
         renderer->render(settings, camera);
-        const PixelBox box = model_pixels(renderer->read_eclipse_ids(), width, height);
+        const PixelBox box = model_pixels(pipeline::FrameReadback(*renderer).read_eclipse_ids(), width, height);
         const double fill_x = double(box.x1 - box.x0 + 1) / width, fill_y = double(box.y1 - box.y0 + 1) / height;
         std::cout << "  " << name << " " << width << "x" << height << " azimuth " << pose.azimuth_deg << " elevation "
                   << pose.elevation_deg << ": model box " << 100 * fill_x << "% x " << 100 * fill_y << "% of the panel\n";
@@ -69,11 +69,11 @@ void check_framing(const grid::CornerPointGrid& grid, const char* name, int widt
         settings.cut_enabled = true;
         settings.colour_bar = false;
         renderer->render(settings, camera);
-        const gl::RgbaImage plain = renderer->read_image();
-        const std::vector<std::uint32_t> ids = renderer->read_eclipse_ids();
+        const gl::RgbaImage plain = pipeline::FrameReadback(*renderer).read_image();
+        const std::vector<std::uint32_t> ids = pipeline::FrameReadback(*renderer).read_eclipse_ids();
         settings.colour_bar = true;
         renderer->render(settings, camera);
-        const gl::RgbaImage with_bar = renderer->read_image();
+        const gl::RgbaImage with_bar = pipeline::FrameReadback(*renderer).read_image();
         std::size_t outside = 0, inside = 0;
         for (int y = 0; y < height; ++y)
             for (int x = 0; x < width; ++x) {
@@ -105,10 +105,10 @@ TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
     settings.colour_bar = false;
     const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height);
     renderer->render(settings, camera);
-    const gl::RgbaImage plain = renderer->read_image();
+    const gl::RgbaImage plain = pipeline::FrameReadback(*renderer).read_image();
     settings.silhouette = true;
     renderer->render(settings, camera);
-    const gl::RgbaImage outlined = renderer->read_image();
+    const gl::RgbaImage outlined = pipeline::FrameReadback(*renderer).read_image();
     const pipeline::IdImage ids = pipeline::RendererProbe(*renderer).read_ids();
 
     // Mean colours of the silhouette (pixels the silhouette changed) and of the shell-cut lines.
@@ -166,9 +166,9 @@ TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
     const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height,
                                                                 renderer->status(settings).colour_bar_reserved_width);
     renderer->render(settings, camera);
-    const gl::RgbaImage image = renderer->read_image();
+    const gl::RgbaImage image = pipeline::FrameReadback(*renderer).read_image();
     const pipeline::IdImage ids = pipeline::RendererProbe(*renderer).read_ids();
-    const std::vector<std::uint32_t> cells = renderer->read_eclipse_ids();
+    const std::vector<std::uint32_t> cells = pipeline::FrameReadback(*renderer).read_eclipse_ids();
     std::vector<double> distances, brightness;
     for (std::size_t i = 0; i < cells.size(); ++i) {
         if (!(ids.flags[i] & pipeline::flag_primary) || (ids.flags[i] & pipeline::flag_edge) || cells[i] == 0) continue;

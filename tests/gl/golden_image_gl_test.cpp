@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "gl/image.h"
+#include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 
 namespace cutaway::test {
@@ -42,7 +43,7 @@ void check_golden(const GoldenCase& golden) {
     renderer->select(grid::select_primaries(grid, poro, "PORO", grid::range_for_fraction(grid, poro, "PORO", 0.01)));
     renderer->render(golden.settings, pipeline::make_orbit_camera(renderer->frame(), golden.pose, 320, 240,
                                                                   renderer->status(golden.settings).colour_bar_reserved_width));
-    const gl::RgbaImage image = renderer->read_image();
+    const gl::RgbaImage image = pipeline::FrameReadback(*renderer).read_image();
     const std::filesystem::path path = golden_path(golden.name);
     if (const char* update = std::getenv("CUTAWAY_UPDATE_GOLDEN"); update && std::string(update) == "1") {
         gl::write_png(image, path);

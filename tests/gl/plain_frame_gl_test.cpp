@@ -48,12 +48,12 @@ void check_plain_frame(const grid::CornerPointGrid& grid, unsigned seed) {
         settings.ssao = false;
         settings.mean_filter = 0;
         renderer.render(settings, camera);
-        const std::vector<std::uint32_t> reference = renderer.read_eclipse_ids();
+        const std::vector<std::uint32_t> reference = pipeline::FrameReadback(renderer).read_eclipse_ids();
         const std::vector<std::uint32_t> reference_flags = pipeline::RendererProbe(renderer).read_ids().flags;
         const std::vector<float> reference_depth = pipeline::RendererProbe(renderer).read_window_depth();
         for (DrawMode draw : {DrawMode::visible, DrawMode::all_faces}) {
             renderer.render_baseline(camera, draw);
-            const std::vector<std::uint32_t> plain = renderer.read_eclipse_ids();
+            const std::vector<std::uint32_t> plain = pipeline::FrameReadback(renderer).read_eclipse_ids();
             const std::vector<float> plain_depth = pipeline::RendererProbe(renderer).read_window_depth();
             for (std::size_t p = 0; p < plain.size(); ++p) {
                 ++pixels;

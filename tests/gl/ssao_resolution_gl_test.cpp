@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "gl_test_support.h"
+#include "cutaway/renderer_readback.h"
 
 namespace cutaway::test {
 namespace {
@@ -31,7 +32,7 @@ gl::RgbaImage render_petra(bool ssao, bool half_resolution, const pipeline::Orbi
     // 4.0, 1.6-2.2% of the interpolated pixels cross the 24/255 level, the same edges).
     settings.ssao_strength = 1.6f;
     renderer->render(settings, pipeline::make_orbit_camera(renderer->frame(), pose, width, height));
-    return renderer->read_image();
+    return pipeline::FrameReadback(*renderer).read_image();
 }
 
 int largest_channel_difference(const gl::RgbaImage& a, const gl::RgbaImage& b, std::size_t pixel) {

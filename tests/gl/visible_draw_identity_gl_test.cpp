@@ -52,7 +52,7 @@ Frame render(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings settin
              const pipeline::Camera& camera) {
     settings.draw = draw;
     renderer.render(settings, camera);
-    return {renderer.read_eclipse_ids(), pipeline::RendererProbe(renderer).read_scene_depth().values};
+    return {pipeline::FrameReadback(renderer).read_eclipse_ids(), pipeline::RendererProbe(renderer).read_scene_depth().values};
 }
 
 /// Random primaries: a random 0.5-5% of active cells, in clumps of the cells near a few seeds
@@ -253,7 +253,7 @@ TEST(VisibleFaceBuffer, AFrameThatOverflowsGrowsTheBufferAndIsDrawnAgainUnchange
     pipeline::CutawayRenderer* renderer = frame.renderer.get();
     const auto& [settings, camera, records] = std::tie(frame.settings, frame.camera, frame.records);
     ASSERT_EQ(renderer->status().frames_redrawn, 0u) << "petra's faces all fit the initial buffer (2M faces)";
-    const std::vector<std::uint32_t> cells = renderer->read_eclipse_ids();
+    const std::vector<std::uint32_t> cells = pipeline::FrameReadback(*renderer).read_eclipse_ids();
     ASSERT_GT(records.size(), 1000u);
 
     pipeline::RendererProbe(*renderer).set_face_buffer_capacity(100);
@@ -262,7 +262,7 @@ TEST(VisibleFaceBuffer, AFrameThatOverflowsGrowsTheBufferAndIsDrawnAgainUnchange
     EXPECT_GE(pipeline::RendererProbe(*renderer).face_buffer_capacity(), records.size());
     EXPECT_EQ(renderer->faces_drawn().culling->faces_requested, records.size());
     EXPECT_EQ(pipeline::RendererProbe(*renderer).read_visible_faces(), records);
-    EXPECT_EQ(renderer->read_eclipse_ids(), cells);
+    EXPECT_EQ(pipeline::FrameReadback(*renderer).read_eclipse_ids(), cells);
     renderer->render(settings, camera);
     EXPECT_EQ(renderer->status().frames_redrawn, 1u) << "the grown buffer holds the same frame";
 }

@@ -63,7 +63,7 @@ TEST(Wells, EverySpe9WellIsDrawnInItsColourAndLabelledInsideTheImage) {
     const pipeline::Camera camera = pipeline::make_orbit_camera(renderer.frame(), {}, width, height, bar);
     renderer.render(settings, camera);
     const std::vector<std::size_t> counts = well_pixels(renderer, 26);
-    const gl::RgbaImage image = renderer.read_image();
+    const gl::RgbaImage image = pipeline::FrameReadback(renderer).read_image();
     const pipeline::IdImage ids = pipeline::FrameReadback(renderer).read_ids();
     // The final image's rows run top to bottom, the id image's bottom to top.
     std::vector<double> red(26, 0), blue(26, 0);
@@ -83,7 +83,7 @@ TEST(Wells, EverySpe9WellIsDrawnInItsColourAndLabelledInsideTheImage) {
         if (name == "INJE1") EXPECT_GT(blue[w], red[w]) << name;
         else EXPECT_GT(red[w], blue[w]) << name;
     }
-    const std::vector<annotation::PlacedLabel> labels = pipeline::well_label_layout(renderer.well_heads(), camera, bar);
+    const std::vector<annotation::PlacedLabel> labels = pipeline::well_label_layout(renderer.status().well_heads, camera, bar);
     EXPECT_EQ(labels.size(), 26u) << "every wellhead is in view: every well is named";
     std::size_t overlapping = 0;
     for (std::size_t a = 0; a < labels.size(); ++a) {
@@ -111,12 +111,12 @@ TEST(Wells, ATubeIsVisibleWhereverItsWellheadIsInView) {
         // Some poses closer than framed, so that some wellheads fall outside the image.
         if (trial % 2) pose.distance = 0.6f * renderer.frame().radius() / std::tan(0.5f * glm::radians(pipeline::default_fovy_deg));
         const pipeline::Camera camera = pipeline::make_orbit_camera(renderer.frame(), pose, 640, 360);
-        if (camera.eye.z <= renderer.well_heads().front().position.z) continue;
+        if (camera.eye.z <= renderer.status().well_heads.front().position.z) continue;
         ++poses_checked;
         renderer.render(settings, camera);
         const std::vector<std::size_t> counts = well_pixels(renderer, s.wells.wells.size());
         for (std::size_t w = 0; w < s.wells.wells.size(); ++w) {
-            const glm::vec4 clip = camera.view_projection() * glm::vec4(renderer.well_heads()[w].position, 1.0f);
+            const glm::vec4 clip = camera.view_projection() * glm::vec4(renderer.status().well_heads[w].position, 1.0f);
             const glm::vec3 ndc = glm::vec3(clip) / clip.w;
             if (clip.w <= 0 || std::abs(ndc.x) > 1 || std::abs(ndc.y) > 1 || std::abs(ndc.z) > 1) continue;
             ++heads_checked;

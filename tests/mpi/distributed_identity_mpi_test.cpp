@@ -47,7 +47,7 @@ struct Frame {
 
 Frame single_frame(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings, const pipeline::Camera& camera) {
     renderer.render(settings, camera);
-    return {renderer.read_eclipse_ids(), pipeline::RendererProbe(renderer).read_scene_depth().values, renderer.read_image()};
+    return {pipeline::FrameReadback(renderer).read_eclipse_ids(), pipeline::RendererProbe(renderer).read_scene_depth().values, pipeline::FrameReadback(renderer).read_image()};
 }
 
 struct Tally {
@@ -118,7 +118,7 @@ void check_identity(const grid::CornerPointGrid& grid, unsigned seed) {
         rank.set_primaries(flags);
         rank.render(settings, camera);
         if (!session.root()) continue;
-        const Frame distributed{rank.composited_ids(), pipeline::RendererProbe(rank.renderer()).read_scene_depth().values, rank.renderer().read_image()};
+        const Frame distributed{rank.composited_ids(), pipeline::RendererProbe(rank.renderer()).read_scene_depth().values, pipeline::FrameReadback(rank.renderer()).read_image()};
         single->select(flags);
         const Frame first = single_frame(*single, settings, camera);
         pipeline::FrameSettings last_wins = settings;
