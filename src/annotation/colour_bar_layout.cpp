@@ -62,6 +62,30 @@ std::vector<TextLine> ColourBarLayout::texts() const {
     return lines;
 }
 
+namespace {
+
+/// The dark band left of the gradient over the primaries' range (clamped to the gradient), at least
+/// 3 text pixels tall so a narrow range, or one beyond the bar's end, still shows.
+PixelRect primary_band(const ColourBarLabel& label, const ColourBarLayout& layout, float gap, float bar_width) {
+    const float s = layout.text_scale, bar_height = layout.gradient.height();
+    const auto row = [&](float value) {
+        const double clamped = std::clamp(double(value), double(label.min), double(label.max));
+        return layout.gradient.y1 - float(along_bar(label, clamped)) * bar_height;
+    };
+    float top = row(label.primary_range->max), bottom = row(label.primary_range->min);
+    const float least = 3 * s;
+    if (bottom - top < least) {
+        const float middle = 0.5f * (top + bottom);
+        top = std::max(layout.gradient.y0, middle - 0.5f * least);
+        bottom = std::min(layout.gradient.y1, top + least);
+        top = bottom - least;
+    }
+    const float x1 = layout.frame.x0 - gap, x0 = x1 - 0.5f * bar_width;
+    return PixelRect{x0, top, x1, bottom};
+}
+
+}  // namespace
+
 ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int height) {
     if (!std::isfinite(label.min) || !std::isfinite(label.max) || label.min > label.max)
         throw std::invalid_argument("colour bar: expected a finite range min <= max, found [" + std::to_string(label.min) +
@@ -132,22 +156,7 @@ ColourBarLayout layout_colour_bar(const ColourBarLabel& label, int width, int he
         tick.label = {ticks.labels[t], std::round(tick.mark.x1 + gap), std::round(tick_y - half_label), s};
         layout.ticks.push_back(tick);
     }
-    if (label.primary_range) {
-        const auto row = [&](float value) {
-            const double clamped = std::clamp(double(value), double(label.min), double(label.max));
-            return layout.gradient.y1 - float(along_bar(label, clamped)) * bar_height;
-        };
-        float top = row(label.primary_range->max), bottom = row(label.primary_range->min);
-        const float least = 3 * s;
-        if (bottom - top < least) {
-            const float middle = 0.5f * (top + bottom);
-            top = std::max(layout.gradient.y0, middle - 0.5f * least);
-            bottom = std::min(layout.gradient.y1, top + least);
-            top = bottom - least;
-        }
-        const float x1 = layout.frame.x0 - gap, x0 = x1 - 0.5f * bar_width;
-        layout.primary_band = PixelRect{x0, top, x1, bottom};
-    }
+    if (label.primary_range) layout.primary_band = primary_band(label, layout, gap, bar_width);
     return layout;
 }
 

@@ -156,6 +156,42 @@ void stage_images(io::OutputBatch& outputs, const pipeline::CutawayRenderer& ren
                                      options.cell_ids));
 }
 
+/// Says on stderr that the primary range holds no cell (the frame shows the context only).
+void warn_without_primaries(std::size_t primary_count, const std::string& name, const grid::PrimaryRange& range) {
+    if (primary_count == 0)
+        std::cerr << "cutaway render: no cell of " << name << " lies in the primary range [" << range.min << ", "
+                  << range.max << "]; rendering the context only\n";
+}
+
+/// The model's and the image's sizes and where the memory went, in stats.json.
+void add_model_facts(json& stats, const LoadedModel& model, const RenderOptions& options, std::size_t primary_count,
+                     const json& memory) {
+    stats["size"] = {options.width, options.height};
+    stats["cells"] = model.grid.cell_count();
+    stats["active_cells"] = model.grid.active_count();
+    stats["primary_cells"] = primary_count;
+    stats["memory_bytes"] = memory;
+    stats["model"] = model.description;
+    stats["model_load_s"] = model.load_seconds;
+}
+
+/// The frame's primaries: none (`--primaries none`), by a second property, or the range and box.
+void select_primaries(pipeline::CutawayRenderer& renderer, bool primaries, const PropertyChoice& property,
+                      const std::optional<SecondPropertySelection>& selected_by, const std::optional<grid::IjkBox>& box) {
+    if (!primaries)
+        renderer.select(pipeline::Primaries::none());
+    else if (selected_by)
+        renderer.select(selected_by->flags);
+    else
+        renderer.select({property.primary_range, box});
+}
+
+/// The colour bar's box in image pixels, rows from the top: what an image check leaves out of the model.
+json colour_bar_box(const annotation::ColourBarLabel& label, const RenderOptions& options) {
+    const annotation::PixelRect bar = annotation::layout_colour_bar(label, options.width, options.height).bounds();
+    return {bar.x0, bar.y0, bar.x1, bar.y1};
+}
+
 int run_render(const RenderOptions& options) {
     if (launched_by_mpi()) return run_distributed_render(options);
     refuse_render_overwrites(options);
@@ -173,15 +209,13 @@ int run_render(const RenderOptions& options) {
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
     if (property.external) property.owned = *std::exchange(property.external, nullptr);
     model.grid.clear_properties();
-    const grid::CornerPointGrid& grid = model.grid;
-
     std::unique_ptr<gl::GlContext> context = gl::create_context(options.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     const auto setup_started = std::chrono::steady_clock::now();
     // The corner depths live on the GPU once the geometry is built and nothing reads them on the
     // CPU again: released there, before the selection, the render targets and the colouring are
     // allocated, so the set-up's peak does not hold both.
-    pipeline::CutawayRenderer renderer(shaders, grid, options.z_scale, options.width, options.height,
+    pipeline::CutawayRenderer renderer(shaders, model.grid, options.z_scale, options.width, options.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
     renderer.set_wells(wells);
@@ -189,13 +223,9 @@ int run_render(const RenderOptions& options) {
         load_cut_volumes(options.cut_volumes, renderer.frame(), volume_wells, options.model_memory_limit_bytes());
     renderer.set_cut_volumes(cut_volumes.meshes);
     const bool primaries = options.frame_settings().primaries;
-    renderer.set_colouring(property.values(), property.colour_bar_label(!selected_by && primaries));
-    if (!primaries)
-        renderer.select(pipeline::Primaries::none());
-    else if (selected_by)
-        renderer.select(selected_by->flags);
-    else
-        renderer.select({property.primary_range, box});
+    const annotation::ColourBarLabel label = property.colour_bar_label(!selected_by && primaries);
+    renderer.set_colouring(property.values(), label);
+    select_primaries(renderer, primaries, property, selected_by, box);
     // The values live on the GPU now (colouring and selection); the frames read no CPU copy.
     property.owned = std::vector<float>();
     glFinish();
@@ -205,9 +235,7 @@ int run_render(const RenderOptions& options) {
     const std::string selected_name = selected_by ? selected_by->label : property.label;
     const grid::PrimaryRange selected_range = selected_by ? selected_by->range : property.primary_range;
     refuse_nothing_to_draw(options, primary_count, selected_name, selected_range);
-    if (primary_count == 0 && primaries)
-        std::cerr << "cutaway render: no cell of " << selected_name << " lies in the primary range ["
-                  << selected_range.min << ", " << selected_range.max << "]; rendering the context only\n";
+    if (primaries) warn_without_primaries(primary_count, selected_name, selected_range);
     const pipeline::FrameSettings settings = options.frame_settings();
     const pipeline::Camera camera = frame_camera(renderer, settings, options);
     const std::vector<pipeline::FrameTimes> runs = timed_frames(renderer, settings, camera, options);
@@ -225,23 +253,13 @@ int run_render(const RenderOptions& options) {
     if (options.metrics) add_frame_metrics(stats, renderer, settings, camera);
     stats["strategy"] = strategy_json(strategy, settings.strategy, renderer.status().auto_sweep_from);
     stats.update(run_context_json(current_gl_device(context->platform())));
-    stats["size"] = {options.width, options.height};
-    stats["cells"] = grid.cell_count();
-    stats["active_cells"] = grid.active_count();
-    stats["primary_cells"] = primary_count;
-    stats["gpu_memory_bytes"] = renderer.status().gpu_memory_bytes();
     add_memory_use(memory, renderer, options);
-    stats["memory_bytes"] = memory;
-    stats["model"] = model.description;
-    stats["model_load_s"] = model.load_seconds;
+    add_model_facts(stats, model, options, primary_count, memory);
+    stats["gpu_memory_bytes"] = renderer.status().gpu_memory_bytes();
     stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set
     stats["property"] = {{"name", property.label}, {"colour_range", {property.colour_range.min, property.colour_range.max}},
                          {"colour_scale", property.log_scale ? "log" : "linear"}, {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
-    if (settings.colour_bar) {  // image pixels, rows from the top: what an image check leaves out of the model
-        const annotation::PixelRect bar =
-            annotation::layout_colour_bar(property.colour_bar_label(!selected_by), options.width, options.height).bounds();
-        stats["colour_bar_box"] = {bar.x0, bar.y0, bar.x1, bar.y1};
-    }
+    if (settings.colour_bar) stats["colour_bar_box"] = colour_bar_box(label, options);
     stats["configuration"] = options.describe();
     stats["configuration"]["cut_volumes"] = cut_volumes.describe();
     stats["plan"] = frame_plan;
