@@ -118,9 +118,8 @@ pipeline::FrameSettings opened_to(pipeline::FrameSettings settings, float openin
     return settings;
 }
 
-int animate(const AnimateOptions& options) {
-    // Before any thread starts (OpenMP in the generator, llvmpipe's, the encoder's): see interrupt_guard.h.
-    const InterruptGuard interrupts;
+/// Refuses what animate does not take, before any file is read.
+void check_animate_options(const AnimateOptions& options) {
     const RenderOptions& scene = options.scene;
     if (scene.property.empty()) throw std::invalid_argument("--property: expected the dynamic property to animate (e.g. SWAT)");
     if (scene.step >= 0) throw std::invalid_argument("--step: animate shows report steps --steps FIRST LAST instead");
@@ -129,6 +128,180 @@ int animate(const AnimateOptions& options) {
     for (const std::string& model : scene.model) inputs.push_back({"the model", model});
     refuse_overwrites(inputs, {{"--out", options.out}, {"--stats", options.stats}});
     io::require_even_size(scene.width, scene.height);
+}
+
+/// The animation's value ranges: the primaries' (--range, or --primary-fraction of the first
+/// animated step) and IJK box, the steps' survey, one colour range and the hysteresis band.
+struct AnimationRanges {
+    std::optional<grid::IjkBox> box;
+    grid::PrimaryRange primary_range;
+    StepSurvey survey;
+    grid::PrimaryRange colour_range;
+    float band = 0;
+};
+
+AnimationRanges animation_ranges(const AnimateOptions& options, const grid::CornerPointGrid& grid,
+                                 const temporal::StepValueSource& source, const temporal::AnimationTimeline& timeline,
+                                 temporal::Coherence coherence) {
+    const RenderOptions& scene = options.scene;
+    const std::size_t needed = grid.cell_count() * animation_bytes_per_cell +
+                               std::size_t(scene.width) * std::size_t(scene.height) * animation_bytes_per_pixel;
+    if (needed > scene.model_memory_limit_bytes())
+        throw std::invalid_argument("--memory-limit-gb: " + memory_limit_problem(needed, scene.model_memory_limit_bytes(),
+                                                                                "the animation's per-cell and per-pixel arrays"));
+    AnimationRanges r;
+    PropertyChoice first_step;
+    first_step.name = scene.property;
+    first_step.owned = source.values(timeline.first_step);
+    r.box = choose_primary_range(grid, first_step, scene);
+    r.primary_range = first_step.primary_range;
+    first_step.owned = std::vector<float>();
+    r.survey = survey_steps(grid, source, timeline, r.primary_range, r.box);
+    r.colour_range = scene.colour_range.empty() ? r.survey.colour_range : given_colour_range(scene.colour_range, false);
+    if (coherence == temporal::Coherence::smooth)
+        r.band = float(options.hysteresis) * (r.colour_range.max - r.colour_range.min);
+    return r;
+}
+
+/// Draws, encodes and measures the animation's frames one by one (upload what changed, draw with
+/// one fence, read back, hand to the encoder), keeping what the next frame compares with.
+class FrameLoop {
+public:
+    FrameLoop(const AnimateOptions& options, pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
+              const annotation::ColourBarLabel& label, const StepWellSets& step_wells, io::Mp4Encoder& encoder,
+              std::size_t frame_count, std::size_t first_step)
+        : options_(options), scene_(options.scene), renderer_(renderer), settings_(settings), label_(label),
+          step_wells_(step_wells), encoder_(encoder), frame_count_(frame_count), shown_wells_step_(first_step) {
+        primaries_only_ = settings;
+        primaries_only_.ssao = false;
+        primaries_only_.colour_bar = false;
+        primaries_only_.only = pipeline::OnlyLayer::primaries;
+    }
+
+    /// Frame `f` of `frame`: its stats entry.
+    json draw(std::size_t f, const temporal::CoherentSequence::Frame& frame) {
+        const auto started = std::chrono::steady_clock::now();
+        const pipeline::Camera camera = upload(f, frame);
+        const double upload_ms = milliseconds_since(started);
+        // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
+        const pipeline::FrameSettings frame_settings = opened_to(settings_, frame.cut_opening);
+        const double draw_ms = renderer_.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
+        gl::RgbaImage image = pipeline::FrameReadback(renderer_).read_image();
+        const double png_ms = write_png_frame(f, image);  // an extra output, left out of the frame's time
+        // Waits only while ffmpeg still takes the frame before: encoding overlaps the next frame.
+        encoder_.write_frame(std::move(image.pixels));
+        const double ms = milliseconds_since(started) - png_ms;
+
+        json entry{{"frame", f}, {"time_step", frame.time_step}, {"ms", ms},
+                   {"ms_by_part", {{"upload", upload_ms}, {"draw", draw_ms}, {"readback_and_encoder", ms - upload_ms - draw_ms}}},
+                   {"primary_cells", frame.primary_cells}, {"cut_opening", frame.cut_opening}};
+        if (options_.time_against_render)
+            entry["render_ms"] = renderer_.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
+        if (f > 0) {
+            const metrics::PopCounts pops = metrics::count_pops(previous_flags_, *frame.flags);
+            entry["pop_in"] = pops.in;
+            entry["pop_out"] = pops.out;
+        }
+        if (options_.metrics) add_image_metrics(entry, renderer_, primaries_only_, camera, previous_states_);
+        previous_flags_ = *frame.flags;
+        return entry;
+    }
+
+private:
+    /// What changed since the frame before (values, primaries, wells, the camera's orbit) uploaded;
+    /// the frame's camera. A step held (none, between report steps) uploads nothing.
+    pipeline::Camera upload(std::size_t f, const temporal::CoherentSequence::Frame& frame) {
+        if (frame.values_changed) renderer_.set_colouring(*frame.values, label_);
+        // --primaries none: the volumes alone cut, whatever the steps' values select.
+        if (!settings_.primaries && f == 0) renderer_.select(pipeline::Primaries::none());
+        if (settings_.primaries && (f == 0 || *frame.flags != previous_flags_)) renderer_.select(*frame.flags);
+        // The report step shown (the one held until the next is reached) has its wells.
+        const auto wells_step = std::size_t(frame.time_step);
+        if (f == 0 || step_wells_.changes(shown_wells_step_, wells_step)) renderer_.set_wells(step_wells_.at(wells_step));
+        shown_wells_step_ = wells_step;
+        pipeline::OrbitPose pose = scene_.camera_pose();
+        if (frame_count_ > 1) pose.azimuth_deg += float(options_.orbit_deg * double(f) / double(frame_count_ - 1));
+        const float bar_width = renderer_.status(settings_).colour_bar_reserved_width;
+        if (scene_.freeze_pose && f == 0)
+            renderer_.freeze(pipeline::make_orbit_camera(renderer_.frame(), *scene_.freeze_pose, scene_.width, scene_.height, bar_width));
+        return pipeline::make_orbit_camera(renderer_.frame(), pose, scene_.width, scene_.height, bar_width);
+    }
+
+    /// --frames DIR: frame `f` as a PNG there; the milliseconds it took (0 without --frames).
+    double write_png_frame(std::size_t f, const gl::RgbaImage& image) const {
+        if (options_.frames_dir.empty()) return 0;
+        const auto started = std::chrono::steady_clock::now();
+        char name[32];
+        std::snprintf(name, sizeof name, "frame_%05zu.png", f);
+        gl::write_png(image, std::filesystem::path(options_.frames_dir) / name);
+        return milliseconds_since(started);
+    }
+
+    const AnimateOptions& options_;
+    const RenderOptions& scene_;
+    pipeline::CutawayRenderer& renderer_;
+    const pipeline::FrameSettings& settings_;
+    pipeline::FrameSettings primaries_only_;
+    const annotation::ColourBarLabel& label_;
+    const StepWellSets& step_wells_;
+    io::Mp4Encoder& encoder_;
+    std::size_t frame_count_;
+    std::size_t shown_wells_step_;
+    std::vector<std::uint8_t> previous_flags_;
+    std::vector<metrics::CutState> previous_states_;
+};
+
+/// What stats.json says of the run beside its frames.
+struct AnimationFacts {
+    const LoadedModel& model;
+    const AnimationRanges& ranges;
+    const temporal::StepValueSource& source;
+    const pipeline::FrameSettings& settings;
+    const io::Mp4Settings& video;
+    const CutVolumeSet& cut_volumes;
+    double setup_seconds = 0;
+    double frames_seconds = 0;
+    double finish_ms = 0;
+    std::size_t steps_read = 0;
+};
+
+void write_animation_stats(const AnimateOptions& options, json frames, const AnimationFacts& facts,
+                           const GlDevice& device) {
+    const RenderOptions& scene = options.scene;
+    json stats;
+    const std::size_t frame_count = frames.size();
+    stats["frames"] = std::move(frames);
+    put_frame_summaries(stats, stats["frames"], facts.finish_ms);
+    stats["frames_wall_s"] = facts.frames_seconds;  // every frame, its metrics and the encoding to the end
+    stats["encoder_finish_ms"] = facts.finish_ms;   // after the last frame: ffmpeg's queue and index
+    stats["frame_count"] = frame_count;
+    stats["report_steps_read"] = facts.steps_read;
+    stats.update(run_context_json(device));
+    stats["size"] = {scene.width, scene.height};
+    stats["cells"] = facts.model.grid.cell_count();
+    stats["active_cells"] = facts.model.grid.active_count();
+    stats["model"] = facts.model.description;
+    stats["model_load_s"] = facts.model.load_seconds;
+    stats["renderer_setup_s"] = facts.setup_seconds;
+    stats["strategy"] = {{"requested", scene.settings.strategy}, {"drawn", facts.settings.strategy},
+                         {"largest_step_primaries", facts.ranges.survey.most_primaries}};
+    const AnimationRanges& r = facts.ranges;
+    stats["property"] = {{"name", scene.property}, {"colour_range", {r.colour_range.min, r.colour_range.max}},
+                         {"primary_range", {r.primary_range.min, r.primary_range.max}}, {"hysteresis_band", r.band},
+                         {"report_steps", facts.source.step_count()}};
+    stats["video"] = {{"codec", "h264"}, {"pixel_format", "yuv420p"}, {"encoder", "ffmpeg libx264"},
+                      {"preset", facts.video.preset}, {"crf", facts.video.crf}, {"fps", facts.video.fps}};
+    stats["configuration"] = describe(options);
+    stats["configuration"]["cut_volumes"] = facts.cut_volumes.describe();
+    stats["memory_bytes"] = {{"peak_resident", run_context::proc_status_bytes("VmHWM")}};
+    io::write_file(options.stats, stats.dump(2) + '\n');
+}
+
+int animate(const AnimateOptions& options) {
+    // Before any thread starts (OpenMP in the generator, llvmpipe's, the encoder's): see interrupt_guard.h.
+    const InterruptGuard interrupts;
+    const RenderOptions& scene = options.scene;
+    check_animate_options(options);
     const temporal::Coherence coherence = temporal::parse_coherence(options.coherence);
     pipeline::FrameSettings settings = scene.frame_settings();
 
@@ -138,22 +311,7 @@ int animate(const AnimateOptions& options) {
     const std::unique_ptr<temporal::StepValueSource> step_values = step_values_of(model, scene.property);
     const temporal::StepValueSource& source = *step_values;
     const temporal::AnimationTimeline timeline = timeline_of(options, source.step_count(), scene.property);
-    const std::size_t needed = grid.cell_count() * animation_bytes_per_cell +
-                               std::size_t(scene.width) * std::size_t(scene.height) * animation_bytes_per_pixel;
-    if (needed > scene.model_memory_limit_bytes())
-        throw std::invalid_argument("--memory-limit-gb: " + memory_limit_problem(needed, scene.model_memory_limit_bytes(),
-                                                                                "the animation's per-cell and per-pixel arrays"));
-    PropertyChoice first_step;  // --range, or --primary-fraction of the first animated step's values
-    first_step.name = scene.property;
-    first_step.owned = source.values(timeline.first_step);
-    const std::optional<grid::IjkBox> box = choose_primary_range(grid, first_step, scene);
-    const grid::PrimaryRange primary_range = first_step.primary_range;
-    first_step.owned = std::vector<float>();
-    const StepSurvey survey = survey_steps(grid, source, timeline, primary_range, box);
-    const grid::PrimaryRange colour_range =
-        scene.colour_range.empty() ? survey.colour_range : given_colour_range(scene.colour_range, false);
-    const float band = coherence == temporal::Coherence::smooth ? float(options.hysteresis) * (colour_range.max - colour_range.min) : 0.0f;
-
+    const AnimationRanges ranges = animation_ranges(options, grid, source, timeline, coherence);
     const StepWellSets step_wells(model, scene.wells, scene.well_radius, timeline.first_step, timeline.last_step);
     // A `well:` volume follows the well's path at the first step shown (one cut for the animation).
     const volumes::WellPaths volume_wells = cut_volume_well_paths(model, scene.wells, int(timeline.first_step));
@@ -170,17 +328,12 @@ int animate(const AnimateOptions& options) {
     // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
     // redraws the whole cut another way at once (on petra it made the first step's largest
     // flicker). The animation keeps the one auto picks for its largest primary set.
-    settings.strategy = pipeline::resolve_cut_strategy(settings.strategy, survey.most_primaries, renderer.status().auto_sweep_from);
-    const annotation::ColourBarLabel label{scene.property, colour_range.min, colour_range.max,
+    settings.strategy = pipeline::resolve_cut_strategy(settings.strategy, ranges.survey.most_primaries, renderer.status().auto_sweep_from);
+    const annotation::ColourBarLabel label{scene.property, ranges.colour_range.min, ranges.colour_range.max,
                                            annotation::property_unit(scene.property)};
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
 
-    temporal::CoherentSequence sequence(grid, source, timeline, coherence, primary_range, band, box);
-    pipeline::FrameSettings primaries_only = settings;
-    primaries_only.ssao = false;
-    primaries_only.colour_bar = false;
-    primaries_only.only = pipeline::OnlyLayer::primaries;
-
+    temporal::CoherentSequence sequence(grid, source, timeline, coherence, ranges.primary_range, ranges.band, ranges.box);
     io::StagedFile staged(options.out);
     io::Mp4Settings video;
     video.width = scene.width;
@@ -192,61 +345,12 @@ int animate(const AnimateOptions& options) {
 
     const std::size_t frame_count = timeline.frame_count();
     ProgressBar progress("cutaway animate", frame_count, "frames");
+    FrameLoop loop(options, renderer, settings, label, step_wells, encoder, frame_count, timeline.first_step);
     json frames = json::array();
-    std::vector<std::uint8_t> previous_flags;
-    std::vector<metrics::CutState> previous_states;
-    std::size_t shown_wells_step = timeline.first_step;
     const auto frames_started = std::chrono::steady_clock::now();
     for (std::size_t f = 0; f < frame_count; ++f) {
         interrupts.check();
-        const auto started = std::chrono::steady_clock::now();
-        const temporal::CoherentSequence::Frame frame = sequence.next();
-        const std::vector<std::uint8_t>& flags = *frame.flags;
-        // A step held (none, between report steps) uploads nothing: the same values and primaries.
-        if (frame.values_changed) renderer.set_colouring(*frame.values, label);
-        // --primaries none: the volumes alone cut, whatever the steps' values select.
-        if (!settings.primaries && f == 0) renderer.select(pipeline::Primaries::none());
-        if (settings.primaries && (f == 0 || flags != previous_flags)) renderer.select(flags);
-        // The report step shown (the one held until the next is reached) has its wells.
-        const auto wells_step = std::size_t(frame.time_step);
-        if (f == 0 || step_wells.changes(shown_wells_step, wells_step)) renderer.set_wells(step_wells.at(wells_step));
-        shown_wells_step = wells_step;
-        pipeline::OrbitPose pose = scene.camera_pose();
-        if (frame_count > 1) pose.azimuth_deg += float(options.orbit_deg * double(f) / double(frame_count - 1));
-        const float bar_width = renderer.status(settings).colour_bar_reserved_width;
-        const pipeline::Camera camera = pipeline::make_orbit_camera(renderer.frame(), pose, scene.width, scene.height, bar_width);
-        if (scene.freeze_pose && f == 0)
-            renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *scene.freeze_pose, scene.width, scene.height, bar_width));
-        const double upload_ms = milliseconds_since(started);
-        // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
-        const pipeline::FrameSettings frame_settings = opened_to(settings, frame.cut_opening);
-        const double draw_ms = renderer.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
-        gl::RgbaImage image = pipeline::FrameReadback(renderer).read_image();
-        double png_ms = 0;  // an extra output, left out of the frame's time
-        if (!options.frames_dir.empty()) {
-            const auto png_started = std::chrono::steady_clock::now();
-            char name[32];
-            std::snprintf(name, sizeof name, "frame_%05zu.png", f);
-            gl::write_png(image, std::filesystem::path(options.frames_dir) / name);
-            png_ms = milliseconds_since(png_started);
-        }
-        // Waits only while ffmpeg still takes the frame before: encoding overlaps the next frame.
-        encoder.write_frame(std::move(image.pixels));
-        const double ms = milliseconds_since(started) - png_ms;
-
-        json entry{{"frame", f}, {"time_step", frame.time_step}, {"ms", ms},
-                   {"ms_by_part", {{"upload", upload_ms}, {"draw", draw_ms}, {"readback_and_encoder", ms - upload_ms - draw_ms}}},
-                   {"primary_cells", frame.primary_cells}, {"cut_opening", frame.cut_opening}};
-        if (options.time_against_render)
-            entry["render_ms"] = renderer.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
-        if (f > 0) {
-            const metrics::PopCounts pops = metrics::count_pops(previous_flags, flags);
-            entry["pop_in"] = pops.in;
-            entry["pop_out"] = pops.out;
-        }
-        if (options.metrics) add_image_metrics(entry, renderer, primaries_only, camera, previous_states);
-        previous_flags = flags;
-        frames.push_back(std::move(entry));
+        frames.push_back(loop.draw(f, sequence.next()));
         progress.show(f + 1);
     }
     progress.end();
@@ -256,34 +360,11 @@ int animate(const AnimateOptions& options) {
     interrupts.check();
     staged.commit();
     const double frames_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frames_started).count();
-
-    if (!options.stats.empty()) {
-        json stats;
-        stats["frames"] = frames;
-        put_frame_summaries(stats, frames, finish_ms);
-        stats["frames_wall_s"] = frames_seconds;  // every frame, its metrics and the encoding to the end
-        stats["encoder_finish_ms"] = finish_ms;   // after the last frame: ffmpeg's queue and index
-        stats["frame_count"] = frame_count;
-        stats["report_steps_read"] = sequence.steps_read();
-        stats.update(run_context_json(current_gl_device(context->platform())));
-        stats["size"] = {scene.width, scene.height};
-        stats["cells"] = grid.cell_count();
-        stats["active_cells"] = grid.active_count();
-        stats["model"] = model.description;
-        stats["model_load_s"] = model.load_seconds;
-        stats["renderer_setup_s"] = setup_seconds;
-        stats["strategy"] = {{"requested", scene.settings.strategy}, {"drawn", settings.strategy},
-                             {"largest_step_primaries", survey.most_primaries}};
-        stats["property"] = {{"name", scene.property}, {"colour_range", {colour_range.min, colour_range.max}},
-                             {"primary_range", {primary_range.min, primary_range.max}}, {"hysteresis_band", band},
-                             {"report_steps", source.step_count()}};
-        stats["video"] = {{"codec", "h264"}, {"pixel_format", "yuv420p"}, {"encoder", "ffmpeg libx264"},
-                          {"preset", video.preset}, {"crf", video.crf}, {"fps", video.fps}};
-        stats["configuration"] = describe(options);
-        stats["configuration"]["cut_volumes"] = cut_volumes.describe();
-        stats["memory_bytes"] = {{"peak_resident", run_context::proc_status_bytes("VmHWM")}};
-        io::write_file(options.stats, stats.dump(2) + '\n');
-    }
+    if (!options.stats.empty())
+        write_animation_stats(options, std::move(frames),
+                              {model, ranges, source, settings, video, cut_volumes, setup_seconds, frames_seconds, finish_ms,
+                               sequence.steps_read()},
+                              current_gl_device(context->platform()));
     std::cout << "cutaway animate: " << options.out << " (" << frame_count << " frames, steps " << timeline.first_step << "-"
               << timeline.last_step << ", " << temporal::to_string(coherence) << ", " << frames_seconds << " s)\n";
     return 0;
