@@ -33,10 +33,13 @@ std::vector<std::pair<float, float>> candidate_offsets(float w, float h, float g
 
 }  // namespace
 
-float label_text_scale(int height) { return std::max(1.0f, 0.0201f * float(height) / cap_height_px); }
+float label_text_scale(int height, float min_text_px) {
+    return std::max(1.0f, std::max(0.0201f * float(height), min_text_px) / cap_height_px);
+}
 
-std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests, int width, int height, float reserved_right) {
-    const float s = label_text_scale(height);
+std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests, int width, int height, float reserved_right,
+                                      float min_text_px) {
+    const float s = label_text_scale(height, min_text_px);
     const float pad = 2 * s, gap = 3 * s;
     const float x1 = std::max(1.0f, float(width) - reserved_right), y1 = float(height);
     std::vector<PlacedLabel> placed;

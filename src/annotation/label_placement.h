@@ -22,14 +22,14 @@ struct PlacedLabel {
 };
 
 /// Text scale of labels on an image `height` pixels tall: capitals 2% of the height (as the colour
-/// bar's), never below stb's 7 px.
-float label_text_scale(int height);
+/// bar's) or `min_text_px` if larger (the colour bar's --text-height), never below stb's 7 px.
+float label_text_scale(int height, float min_text_px = 0);
 
 /// Places each request whose anchor lies inside the `width` x `height` image (others get no
 /// label): the first of a ring of positions around the anchor, at growing distances, whose box
 /// lies inside the image (left of its `reserved_right` columns) and overlaps no label placed
 /// before; if none does, the nearest one inside the image. Every box returned lies inside the image.
 std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests, int width, int height,
-                                      float reserved_right = 0);
+                                      float reserved_right = 0, float min_text_px = 0);
 
 }  // namespace cutaway::annotation

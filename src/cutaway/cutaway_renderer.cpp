@@ -420,7 +420,8 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
         empty_vertex_array_.bind();
         return;
     case FramePass::well_labels:
-        well_labels_.draw(post_.final_framebuffer, wells_.heads(), f.camera, colour_bar_reserved_width(f.settings));
+        well_labels_.draw(post_.final_framebuffer, wells_.heads(), f.camera, colour_bar_reserved_width(f.settings),
+                          label_.min_text_px);
         empty_vertex_array_.bind();
         return;
     }

@@ -17,7 +17,7 @@ glm::vec2 nearest_on(const annotation::PixelRect& box, float x, float y) {
 }  // namespace
 
 std::vector<annotation::PlacedLabel> well_label_layout(const std::vector<WellHead>& heads, const Camera& camera,
-                                                       float reserved_right) {
+                                                       float reserved_right, float min_text_px) {
     std::vector<annotation::LabelRequest> requests;
     for (const WellHead& head : heads) {
         const glm::vec4 clip = camera.view_projection() * glm::vec4(head.position, 1.0f);
@@ -25,13 +25,13 @@ std::vector<annotation::PlacedLabel> well_label_layout(const std::vector<WellHea
         const glm::vec2 ndc = clip.w > 0 ? glm::vec2(clip) / clip.w : glm::vec2(-2.0f);
         requests.push_back({head.name, (0.5f * ndc.x + 0.5f) * float(camera.width), (0.5f - 0.5f * ndc.y) * float(camera.height)});
     }
-    return annotation::place_labels(requests, camera.width, camera.height, reserved_right);
+    return annotation::place_labels(requests, camera.width, camera.height, reserved_right, min_text_px);
 }
 
 void WellLabels::draw(const gl::Framebuffer& target, const std::vector<WellHead>& heads, const Camera& camera,
-                      float reserved_right) {
-    const float scale = annotation::label_text_scale(camera.height);
-    for (const annotation::PlacedLabel& label : well_label_layout(heads, camera, reserved_right)) {
+                      float reserved_right, float min_text_px) {
+    const float scale = annotation::label_text_scale(camera.height, min_text_px);
+    for (const annotation::PlacedLabel& label : well_label_layout(heads, camera, reserved_right, min_text_px)) {
         // Text in the well's colour, darkened to read on the light box.
         const glm::vec3 ink = 0.75f * heads[label.request].colour;
         const Rgba8 text = {channel(ink.r), channel(ink.g), channel(ink.b), 255};

@@ -12,15 +12,16 @@ namespace cutaway::pipeline {
 
 /// Where `heads` project in `camera`'s image (pixels, y down from the top), and each label's box,
 /// for the wellheads in front of the camera and inside the image; `reserved_right`: columns kept
-/// for the colour bar.
+/// for the colour bar; `min_text_px`: the labels' capitals at least this tall (the colour bar's).
 std::vector<annotation::PlacedLabel> well_label_layout(const std::vector<WellHead>& heads, const Camera& camera,
-                                                       float reserved_right);
+                                                       float reserved_right, float min_text_px = 0);
 
 class WellLabels {
 public:
     explicit WellLabels(const gl::ShaderLibrary& shaders) : batch_(shaders) {}
     /// Draws the labels of well_label_layout onto `target`.
-    void draw(const gl::Framebuffer& target, const std::vector<WellHead>& heads, const Camera& camera, float reserved_right);
+    void draw(const gl::Framebuffer& target, const std::vector<WellHead>& heads, const Camera& camera, float reserved_right,
+              float min_text_px = 0);
 
 private:
     OverlayBatch batch_;
