@@ -65,9 +65,16 @@ nlohmann::json CutVolumeSet::describe() const {
 
 CutVolumeSet load_cut_volumes(const CutVolumeOptions& o, const pipeline::ModelFrame& frame,
                               const volumes::WellPaths& wells, std::size_t memory_limit_bytes) {
+    std::vector<volumes::CutVolume> list;
+    if (!o.file.empty()) list = volumes::read_cut_volumes_file(o.file, memory_limit_bytes);
+    list.insert(list.end(), o.parsed.begin(), o.parsed.end());
+    return build_cut_volumes(std::move(list), frame, wells, memory_limit_bytes);
+}
+
+CutVolumeSet build_cut_volumes(std::vector<volumes::CutVolume> list, const pipeline::ModelFrame& frame,
+                               const volumes::WellPaths& wells, std::size_t memory_limit_bytes) {
     CutVolumeSet set;
-    if (!o.file.empty()) set.volumes = volumes::read_cut_volumes_file(o.file, memory_limit_bytes);
-    set.volumes.insert(set.volumes.end(), o.parsed.begin(), o.parsed.end());
+    set.volumes = std::move(list);
     // Render x and y are the model's, shifted: their extents are the model's.
     grid::Box3 bounds;
     bounds.extend(grid::Point3{frame.render_min.x, frame.render_min.y, 0});

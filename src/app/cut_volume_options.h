@@ -48,6 +48,10 @@ struct CutVolumeSet {
 /// Reads --cut-volumes and builds every volume's mesh. `wells`: the model's well paths (empty
 /// while wells are not read: a `well:` volume is then refused as unknown); `frame`: the model's,
 /// for the default well radius. Throws std::invalid_argument naming the spec, file or field.
+/// `list` with every volume's mesh, as load_cut_volumes builds them (the viewer's edited list).
+CutVolumeSet build_cut_volumes(std::vector<volumes::CutVolume> list, const pipeline::ModelFrame& frame,
+                               const volumes::WellPaths& wells, std::size_t memory_limit_bytes);
+
 CutVolumeSet load_cut_volumes(const CutVolumeOptions& options, const pipeline::ModelFrame& frame,
                               const volumes::WellPaths& wells, std::size_t memory_limit_bytes);
 

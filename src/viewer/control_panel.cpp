@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
+#include <variant>
 #include <imgui.h>
 
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/setting_names.h"
 #include "cutaway/temporal/coherence.h"
+#include "volumes/cut_volume.h"
 
 namespace cutaway::viewer {
 namespace {
@@ -154,6 +157,86 @@ unsigned view_section(ViewerState& state, const PanelInfo& info, PanelRequests& 
     return changes;
 }
 
+/// Edits one volume's numbers (drag: `speed` model units per pixel); true when one changed. A mesh
+/// is shown by its file only.
+bool edit_volume(volumes::CutVolume& volume, double speed) {
+    const auto drag3 = [speed](const char* label, grid::Point3& p) {
+        return ImGui::DragScalarN(label, ImGuiDataType_Double, &p.x, 3, float(speed), nullptr, nullptr, "%.1f");
+    };
+    const double least = 0.0;
+    struct Editor {
+        decltype(drag3)& drag;
+        double speed;
+        const double& least;
+        bool operator()(volumes::BoxVolume& b) const { return drag("min", b.min) | drag("max", b.max); }
+        bool operator()(volumes::CylinderVolume& c) const {
+            return drag("from", c.from) | drag("to", c.to) |
+                   ImGui::DragScalar("radius", ImGuiDataType_Double, &c.radius, float(speed), &least, nullptr, "%.1f");
+        }
+        bool operator()(volumes::WellVolume& w) const {
+            ImGui::Text("well %s", w.name.c_str());
+            double radius = w.radius.value_or(0);
+            if (!ImGui::DragScalar("radius (0: default)", ImGuiDataType_Double, &radius, float(speed), &least, nullptr, "%.1f"))
+                return false;
+            w.radius = radius > 0 ? std::optional<double>(radius) : std::nullopt;
+            return true;
+        }
+        bool operator()(volumes::MeshVolume& m) const {
+            ImGui::Text("mesh %s", m.file.c_str());
+            return false;
+        }
+    };
+    return std::visit(Editor{drag3, speed, least}, volume);
+}
+
+/// The cut volumes: each one's numbers and a remove button; a box, a cylinder or a cut around a
+/// well added at the model's centre; the list saved to or loaded from a JSON file (the
+/// --cut-volumes format, so `render --cut-volumes FILE` draws the same cut headless).
+unsigned volumes_section(ViewerState& state, const ViewerScene& scene, PanelRequests& requests) {
+    const grid::Box3& b = scene.bounds();
+    const grid::Point3 centre{0.5 * (b.min.x + b.max.x), 0.5 * (b.min.y + b.max.y), 0.5 * (b.min.z + b.max.z)};
+    const grid::Point3 quarter{0.25 * (b.max.x - b.min.x), 0.25 * (b.max.y - b.min.y), 0.25 * (b.max.z - b.min.z)};
+    const double speed = std::max(quarter.x, quarter.y) / 50;
+    unsigned changes = change_none;
+    for (std::size_t i = 0; i < state.cut_volumes.size(); ++i) {
+        ImGui::PushID(int(i));
+        ImGui::Text("%zu: %s", i + 1, volumes::kind_name(state.cut_volumes[i]));
+        ImGui::SameLine();
+        const bool removed = ImGui::SmallButton("remove");
+        if (!removed && edit_volume(state.cut_volumes[i], speed)) changes |= change_cut_volumes;
+        ImGui::PopID();
+        if (removed) {
+            state.cut_volumes.erase(state.cut_volumes.begin() + std::ptrdiff_t(i));
+            return changes | change_cut_volumes;
+        }
+    }
+    if (ImGui::Button("add box")) {
+        state.cut_volumes.push_back(volumes::BoxVolume{{centre.x - quarter.x, centre.y - quarter.y, b.min.z},
+                                                       {centre.x + quarter.x, centre.y + quarter.y, centre.z}});
+        changes |= change_cut_volumes;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("add cylinder")) {
+        state.cut_volumes.push_back(volumes::CylinderVolume{{centre.x, centre.y, b.min.z}, {centre.x, centre.y, b.max.z},
+                                                            0.5 * std::min(quarter.x, quarter.y)});
+        changes |= change_cut_volumes;
+    }
+    for (const std::string& name : scene.well_names()) {
+        ImGui::SameLine();
+        if (ImGui::SmallButton(("cut " + name).c_str())) {
+            state.cut_volumes.push_back(volumes::WellVolume{name, std::nullopt});
+            changes |= change_cut_volumes;
+        }
+    }
+    char file[512];
+    std::snprintf(file, sizeof file, "%s", state.cut_volumes_file.c_str());
+    if (ImGui::InputText("file", file, sizeof file)) state.cut_volumes_file = file;
+    if (ImGui::Button("save")) requests.volumes = {"save", state.cut_volumes_file};
+    ImGui::SameLine();
+    if (ImGui::Button("load")) requests.volumes = {"load", state.cut_volumes_file};
+    return changes;
+}
+
 }  // namespace
 
 unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const PanelInfo& info,
@@ -169,6 +252,7 @@ unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const 
         if (ImGui::CollapsingHeader("property and primaries", ImGuiTreeNodeFlags_DefaultOpen))
             changes |= property_section(state, scene);
         if (ImGui::CollapsingHeader("cut", ImGuiTreeNodeFlags_DefaultOpen)) changes |= cut_section(state);
+        if (ImGui::CollapsingHeader("cut volumes")) changes |= volumes_section(state, scene, requests);
         if (ImGui::CollapsingHeader("lines and post-processing")) changes |= lines_and_post_section(state);
         if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen)) changes |= view_section(state, info, requests);
     }

@@ -3,6 +3,7 @@
 // step, play with its coherence and frames per step, apertures, strategy, border mode, mean filter, SSAO, saturation, silhouette,
 // internal lines, freeze view, render scale, camera reset and screenshot.
 #include <string>
+#include <vector>
 
 #include "viewer/viewer_scene.h"
 #include "viewer/viewer_state.h"
@@ -21,6 +22,7 @@ struct PanelInfo {
 struct PanelRequests {
     bool screenshot = false;
     bool reset_camera = false;
+    std::vector<std::string> volumes;  ///< a `volumes` command (add SPEC, clear, save FILE, load FILE), or empty
 };
 
 /// Draws the panel; edits `state` and returns the Change bits of what was edited.

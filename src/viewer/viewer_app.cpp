@@ -21,6 +21,8 @@
 #include "viewer/step_clock.h"
 #include "viewer/step_overlay.h"
 #include "viewer/timing_overlay.h"
+#include "volumes/cut_volume_json.h"
+#include "volumes/cut_volume_spec.h"
 
 namespace cutaway::viewer {
 namespace {
@@ -99,6 +101,25 @@ ViewerApp::ViewerApp(ViewerOptions options)
                                            shaders_, state_.options, render_width(), render_height());
     if (scene_->primary_count() == 0)
         info_.message = "no cell lies in the primary range; showing the context only";
+    state_.cut_volumes = scene_->cut_volumes();
+}
+
+unsigned ViewerApp::volume_command(const std::vector<std::string>& args) {
+    const std::string& verb = args.at(0);
+    if (verb == "add") {
+        state_.cut_volumes.push_back(volumes::parse_cut_volume_spec(args.at(1)));
+    } else if (verb == "clear") {
+        state_.cut_volumes.clear();
+    } else if (verb == "save") {
+        io::write_file(args.at(1), volumes::cut_volumes_document(state_.cut_volumes).dump(2) + '\n');
+        info_.message = "cut volumes saved to " + args.at(1);
+        return change_none;
+    } else if (verb == "load") {
+        state_.cut_volumes = volumes::read_cut_volumes_file(args.at(1), state_.options.model_memory_limit_bytes());
+    } else {
+        throw std::invalid_argument("volumes " + verb + ": expected add SPEC, clear, save FILE or load FILE");
+    }
+    return change_cut_volumes;
 }
 
 float ViewerApp::render_factor() const {
@@ -153,6 +174,7 @@ bool ViewerApp::frame(bool last_frame_due) {
         draw_timing_overlay(timings_, colour_bar_share);
     }
     if (requests.reset_camera) changes |= press_key("R");
+    if (!requests.volumes.empty()) changes |= panel_volume_command(requests.volumes);
     if (requests.screenshot) changes |= press_key("F12");
     if (window_.framebuffer_width() != window_fb_width_ || window_.framebuffer_height() != window_fb_height_) {
         window_fb_width_ = window_.framebuffer_width();
@@ -202,6 +224,15 @@ unsigned ViewerApp::handle_keys() {
         if (!name.empty() && !typing) changes |= press_key(name);
     }
     return changes;
+}
+
+unsigned ViewerApp::panel_volume_command(const std::vector<std::string>& args) {
+    try {
+        return volume_command(args);
+    } catch (const std::exception& error) {  // a file that cannot be read or written: said in the panel
+        info_.message = error.what();
+        return change_none;
+    }
 }
 
 unsigned ViewerApp::press_key(const std::string& name) {
@@ -272,6 +303,7 @@ bool ViewerApp::run_step(const ScriptStep& step, unsigned& changes) {
         state_.frames_per_step = std::stoi(step.args.at(1));
     }
     else if (step.action == "ui") state_.ui_visible = on_off(step.args.at(0));
+    else if (step.action == "volumes") changes |= volume_command(step.args);
     else if (step.action == "screenshot") {
         screenshot_due_ = step.args.at(0);
         changes |= change_frame;
@@ -327,6 +359,15 @@ void ViewerApp::apply(unsigned changes) {
         } catch (const std::invalid_argument& error) {
             if (script_) throw;
             info_.message = error.what();  // the panel shows it; the previous selection stays
+        }
+    }
+    if (changes & change_cut_volumes) {
+        try {
+            scene_->set_cut_volumes(state_.cut_volumes);
+        } catch (const std::invalid_argument& error) {
+            if (script_) throw;
+            info_.message = error.what();  // the panel shows it; the volumes drawn stay
+            state_.cut_volumes = scene_->cut_volumes();
         }
     }
     needs_render_ = true;  // a new size (change_size) is taken before the frame is drawn

@@ -35,6 +35,11 @@ private:
     bool frame(bool last_frame_due);
     unsigned handle_keys();
     unsigned press_key(const std::string& name);
+    /// `volumes add SPEC | clear | save FILE | load FILE` (script and panel): the Change bits.
+    /// Throws std::invalid_argument (a bad spec or file) and io errors.
+    unsigned volume_command(const std::vector<std::string>& args);
+    /// volume_command with its errors shown in the panel instead.
+    unsigned panel_volume_command(const std::vector<std::string>& args);
     unsigned mouse_camera();
     bool run_step(const ScriptStep& step, unsigned& changes);
     unsigned advance_play();

@@ -5,6 +5,7 @@
 #include "app/frame_wells.h"
 #include "app/step_value_sources.h"
 #include "cutaway/camera.h"
+#include "grid/cell_geometry.h"
 #include "grid/primary_selection.h"
 
 namespace cutaway::viewer {
@@ -16,7 +17,8 @@ ViewerScene::ViewerScene(app::LoadedModel model, const gl::ShaderLibrary& shader
       z_scale_(options.z_scale),
       primaries_(options.frame_settings().primaries),
       volume_options_(options.cut_volumes),
-      memory_limit_bytes_(options.model_memory_limit_bytes()) {
+      memory_limit_bytes_(options.model_memory_limit_bytes()),
+      bounds_(grid::grid_bounds(model_.grid)) {
     select(options);
     rebuild_renderer(width, height, options.frame_settings());
 }
@@ -64,6 +66,18 @@ void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameS
     // previous renderer stays.
     renderer->render(settings, pipeline::make_orbit_camera(renderer->frame(), {}, width, height));
     renderer_ = std::move(renderer);
+}
+
+void ViewerScene::set_cut_volumes(const std::vector<volumes::CutVolume>& list) {
+    app::CutVolumeSet set = app::build_cut_volumes(list, renderer_->frame(), volume_wells_, memory_limit_bytes_);
+    renderer_->set_cut_volumes(set.meshes);
+    cut_volumes_ = std::move(set);
+}
+
+std::vector<std::string> ViewerScene::well_names() const {
+    std::vector<std::string> names;
+    for (const auto& [name, path] : volume_wells_) names.push_back(name);
+    return names;
 }
 
 void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {

@@ -33,6 +33,14 @@ public:
     const grid::CornerPointGrid& grid() const { return model_.grid; }
     const std::string& description() const { return model_.description; }
     const app::PropertyChoice& property() const { return property_; }
+    /// The cut volumes drawn (--cut-volume/--cut-volumes, then as edited).
+    const std::vector<volumes::CutVolume>& cut_volumes() const { return cut_volumes_->volumes; }
+    /// Replaces the cut volumes (throws std::invalid_argument naming the volume; the old ones stay).
+    void set_cut_volumes(const std::vector<volumes::CutVolume>& list);
+    /// The wells a `well:` volume can cut around, by name.
+    std::vector<std::string> well_names() const;
+    /// The model's bounds in model coordinates (where new volumes are placed).
+    const grid::Box3& bounds() const { return bounds_; }
     std::size_t primary_count() const;
     const PropertyHistogram& histogram() const { return histogram_; }
     /// Time steps of the property shown (0 for a static one).
@@ -61,6 +69,7 @@ private:
     bool primaries_ = true;  ///< false: --primaries none
     app::CutVolumeOptions volume_options_;
     std::size_t memory_limit_bytes_ = 0;
+    grid::Box3 bounds_;
     std::optional<app::CutVolumeSet> cut_volumes_;  ///< built with the first renderer (its frame)
     std::vector<float> options_colour_range_;      ///< --colour-range of the last selection (empty: none)
     annotation::ColourBarLabel playing_colours_;   ///< the played frames' colour scale (player())

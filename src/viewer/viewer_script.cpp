@@ -13,6 +13,7 @@
 
 #include "io/input_file.h"
 #include "io/path_text.h"
+#include "volumes/cut_volume_spec.h"
 
 namespace cutaway::viewer {
 
@@ -122,6 +123,25 @@ void check_playback(Args& args) {
         throw LineProblem{"FRAMES_PER_STEP '" + args[1] + "' is not a whole number"};
 }
 
+void check_volumes(Args& args) {
+    if (args.empty()) throw LineProblem{"expected add SPEC, clear, save FILE or load FILE"};
+    const std::string& verb = args[0];
+    if (verb == "clear") {
+        if (args.size() != 1) throw LineProblem{"clear takes no argument"};
+    } else if (verb == "add" || verb == "save" || verb == "load") {
+        if (args.size() != 2) throw LineProblem{verb + " takes one argument"};
+        if (verb == "add") {
+            try {
+                volumes::parse_cut_volume_spec(args[1]);
+            } catch (const std::invalid_argument& error) {
+                throw LineProblem{error.what()};
+            }
+        }
+    } else {
+        throw LineProblem{"'" + verb + "' is none of add, clear, save, load"};
+    }
+}
+
 void check_screenshot(Args& args) { require_count(args, 1); }
 
 void check_quit(Args& args) { require_count(args, 0); }
@@ -133,7 +153,7 @@ struct ActionRule {
     void (*check)(Args& args);  ///< throws LineProblem; may normalise args
 };
 
-constexpr std::array<ActionRule, 15> action_rules{{
+constexpr std::array<ActionRule, 16> action_rules{{
     {"wait", "wait N (whole number of frames, 0..100000)", "render N frames before the next action", check_wait},
     {"sleep", "sleep SECONDS (0..3600)", "keep drawing for SECONDS of wall clock before the next action", check_sleep},
     {"orbit", "orbit DAZ DEL (degrees)", "add DAZ to the azimuth and DEL to the elevation", check_orbit},
@@ -153,6 +173,8 @@ constexpr std::array<ActionRule, 15> action_rules{{
      "how play moves between report steps: coherence (as cutaway animate's) and frames from one step to the next",
      check_playback},
     {"ui", "ui on|off", "show or hide the panel", check_on_off},
+    {"volumes", "volumes add SPEC | clear | save FILE | load FILE",
+     "edit the cut volumes as the panel does (SPEC as --cut-volume's; FILE as --cut-volumes')", check_volumes},
     {"screenshot", "screenshot FILE", "save the next frame as a PNG", check_screenshot},
     {"quit", "quit (no arguments)", "close the viewer", check_quit},
 }};

@@ -3,9 +3,11 @@
 // `cutaway render` takes (RenderOptions), so a view can be reproduced headless with the same flags.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/render_options.h"
 #include "cutaway/camera.h"
+#include "volumes/cut_volume.h"
 
 namespace cutaway::viewer {
 
@@ -22,6 +24,10 @@ struct ViewerState {
     /// resolution.h); the full size once it stops. 0: always the full size.
     float interaction_fps = 10;
     bool script_drag = false;                      ///< a script's `drag on`: the view is moving
+    /// The cut volumes being edited (the panel's and a script's `volumes`); taken by the scene on
+    /// change_cut_volumes. Loaded from the scene at start.
+    std::vector<volumes::CutVolume> cut_volumes;
+    std::string cut_volumes_file = "cut_volumes.json";  ///< where the panel saves and loads them
 };
 
 /// What a change to the state invalidates, from cheapest to dearest.
@@ -30,6 +36,7 @@ enum Change : unsigned {
     change_frame = 1,      ///< re-render with the new settings or camera
     change_selection = 2,  ///< property, step or range: new colouring and primaries
     change_size = 4,       ///< render size: the renderer's per-pixel targets are reallocated
+    change_cut_volumes = 8,  ///< the cut volumes: their meshes built and uploaded again
 };
 
 }  // namespace cutaway::viewer

@@ -122,6 +122,9 @@ const RefusedCase refused_cases[] = {
     {"playback smooth 0\n", 1, "FRAMES_PER_STEP 0 is out of range", "playback none|smooth FRAMES_PER_STEP (1..1000)"},
     {"playback smooth 2.5\n", 1, "FRAMES_PER_STEP '2.5' is not a whole number", "playback none|smooth"},
     {"playback smooth\n", 1, "1 argument given", "playback none|smooth"},
+    {"volumes add box:0,0,0,0,1,1\n", 1, "box", "volumes add SPEC | clear | save FILE | load FILE"},
+    {"volumes drop\n", 1, "'drop' is none of add, clear, save, load", "volumes add SPEC"},
+    {"volumes save\n", 1, "save takes one argument", "volumes add SPEC"},
 };
 
 TEST(ViewerScript, EveryErrorNamesItsLineAndTheExpectedForm) {
@@ -142,7 +145,7 @@ TEST(ViewerScript, HelpListsEveryAction) {
     const std::string help = script_actions_help();
     for (const std::string& action : script_actions())
         EXPECT_NE(help.find("  " + action), std::string::npos) << action;
-    EXPECT_EQ(script_actions().size(), 15u);
+    EXPECT_EQ(script_actions().size(), 16u);
 }
 
 class ViewerScriptFileTest : public ::testing::Test {

@@ -160,6 +160,27 @@ TEST_F(ViewerWindowTest, PrimariesAppearWhereRenderPutsThem) {
     EXPECT_GE(double(both) / double(either), 0.999);
 }
 
+TEST_F(ViewerWindowTest, CutVolumesEditedInTheViewerAreSavedAndRenderedHeadlessAlike) {
+    // A box added as the panel's "add box" does (the script's volumes action), saved as the panel's
+    // "save" does: `render --cut-volumes` of that file draws the viewer's frame.
+    std::ofstream(path("volumes.txt")) << "volumes add box:1000,1000,1900,2500,2600,2150\nvolumes save "
+                                       << path("volumes.json") << "\nscreenshot " << path("view.png") << "\nquit\n";
+    const CommandResult view = run_command(view_command("--no-ui --script " + path("volumes.txt")));
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    std::ifstream saved(path("volumes.json"));
+    const nlohmann::json document = nlohmann::json::parse(saved);
+    ASSERT_EQ(document["volumes"].size(), 1u);
+    EXPECT_EQ(document["volumes"][0]["kind"], "box");
+    const CommandResult render = run_command(render_command("--cut-volumes " + path("volumes.json") + " --out " + path("render.png")));
+    ASSERT_EQ(render.exit_code, 0) << render.output;
+    const CommandResult uncut = run_command(render_command("--out " + path("uncut.png")));
+    ASSERT_EQ(uncut.exit_code, 0) << uncut.output;
+    const gl::RgbaImage viewed = gl::read_png(path("view.png"));
+    // The same rounding allowance as the still-frame test above; the box itself changes far more.
+    EXPECT_LE(differing_fraction(viewed, gl::read_png(path("render.png")), 2), 0.001);
+    EXPECT_GE(differing_fraction(viewed, gl::read_png(path("uncut.png")), 2), 0.02) << "the box cut nothing";
+}
+
 TEST_F(ViewerWindowTest, PanelAndTimingOverlayAreDrawnOverTheFrame) {
     ASSERT_EQ(run_command(view_command("--no-ui --frames 2 --screenshot " + path("plain.png"))).exit_code, 0);
     const CommandResult view = run_command(view_command("--frames 3 --screenshot " + path("ui.png")));
