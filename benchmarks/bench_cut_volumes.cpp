@@ -101,8 +101,10 @@ shapes::TriangleMesh first_injector_tube(const grid::CornerPointGrid& grid, cons
     wells::Well well{injector.name, wells::WellKind::injector, "WATER", wells::WellStatus::open, injector.column.i,
                      injector.column.j, {}};
     for (const int k : injector.column.layers) well.connections.push_back({injector.column.i, injector.column.j, k, true});
-    const std::vector<grid::Point3> path = wells::well_path(well, grid, wells::wellhead_level(grid));
-    return shapes::tube_mesh(path, volumes::default_well_radius(bounds), volumes::tube_sides);
+    // Built as `--cut-volume well:NAME` builds it (the path simplified, the default radius).
+    const volumes::WellPaths paths{{well.name, wells::well_path(well, grid, wells::wellhead_level(grid))}};
+    const volumes::VolumeBuildContext context{&paths, volumes::default_well_radius(bounds), 0};
+    return volumes::build_volume_mesh(volumes::WellVolume{well.name, std::nullopt}, context);
 }
 
 std::vector<Case> cases(const grid::CornerPointGrid& grid, const grid::Box3& b) {

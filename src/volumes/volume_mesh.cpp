@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "shapes/polyline_simplify.h"
 #include "shapes/tube_mesh.h"
 #include "volumes/mesh_file.h"
 
@@ -28,8 +29,12 @@ struct Build {
     shapes::TriangleMesh operator()(const WellVolume& w) const {
         if (!context.wells || !context.wells->count(w.name))
             throw std::invalid_argument("unknown well " + w.name + " (" + well_names(context.wells) + ")");
+        const double radius = w.radius.value_or(context.default_well_radius);
         try {
-            return shapes::tube_mesh(context.wells->at(w.name), w.radius.value_or(context.default_well_radius), tube_sides);
+            // A ring only where the path bends by more than a twentieth of the radius: stacked cells'
+            // centres are nearly in line, and every ring's triangles cost stage 1 time.
+            const std::vector<grid::Point3> path = shapes::simplify_polyline(context.wells->at(w.name), 0.05 * radius);
+            return shapes::tube_mesh(path, radius, tube_sides);
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("well " + w.name + ": " + e.what());
         }

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "shapes/polyline_simplify.h"
 #include "shapes/triangle_adjacency.h"
 #include "shapes/tube_mesh.h"
 #include "mesh_checks.h"
@@ -69,6 +70,16 @@ TEST(TriangleAdjacency, EveryEdgeOfAClosedTubeFindsItsNeighbour) {
             EXPECT_FALSE(same(across, from) || same(across, to)) << "triangle " << t << " edge " << e;
             EXPECT_FALSE(same(across, tube.triangles[t][(e + 2) % 3])) << "open edge at triangle " << t << " edge " << e;
         }
+}
+
+TEST(PolylineSimplify, DropsOnlyPointsWithinTheTolerance) {
+    // A vertical well through stacked centres 1 apart, wobbling by 0.01, then a bend of 5.
+    const std::vector<grid::Point3> path{{0, 0, 0}, {0.01, 0, 1}, {0, 0.01, 2}, {0, 0, 3}, {5, 0, 3}};
+    const std::vector<grid::Point3> kept = simplify_polyline(path, 0.05);
+    ASSERT_EQ(kept.size(), 3u);  // the wobble is within 0.05 of the straight line; the bend stays
+    EXPECT_EQ(kept[1].z, 3);
+    EXPECT_EQ(kept[1].x, 0);
+    EXPECT_EQ(simplify_polyline(path, 0.001).size(), path.size()) << "a tolerance below the wobble keeps every point";
 }
 
 TEST(TriangleAdjacency, AnOpenEdgeGetsTheTrianglesOwnThirdVertex) {
