@@ -10,6 +10,7 @@
 #include "cutaway/setting_names.h"
 #include "cutaway/temporal/coherence.h"
 #include "volumes/cut_volume.h"
+#include "wells/well_selection.h"
 
 namespace cutaway::viewer {
 namespace {
@@ -189,6 +190,15 @@ bool edit_volume(volumes::CutVolume& volume, double speed) {
     return std::visit(Editor{drag3, speed, least}, volume);
 }
 
+/// --wells with its selection set to all (`shown`) or none, its FILE kept.
+std::vector<std::string> wells_toggled(const std::vector<std::string>& values, bool shown) {
+    std::vector<std::string> toggled;
+    for (const std::string& value : values)
+        if (wells::names_a_file(value)) toggled.push_back(value);
+    toggled.push_back(shown ? "all" : "none");
+    return toggled;
+}
+
 /// The cut volumes: each one's numbers and a remove button; a box, a cylinder or a cut around a
 /// well added at the model's centre; the list saved to or loaded from a JSON file (the
 /// --cut-volumes format, so `render --cut-volumes FILE` draws the same cut headless).
@@ -198,6 +208,13 @@ unsigned volumes_section(ViewerState& state, const ViewerScene& scene, PanelRequ
     const grid::Point3 quarter{0.25 * (b.max.x - b.min.x), 0.25 * (b.max.y - b.min.y), 0.25 * (b.max.z - b.min.z)};
     const double speed = std::max(quarter.x, quarter.y) / 50;
     unsigned changes = change_none;
+    if (!scene.well_names().empty()) {
+        bool shown = wells::parse_wells_option(state.options.wells).draws();
+        if (ImGui::Checkbox("draw wells", &shown)) {
+            state.options.wells = wells_toggled(state.options.wells, shown);
+            changes |= change_selection;
+        }
+    }
     for (std::size_t i = 0; i < state.cut_volumes.size(); ++i) {
         ImGui::PushID(int(i));
         ImGui::Text("%zu: %s", i + 1, volumes::kind_name(state.cut_volumes[i]));
@@ -252,7 +269,7 @@ unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const 
         if (ImGui::CollapsingHeader("property and primaries", ImGuiTreeNodeFlags_DefaultOpen))
             changes |= property_section(state, scene);
         if (ImGui::CollapsingHeader("cut", ImGuiTreeNodeFlags_DefaultOpen)) changes |= cut_section(state);
-        if (ImGui::CollapsingHeader("cut volumes")) changes |= volumes_section(state, scene, requests);
+        if (ImGui::CollapsingHeader("cut volumes and wells")) changes |= volumes_section(state, scene, requests);
         if (ImGui::CollapsingHeader("lines and post-processing")) changes |= lines_and_post_section(state);
         if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen)) changes |= view_section(state, info, requests);
     }

@@ -30,11 +30,12 @@ void ViewerScene::select(const app::RenderOptions& options) {
         property_.owned = *std::exchange(property_.external, nullptr);
     app::hold_property(model_, options.property, options.step, options.model_memory_limit_bytes());
     app::PropertyChoice property = app::choose_property(model_.grid, options);
-    // A restart's wells change with the report step; a file's stay (read again only at the start).
-    if (wells_step_ == -2 || (options.step != wells_step_ && model_.report_steps)) {
+    // A restart's wells change with the report step; a file's stay (read again when --wells changes).
+    if (wells_step_ == -2 || (options.step != wells_step_ && model_.report_steps) || options.wells != wells_values_) {
         wells_ = app::frame_wells(model_, options.wells, options.well_radius, options.step);
         if (wells_step_ == -2) volume_wells_ = app::cut_volume_well_paths(model_, options.wells, options.step);
         wells_step_ = options.step;
+        wells_values_ = options.wells;
         if (renderer_) renderer_->set_wells(wells_);
     }
     std::optional<grid::IjkBox> box = app::choose_primary_range(model_.grid, property, options);

@@ -77,6 +77,7 @@ private:
     std::unique_ptr<pipeline::CutawayRenderer> renderer_;
     pipeline::WellSet wells_;  ///< --wells at the report step shown
     volumes::WellPaths volume_wells_;  ///< every well's path at the first step read, for `well:` volumes
+    std::vector<std::string> wells_values_;  ///< the --wells values wells_ was read with
     int wells_step_ = -2;      ///< the step wells_ belongs to (-2: none read yet)
 };
 
