@@ -18,9 +18,6 @@ struct TubeVertex {
     std::uint8_t colour[4];
 };
 
-/// Sides of a tube's cross-section: round at the few tens of pixels a tube spans.
-constexpr int tube_sides = 16;
-
 std::uint8_t channel(float value) { return std::uint8_t(glm::clamp(value, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
 }  // namespace
@@ -54,7 +51,7 @@ void WellTubes::set(const WellSet& set, const ModelFrame& frame) {
         }
         shapes::TriangleMesh mesh;
         try {
-            mesh = shapes::tube_mesh(render_path, set.radius, tube_sides);
+            mesh = shapes::tube_mesh(render_path, set.radius, shapes::tube_sides);
         } catch (const std::invalid_argument& e) {
             throw std::invalid_argument("well " + well.name + ": " + e.what());
         }

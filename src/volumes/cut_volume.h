@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "grid/point3.h"
+#include "shapes/tube_mesh.h"
 
 namespace cutaway::volumes {
 
@@ -55,9 +56,7 @@ std::string spec_text(const CutVolume& volume);
 /// mesh file. The message has no prefix: the caller names the option or file.
 void check_volume(const CutVolume& volume);
 
-/// Sides of the polygon a cylinder's or well's cross-section is made of: the tube is inscribed in
-/// the circle, so its silhouette lies within R (1 - cos(pi / sides)) = 1.9% of R inside it (the
-/// drawn well tubes have as many sides, so a cut around a well follows its tube).
-inline constexpr int tube_sides = 16;
+/// Sides of a cylinder's or well's cross-section: the drawn tubes' (shapes::tube_sides).
+inline constexpr int tube_sides = shapes::tube_sides;
 
 }  // namespace cutaway::volumes
