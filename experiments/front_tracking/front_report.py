@@ -89,15 +89,25 @@ def model_entry(case, model, steps, runs, dates):
             "context_share_at_steps": statistics.mean(at_steps) if at_steps else None,
             "colour_range": stats["property"]["colour_range"], "primary_range": stats["property"]["primary_range"],
             "hysteresis_band": stats["property"]["hysteresis_band"], "strategy": stats["strategy"],
+            "upload": _upload_per_active_cell(frames, stats["active_cells"]),
             "configuration": stats["configuration"], "size": stats["size"],
             "per_frame": {"time_step": [f["time_step"] for f in frames],
                           "cut_flicker": [f.get("cut_flicker") for f in frames],
                           "pops": [f.get("pop_in", 0) + f.get("pop_out", 0) for f in frames],
                           "primary_cells": [f["primary_cells"] for f in frames],
                           "context_share": [f.get("context_share") for f in frames],
-                          "cut_opening": [f.get("cut_opening") for f in frames]}}
+                          "cells_opening": [f.get("cells_opening") for f in frames]}}
     entry["largest_flicker"] = {mode: _largest_flicker(run["per_frame"]) for mode, run in entry["runs"].items()}
     return entry
+
+
+def _upload_per_active_cell(frames, active_cells):
+    """Bytes uploaded per active cell: the largest over the frames at report steps after the first
+    (where a step switch happens in both modes) and over all frames after the first."""
+    per_cell = [(float(f["time_step"]).is_integer(), f["upload_bytes"] / active_cells) for f in frames[1:] if "upload_bytes" in f]
+    at_steps = [b for is_step, b in per_cell if is_step]
+    return {"step_switch_max": max(at_steps) if at_steps else None,
+            "frame_max": max(b for _, b in per_cell) if per_cell else None}
 
 
 def _largest_flicker(series):
@@ -164,6 +174,11 @@ def _mark(holds):
     return "pass" if holds else "FAIL"
 
 
+def _per_model(document, parts):
+    """One bullet per model: its name and parts(entry) joined by semicolons."""
+    return [f"- {name}: " + "; ".join(parts(entry)) for name, entry in document["models"].items()]
+
+
 def _number(value, digits=4):
     if value is None:
         return "-"
@@ -211,15 +226,22 @@ def readme_body(document):
     lines += ["", f"Targets: exposure min 1.0 in both modes; none/smooth ratio of cut flicker max and of pop max at least "
                   f"{FLICKER_RATIO:g}; context share of smooth within {100 * CONTEXT_TOLERANCE:.0f}% of none's.", "",
               "Where each largest flicker happens (fractional report step, primary cells before and after):", ""]
-    lines += [f"- {name}: " + "; ".join(f"{mode} {_number(w['cut_flicker'], 3)} at step {w['time_step']:g} "
-                                         f"({w['primaries_before']} -> {w['primaries_after']} primaries)"
-                                         for mode, w in entry["largest_flicker"].items())
-              for name, entry in document["models"].items()]
+    lines += _per_model(document, lambda entry: [f"{mode} {_number(w['cut_flicker'], 3)} at step {w['time_step']:g} "
+                                                 f"({w['primaries_before']} -> {w['primaries_after']} primaries)"
+                                                 for mode, w in entry["largest_flicker"].items()])
     lines += ["", "Smooth spreads a step's many entries and exits over its frames (pops and flicker fall about as many "
-                  "times as there are frames per step) and opens the cut gradually where primaries appear from none. "
-                  "A single cell entering in a new place opens its own cone in one frame in both modes: where the "
-                  "largest flicker is such an event (a few primaries before and after), smooth cannot lower it, and "
-                  "pops of one or two cells cannot be split over frames."]
+                  "times as there are frames per step), and each cell that enters opens its own cut over a report step's frames "
+                  "(from the model's nearest depth to the cell's rear) before it is drawn as a primary; a cell that leaves "
+                  "is drawn as long after, then its cut closes. A single cell entering in a new place so flips its "
+                  "cut's cross-section a share at a time (a quarter with 4 frames per step). Pops are whole cells and "
+                  "cannot be split over frames: a 3x lower pop max needs none's to be at least 3.", "",
+                  "Upload per switch of report step (bytes per active cell, largest over the run):", ""]
+    lines += _per_model(document, lambda entry: [f"{mode} {_number(run['upload']['step_switch_max'], 3)} at report "
+                                                 f"steps, {_number(run['upload']['frame_max'], 3)} at any frame"
+                                                 for mode, run in entry["runs"].items()])
+    lines += ["", "None uploads the step's values (4 bytes per active cell) and selects the primaries on the GPU from "
+                  "them; smooth uploads the blended values every frame, the primary flags (1 bit per active cell) and "
+                  "8 bytes per cell whose cut opens or closes."]
     lines += ["",
               "## animate against render", "",
               f"{timing['model']}, {timing['size'][0]}x{timing['size'][1]}, {timing['frames']} frames, smooth, same run "
@@ -228,7 +250,7 @@ def readme_body(document):
               f"{_mark(a['holds'])}); median frame {timing['frame_ms_median']:.1f} ms against {timing['render_ms_median']:.1f} ms.",
               "", "## Files", "",
               "- `stats_MODEL_MODE.json`: each metric run's stats.json (per frame: time_step, primary_exposure, pop_in, "
-              "pop_out, cut_flicker, context_share, cut_opening, ms; summaries; configuration; machine)",
+              "pop_out, cut_flicker, context_share, cells_opening, upload_bytes, ms; summaries; configuration; machine)",
               f"- `MODEL_MODE.mp4`: the videos, {p['video']['size'][0]}x{p['video']['size'][1]}, {p['video']['fps']} fps, "
               f"crf {p['video']['crf']}",
               "- `front_dates_MODEL.png`: the front at 4 dates halfway between report steps, none above smooth",

@@ -40,14 +40,14 @@ FULL_SIZE, QUICK_SIZE = (1920, 1080), (320, 180)
 # Per model: the case, the property and its primary range (SWAT 0.5-1: the swept zone behind a
 # waterflood's front; SGAS 0.05-1: gas out of solution), the report steps animated (None: all),
 # frames per report step and size. SPE9's SWAT 0.5-1 is the issue's target; its water barely moves
-# in 900 days (the aquifer below the oil: a few single cells change), so its 90 steps take 2 frames
-# each to fit the run's time, and SPE9's moving front, the gas, is animated as well, at a smaller size.
+# in 900 days (the aquifer below the oil: a few single cells change, each opening its own cut), and
+# SPE9's moving front, the gas, is animated as well, at a smaller size to fit the run's time.
 FULL_MODELS = {
     "zaphirus": {"case": "zaphirus", "property": "SWAT", "range": (0.5, 1.0), "steps": (0, 12), "frames_per_step": 4,
                  "size": FULL_SIZE},
     "petra": {"case": "petra", "property": "SWAT", "range": (0.5, 1.0), "steps": (0, 15), "frames_per_step": 4,
               "size": FULL_SIZE},
-    "spe9": {"case": "spe9", "property": "SWAT", "range": (0.5, 1.0), "steps": None, "frames_per_step": 2,
+    "spe9": {"case": "spe9", "property": "SWAT", "range": (0.5, 1.0), "steps": None, "frames_per_step": 4,
              "size": FULL_SIZE},
     "spe9_gas": {"case": "spe9", "property": "SGAS", "range": (0.05, 1.0), "steps": None, "frames_per_step": 4,
                  "size": (960, 540)},

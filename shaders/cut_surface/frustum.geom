@@ -23,6 +23,9 @@
 // With CONSTANT_WALL_SLOPE every wall of every box rises wall_u_per_depth in u (or v) per depth
 // unit instead: equal pixel slopes, the frustums whose union the frustum-sweep strategy computes
 // exactly (tests/gl/frustum_sweep_gl_test.cpp compares the two).
+// With OPENING the back face sits `opening` of the way from where the view rays enter the model
+// to the box's back: a cut that reaches part of the way to its cell (cut_surface/opening_cut.h),
+// nothing at 0, the frustum at 1.
 // With BACK_FACE_ONLY defined only the back face is emitted: the cone-field strategies' seeds
 // (cut_surface/cut_seeds.h), the primaries' rear hull from their cell boxes.
 #include "cut_surface/wall_slope.glsl"
@@ -33,6 +36,8 @@ layout(triangle_strip, max_vertices = 20) out;
 in CellBox {
     vec4 uv_box;
     float far_depth;
+    float opening;
+    float entry_depth;
 } box[];
 
 uniform vec2 projection_scale;   // P[0][0], P[1][1] of the cut camera
@@ -56,6 +61,7 @@ void main() {
     vec2 hi = box[0].uv_box.zw + pixel_uv;
     float back = min(box[0].far_depth + back_margin, far_plane);
     float rim = min(rim_depth, back);
+    back = mix(clamp(box[0].entry_depth, rim, back), back, box[0].opening);
 #ifdef CONSTANT_WALL_SLOPE
     vec2 rim_lo = lo - vec2(wall_u_per_depth * (back - rim));
     vec2 rim_hi = hi + vec2(wall_u_per_depth * (back - rim));

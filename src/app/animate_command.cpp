@@ -32,7 +32,6 @@
 #include "cutaway/renderer_readback.h"
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
-#include "cutaway/temporal/cut_opening.h"
 #include "cutaway/temporal/step_values.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
@@ -50,8 +49,9 @@ using nlohmann::json;
 
 /// Per-cell arrays the animation holds besides the model: two report steps, their blend, the
 /// paced transition's two times and the renderer's compact copy of the colouring (4 bytes each),
-/// flags at the two steps, between them and of the frame before (1 each).
-constexpr std::size_t animation_bytes_per_cell = 6 * 4 + 4;
+/// flags at the two steps, between them, drawn and of the frame before, and the cell openings'
+/// level and history (1 each).
+constexpr std::size_t animation_bytes_per_cell = 6 * 4 + 7;
 /// Per-pixel arrays besides the render targets: the frame handed to ffmpeg and the one being
 /// read (4 bytes each), two frames' cut states (1 each).
 constexpr std::size_t animation_bytes_per_pixel = 4 * 2 + 2;
@@ -111,13 +111,6 @@ void add_image_metrics(json& entry, pipeline::CutawayRenderer& renderer, const p
     put_metric(entry, "primary_exposure", exposure.fraction, exposure.primary_pixels, "no primary pixel in the primaries-only frame");
 }
 
-/// `settings` with the cut `opening` of the way open (temporal::CutOpening, 1: as set).
-pipeline::FrameSettings opened_to(pipeline::FrameSettings settings, float opening) {
-    settings.aperture_h_deg = temporal::opened_aperture_deg(settings.aperture_h_deg, opening);
-    settings.aperture_v_deg = temporal::opened_aperture_deg(settings.aperture_v_deg, opening);
-    return settings;
-}
-
 /// Refuses what animate does not take, before any file is read.
 void check_animate_options(const AnimateOptions& options) {
     const RenderOptions& scene = options.scene;
@@ -169,9 +162,10 @@ class FrameLoop {
 public:
     FrameLoop(const AnimateOptions& options, pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
               const annotation::ColourBarLabel& label, const StepWellSets& step_wells, io::Mp4Encoder& encoder,
-              std::size_t frame_count, std::size_t first_step)
+              std::size_t frame_count, std::size_t first_step, temporal::Coherence coherence, const AnimationRanges& ranges)
         : options_(options), scene_(options.scene), renderer_(renderer), settings_(settings), label_(label),
-          step_wells_(step_wells), encoder_(encoder), frame_count_(frame_count), shown_wells_step_(first_step) {
+          step_wells_(step_wells), encoder_(encoder), frame_count_(frame_count), shown_wells_step_(first_step),
+          coherence_(coherence), primary_range_(ranges.primary_range), box_(ranges.box) {
         primaries_only_ = settings;
         primaries_only_.ssao = false;
         primaries_only_.colour_bar = false;
@@ -184,8 +178,7 @@ public:
         const pipeline::Camera camera = upload(f, frame);
         const double upload_ms = milliseconds_since(started);
         // One fence at the frame's end, as a user's frame runs (the stage times are render's job).
-        const pipeline::FrameSettings frame_settings = opened_to(settings_, frame.cut_opening);
-        const double draw_ms = renderer_.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
+        const double draw_ms = renderer_.render(settings_, camera, pipeline::Fencing::frame_only).total.wall_ms;
         gl::RgbaImage image = pipeline::FrameReadback(renderer_).read_image();
         const double png_ms = write_png_frame(f, image);  // an extra output, left out of the frame's time
         // Waits only while ffmpeg still takes the frame before: encoding overlaps the next frame.
@@ -194,9 +187,10 @@ public:
 
         json entry{{"frame", f}, {"time_step", frame.time_step}, {"ms", ms},
                    {"ms_by_part", {{"upload", upload_ms}, {"draw", draw_ms}, {"readback_and_encoder", ms - upload_ms - draw_ms}}},
-                   {"primary_cells", frame.primary_cells}, {"cut_opening", frame.cut_opening}};
+                   {"primary_cells", frame.primary_cells}, {"cells_opening", frame.openings->size()},
+                   {"upload_bytes", uploaded_bytes_}};
         if (options_.time_against_render)
-            entry["render_ms"] = renderer_.render(frame_settings, camera, pipeline::Fencing::frame_only).total.wall_ms;
+            entry["render_ms"] = renderer_.render(settings_, camera, pipeline::Fencing::frame_only).total.wall_ms;
         if (f > 0) {
             const metrics::PopCounts pops = metrics::count_pops(previous_flags_, *frame.flags);
             entry["pop_in"] = pops.in;
@@ -211,20 +205,35 @@ private:
     /// What changed since the frame before (values, primaries, wells, the camera's orbit) uploaded;
     /// the frame's camera. A step held (none, between report steps) uploads nothing.
     pipeline::Camera upload(std::size_t f, const temporal::CoherentSequence::Frame& frame) {
+        const std::size_t uploaded_before = renderer_.status(settings_).uploaded_bytes;
         if (frame.values_changed) renderer_.set_colouring(*frame.values, label_);
-        // --primaries none: the volumes alone cut, whatever the steps' values select.
-        if (!settings_.primaries && f == 0) renderer_.select(pipeline::Primaries::none());
-        if (settings_.primaries && (f == 0 || *frame.flags != previous_flags_)) renderer_.select(*frame.flags);
+        select(f, frame);
+        if (f == 0 || !frame.openings->empty() || had_openings_) renderer_.set_opening_cells(*frame.openings);
+        had_openings_ = !frame.openings->empty();
         // The report step shown (the one held until the next is reached) has its wells.
         const auto wells_step = std::size_t(frame.time_step);
         if (f == 0 || step_wells_.changes(shown_wells_step_, wells_step)) renderer_.set_wells(step_wells_.at(wells_step));
         shown_wells_step_ = wells_step;
+        uploaded_bytes_ = renderer_.status(settings_).uploaded_bytes - uploaded_before;
         pipeline::OrbitPose pose = scene_.camera_pose();
         if (frame_count_ > 1) pose.azimuth_deg += float(options_.orbit_deg * double(f) / double(frame_count_ - 1));
         const float bar_width = renderer_.status(settings_).colour_bar_reserved_width;
         if (scene_.freeze_pose && f == 0)
             renderer_.freeze(pipeline::make_orbit_camera(renderer_.frame(), *scene_.freeze_pose, scene_.width, scene_.height, bar_width));
         return pipeline::make_orbit_camera(renderer_.frame(), pose, scene_.width, scene_.height, bar_width);
+    }
+
+    /// The frame's primaries, where they changed. Under none they are the step's values in the
+    /// range, selected on the GPU from the values just uploaded (no upload of their own); under
+    /// smooth, hysteresis and pacing decide: their flags are uploaded (1 bit per active cell).
+    void select(std::size_t f, const temporal::CoherentSequence::Frame& frame) {
+        // --primaries none: the volumes alone cut, whatever the steps' values select.
+        if (!settings_.primaries) {
+            if (f == 0) renderer_.select(pipeline::Primaries::none());
+        } else if (f == 0 || *frame.flags != previous_flags_) {
+            if (coherence_ == temporal::Coherence::none) renderer_.select(pipeline::Primaries(primary_range_, box_));
+            else renderer_.select(*frame.flags);
+        }
     }
 
     /// --frames DIR: frame `f` as a PNG there; the milliseconds it took (0 without --frames).
@@ -247,8 +256,13 @@ private:
     io::Mp4Encoder& encoder_;
     std::size_t frame_count_;
     std::size_t shown_wells_step_;
+    temporal::Coherence coherence_;
+    grid::PrimaryRange primary_range_;
+    std::optional<grid::IjkBox> box_;
     std::vector<std::uint8_t> previous_flags_;
     std::vector<metrics::CutState> previous_states_;
+    bool had_openings_ = false;
+    std::size_t uploaded_bytes_ = 0;  ///< by the frame's upload
 };
 
 /// What stats.json says of the run beside its frames.
@@ -325,6 +339,9 @@ int animate(const AnimateOptions& options) {
     const CutVolumeSet cut_volumes =
         load_cut_volumes(scene.cut_volumes, renderer.frame(), volume_wells, scene.model_memory_limit_bytes());
     renderer.set_cut_volumes(cut_volumes.meshes);
+    // Smooth coherence keeps the seed strategies' cone slope: it moves every wall when any cell
+    // enters or leaves.
+    renderer.hold_cone_reference(coherence == temporal::Coherence::smooth);
     // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
     // redraws the whole cut another way at once (on petra it made the first step's largest
     // flicker). The animation keeps the one auto picks for its largest primary set.
@@ -345,7 +362,7 @@ int animate(const AnimateOptions& options) {
 
     const std::size_t frame_count = timeline.frame_count();
     ProgressBar progress("cutaway animate", frame_count, "frames");
-    FrameLoop loop(options, renderer, settings, label, step_wells, encoder, frame_count, timeline.first_step);
+    FrameLoop loop(options, renderer, settings, label, step_wells, encoder, frame_count, timeline.first_step, coherence, ranges);
     json frames = json::array();
     const auto frames_started = std::chrono::steady_clock::now();
     for (std::size_t f = 0; f < frame_count; ++f) {

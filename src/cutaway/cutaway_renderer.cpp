@@ -108,6 +108,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       mean_filter_(shaders),
       cut_resolve_(shaders),
       volume_cut_(shaders),
+      opening_cut_(shaders, frame_),
       ssao_(shaders),
       composite_(shaders),
       colour_bar_(shaders),
@@ -147,6 +148,7 @@ void CutawayRenderer::set_colouring(const std::vector<float>& values, const Colo
     std::vector<float> compact(layout_.cells.size());
     for (std::size_t c = 0; c < compact.size(); ++c) compact[c] = values[layout_.cells[c] & 0x7fffffffu];
     buffers_.set_values(compact);
+    uploaded_bytes_ += compact.size() * sizeof(float);
     label_ = label;
 }
 
@@ -157,7 +159,9 @@ float CutawayRenderer::colour_bar_reserved_width(const FrameSettings& settings) 
 void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
     if (flags.size() != grid_.cell_count())
         throw std::invalid_argument("primary flags: " + std::to_string(flags.size()) + " entries, expected one per cell");
-    selection_.select_bits(buffers_, primary_bits(layout_, flags));
+    const std::vector<std::uint32_t> bits = primary_bits(layout_, flags);
+    selection_.select_bits(buffers_, bits);
+    uploaded_bytes_ += bits.size() * sizeof(std::uint32_t);
     selection_changed();
     primary_flags_ = flags;  // known here: no read-back needed
     set_primary_centroid();
@@ -180,6 +184,7 @@ void CutawayRenderer::set_primary_centroid() {
     CentreSum centres = centroid_.centre_sum(buffers_);
     if (hooks_.sum_centres) centres = hooks_.sum_centres(centres);
     primary_centroid_ = centres.count ? glm::vec3(centres.sum / double(centres.count)) : glm::vec3(0);
+    if (hold_cone_reference_ && !held_cone_reference_ && centres.count) held_cone_reference_ = primary_centroid_;
     primaries_of_all_renderers_ = centres.count;
 }
 
@@ -202,6 +207,25 @@ void CutawayRenderer::set_cut_volumes(const std::vector<shapes::TriangleMesh>& m
     frozen_valid_ = false;
 }
 
+void CutawayRenderer::hold_cone_reference(bool hold) {
+    hold_cone_reference_ = hold;
+    held_cone_reference_.reset();
+    if (hold && primaries_of_all_renderers_ > 0) held_cone_reference_ = primary_centroid_;
+    frozen_valid_ = false;
+}
+
+void CutawayRenderer::set_opening_cells(const std::vector<temporal::OpeningCell>& cells) {
+    std::vector<CompactOpening> compact;
+    compact.reserve(cells.size());
+    for (const temporal::OpeningCell& cell : cells) {
+        if (cell.cell >= grid_.cell_count() || !grid_.actnum()[cell.cell])
+            throw std::invalid_argument("opening cell " + std::to_string(cell.cell) + ": expected an active cell");
+        compact.push_back({compact_of_cell_(cell.cell), cell.opening, cell.beside_cut});
+    }
+    opening_cut_.set_cells(compact);
+    uploaded_bytes_ += compact.size() * 2 * sizeof(std::uint32_t);
+    frozen_valid_ = false;
+}
 
 void CutawayRenderer::set_wells(const WellSet& wells) { wells_.set(wells, frame_); }
 
@@ -232,10 +256,12 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
                                  {"selection", selection_.memory_bytes()},
                                  {"exposed_surface", exposed_ ? exposed_->memory_bytes() : 0},
                                  {"cut_volumes", volume_cut_.memory_bytes()},
+                                 {"opening_cells", opening_cut_.memory_bytes()},
                                  {"wells", wells_.memory_bytes()}};
     status.last_plan = last_plan_;
     status.cut_volume_triangles = volume_cut_.triangle_count();
     status.well_heads = wells_.heads();
+    status.uploaded_bytes = uploaded_bytes_;
     return status;
 }
 
@@ -279,8 +305,11 @@ CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camer
     return {buffers_, cut_camera, glm::radians(0.5f * std::clamp(s.aperture_h_deg, 0.0f, 180.0f)),
             glm::radians(0.5f * std::clamp(s.aperture_v_deg, 0.0f, 180.0f)), s.back_margin * frame_.radius(),
             nearest_model_depth(frame_, cut_camera),
-            std::max(-(cut_camera.view * glm::vec4(primary_centroid_, 1.0f)).z, cut_camera.near_plane), s.seeds,
-            {&primary_flags_, &compact_of_cell_, grid_.dims(), selection_generation_}};
+            std::max(-(cut_camera.view * glm::vec4(held_cone_reference_.value_or(primary_centroid_), 1.0f)).z, cut_camera.near_plane),
+            s.seeds,
+            {&primary_flags_, &compact_of_cell_, grid_.dims(), selection_generation_},
+            {},
+            opening_cut_.empty() ? nullptr : &opening_cut_};
 }
 
 float CutawayRenderer::rear_margin(const Camera& camera) const {
@@ -327,6 +356,7 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
     state.frozen_cut_valid = frozen_valid_;
     state.cone_field_strategy = bool(find_cut_surface(cut_strategy(s)).cpu_reference);
     state.cut_volumes = !volume_cut_.empty();
+    state.opening_cells = !opening_cut_.empty();
     state.distributed = bool(hooks_.combine_max);
     state.screen_passes = hooks_.screen_passes;
     state.wells = !wells_.empty();
@@ -378,6 +408,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     case FramePass::clear_cut: cut_.clear(); return;
     case FramePass::strategy_cut: draw_strategy_cut(f); return;
     case FramePass::volume_cut: volume_cut_.draw(cut_inputs(f.settings, f.cut_camera), cut_); return;
+    case FramePass::opening_cut: opening_cut_.draw(cut_inputs(f.settings, f.cut_camera), cut_); return;
     case FramePass::rear_shell: rear_shell_.render(buffers_, f.cut_camera, f.plan.draw_primaries); return;
     case FramePass::combine_cut: {
         std::vector<const gl::Texture*> images;

@@ -14,6 +14,7 @@ constexpr PassInfo pass_names[] = {
     {FramePass::clear_cut, "clear_cut"},
     {FramePass::strategy_cut, "strategy_cut"},
     {FramePass::volume_cut, "volume_cut"},
+    {FramePass::opening_cut, "opening_cut"},
     {FramePass::rear_shell, "rear_shell"},
     {FramePass::combine_cut, "combine_cut"},
     {FramePass::resolve_cut, "resolve_cut"},
@@ -45,6 +46,8 @@ void plan_cut(const FrameSettings& s, const RendererState& state, FramePlan& pla
         // Without a primary set (--primaries none) the volumes alone cut.
         if (s.primaries) cut.passes.push_back(FramePass::strategy_cut);
         if (state.cut_volumes) cut.passes.push_back(FramePass::volume_cut);
+        // The seed strategies draw the opening cells among their seeds, inside strategy_cut.
+        if (state.opening_cells && !(state.cone_field_strategy && s.primaries)) cut.passes.push_back(FramePass::opening_cut);
         if (plan.clamp_to_rear_shell) cut.passes.push_back(FramePass::rear_shell);
         if (!combined && !filtered) cut.passes.push_back(FramePass::resolve_cut);
     }
@@ -99,7 +102,8 @@ PassTargets targets_of(FramePass pass, const FramePlan& plan) {
     switch (pass) {
     case FramePass::clear_cut: return {0, target_cut_depth | target_cut_surface};
     case FramePass::strategy_cut:
-    case FramePass::volume_cut: return {0, target_cut_depth};
+    case FramePass::volume_cut:
+    case FramePass::opening_cut: return {0, target_cut_depth};
     case FramePass::rear_shell: return {0, target_rear_shell};
     case FramePass::combine_cut: {
         const std::uint32_t images = (plan.combine_cut_depth ? target_cut_depth : 0) | (plan.combine_rear_shell ? target_rear_shell : 0);

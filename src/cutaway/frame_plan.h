@@ -17,6 +17,8 @@ enum class FramePass {
     clear_cut,           ///< the cut's depth image cleared to "nothing cut"
     strategy_cut,        ///< the cut-surface strategy draws the primaries' cut (stage 1)
     volume_cut,          ///< the user's cut volumes drawn into the same cut by the same max (stage 1)
+    opening_cut,         ///< smooth coherence: cells opening or closing their cut, same max (stage 1;
+                         ///< the seed strategies draw them among their seeds instead)
     rear_shell,          ///< the model's rear shell seen from the cut camera (the clamp)
     combine_cut,         ///< distributed: per-pixel max of the cut and rear shell over all renderers
     resolve_cut,         ///< normals and rear-shell clamp of the unfiltered cut into the cut surface
@@ -60,6 +62,7 @@ struct RendererState {
     bool frozen_cut_valid = false;   ///< the frozen camera's cut is made and still holds
     bool cone_field_strategy = false;  ///< the frame's strategy combines its seeds, not its cut
     bool cut_volumes = false;        ///< cut volumes are set (CutawayRenderer::set_cut_volumes)
+    bool opening_cells = false;      ///< cells open their cut (CutawayRenderer::set_opening_cells)
     bool distributed = false;        ///< hooks combine the frame over several renderers
     bool screen_passes = true;       ///< this renderer runs SSAO and post (false: a rank other than 0)
     bool wells = false;              ///< the renderer holds well tubes to draw

@@ -15,7 +15,6 @@
 #include "gl/gl_error.h"
 #include "gl/image.h"
 #include "io/output_batch.h"
-#include "cutaway/temporal/cut_opening.h"
 #include "viewer/camera_controller.h"
 #include "viewer/option_tokens.h"
 #include "viewer/step_clock.h"
@@ -321,7 +320,7 @@ bool ViewerApp::run_step(const ScriptStep& step, unsigned& changes) {
 unsigned ViewerApp::advance_play() {
     if (!state_.playing || scene_->step_count() == 0) {
         if (!player_) return change_none;
-        player_.reset();  // paused: the frame stays, the cut opens in full
+        player_.reset();  // paused: the frame stays as played
         return change_frame;
     }
     const temporal::Coherence coherence = temporal::parse_coherence(state_.coherence);
@@ -331,18 +330,8 @@ unsigned ViewerApp::advance_play() {
     const temporal::CoherentSequence::Frame frame = player_->next();
     scene_->show(frame);
     played_time_step_ = frame.time_step;
-    played_cut_opening_ = frame.cut_opening;
     state_.options.step = int(frame.time_step);  // the step slider follows the played frames
     return change_frame;
-}
-
-pipeline::FrameSettings ViewerApp::frame_settings() const {
-    pipeline::FrameSettings settings = state_.options.frame_settings();
-    if (player_) {
-        settings.aperture_h_deg = temporal::opened_aperture_deg(settings.aperture_h_deg, played_cut_opening_);
-        settings.aperture_v_deg = temporal::opened_aperture_deg(settings.aperture_v_deg, played_cut_opening_);
-    }
-    return settings;
 }
 
 double ViewerApp::shown_time_step() const { return player_ ? played_time_step_ : double(std::max(state_.options.step, 0)); }
@@ -351,7 +340,7 @@ void ViewerApp::apply(unsigned changes) {
     if (changes == change_none) return;
     // A new step, property or range starts playing afresh from the options' step.
     if (changes & change_selection) player_.reset();
-    settings_ = frame_settings();
+    settings_ = state_.options.frame_settings();
     if (changes & change_selection) {
         try {
             scene_->select(state_.options);

@@ -43,9 +43,6 @@ private:
     unsigned mouse_camera();
     bool run_step(const ScriptStep& step, unsigned& changes);
     unsigned advance_play();
-    /// The frame's settings: the options' with, while playing, the cut as open as the played frame
-    /// has it (temporal::CutOpening).
-    pipeline::FrameSettings frame_settings() const;
     /// The fractional report step shown: the played frame's while playing, else the options' step.
     double shown_time_step() const;
     void apply(unsigned changes);
@@ -79,7 +76,6 @@ private:
     std::unique_ptr<ViewerScene> scene_;
     std::unique_ptr<StepPlayer> player_;   ///< while playing
     double played_time_step_ = 0;          ///< the played frame's fractional report step
-    float played_cut_opening_ = 1;         ///< the played frame's cut opening
     pipeline::FrameSettings settings_;
     FrameTimings timings_;
     PanelInfo info_;

@@ -51,6 +51,7 @@ void ViewerScene::select(const app::RenderOptions& options) {
 }
 
 void ViewerScene::select_primaries(pipeline::CutawayRenderer& renderer) const {
+    renderer.set_opening_cells({});  // a played frame's cells still opening belong to that frame
     if (primaries_)
         renderer.select({property_.primary_range, box_});
     else
@@ -128,6 +129,7 @@ std::unique_ptr<StepPlayer> ViewerScene::player(temporal::Coherence coherence, s
 void ViewerScene::show(const temporal::CoherentSequence::Frame& frame) {
     if (frame.values_changed) renderer_->set_colouring(*frame.values, playing_colours_);
     renderer_->select(*frame.flags);
+    renderer_->set_opening_cells(*frame.openings);
 }
 
 }  // namespace cutaway::viewer

@@ -10,7 +10,7 @@
 
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
-#include "cutaway/temporal/cut_opening.h"
+#include "cutaway/temporal/cell_openings.h"
 #include "cutaway/temporal/paced_transition.h"
 #include "cutaway/temporal/primary_tracker.h"
 #include "grid/box_grid.h"
@@ -113,36 +113,57 @@ TEST(PrimaryTracker, HysteresisKeepsAPrimaryInsideTheBand) {
     EXPECT_THROW(PrimaryTracker(grid, "V", {0.5f, 0.6f}, -1.0f), std::invalid_argument);
 }
 
-TEST(CutOpening, OpensFromTheFirstPrimariesAtOneStepPerFrameAndClosesWithoutThem) {
-    CutOpening opening(4);
-    EXPECT_EQ(opening.next(0), 0.0f);   // nothing to open for
-    EXPECT_EQ(opening.next(3), 0.0f);   // the primaries' first frame: the narrowest cut
-    EXPECT_EQ(opening.next(50), 0.25f);
-    EXPECT_EQ(opening.next(50), 0.5f);
-    EXPECT_EQ(opening.next(1), 0.75f);
-    EXPECT_EQ(opening.next(7), 1.0f);
-    EXPECT_EQ(opening.next(7), 1.0f);   // stays open while there are primaries
-    EXPECT_EQ(opening.next(0), 0.0f);
-    EXPECT_EQ(opening.next(2), 0.0f);   // opens again from the narrowest
-    EXPECT_EQ(CutOpening(1).next(0), 0.0f);
-    CutOpening from_start(4);
-    EXPECT_EQ(from_start.next(5), 1.0f);  // primaries in the first frame: nothing shown before, the cut is open
-    EXPECT_EQ(from_start.next(0), 0.0f);
-    EXPECT_EQ(from_start.next(5), 0.0f);  // later appearances open gradually again
-    EXPECT_THROW(CutOpening(0), std::invalid_argument);
+/// The openings of one frame as a map from cell to opening (cells not listed: absent).
+std::vector<float> opening_by_cell(const CellOpenings& openings, std::size_t cells) {
+    std::vector<float> by_cell(cells, 0.0f);
+    for (const OpeningCell& cell : openings.openings()) by_cell.at(cell.cell) = cell.opening;
+    return by_cell;
 }
 
-TEST(CutOpening, ApertureGrowsFromHalfToFullByEqualStepsOfCrossSection) {
-    // The ends are exact (float rounding of tan and atan only).
-    EXPECT_NEAR(opened_aperture_deg(60, 0), 30, 1e-4);
-    EXPECT_NEAR(opened_aperture_deg(60, 1), 60, 1e-4);
-    EXPECT_NEAR(opened_aperture_deg(60, 2), 60, 1e-4);  // clamped
-    // tan^2(half angle) is linear in the opening: equal steps uncover about equal areas.
-    const auto area = [](float opening) { return std::pow(std::tan(opened_aperture_deg(60, opening) * M_PI / 360), 2); };
-    EXPECT_NEAR(area(0.5f) - area(0.25f), area(1.0f) - area(0.75f), 1e-5);
-    for (float t = 0.05f; t <= 1.0f; t += 0.05f) EXPECT_GT(opened_aperture_deg(60, t), opened_aperture_deg(60, t - 0.05f));
-    // Flat walls (180): the angle itself is interpolated.
-    EXPECT_NEAR(opened_aperture_deg(180, 0.5f), 135, 1e-4);
+TEST(CellOpenings, AnEntryOpensItsCutBeforeItIsDrawnAndAnExitClosesItAfter) {
+    CellOpenings openings(4, {2, 1, 1});
+    std::vector<std::uint8_t> drawn;
+    // Cell 0 selected from the start (drawn at once), cell 1 enters at frame 1, cell 0 leaves at 2.
+    const std::vector<std::vector<std::uint8_t>> selected{{1, 0}, {1, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}};
+    const std::vector<std::vector<std::uint8_t>> expected_drawn{{1, 0}, {1, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}};
+    // sqrt(level / 4): the cross-section's share grows by a quarter per frame.
+    const float q1 = 0.5f, q2 = std::sqrt(0.5f), q3 = std::sqrt(0.75f);
+    const std::vector<std::vector<float>> expected_openings{{0, 0}, {0, q1}, {0, q2}, {0, q3}, {0, 0}, {q3, 0}, {q2, 0}, {q1, 0}, {0, 0}};
+    for (std::size_t f = 0; f < selected.size(); ++f) {
+        openings.next(selected[f], drawn);
+        EXPECT_EQ(drawn, expected_drawn[f]) << "frame " << f;
+        const std::vector<float> by_cell = opening_by_cell(openings, 2);
+        for (std::size_t c = 0; c < 2; ++c) EXPECT_NEAR(by_cell[c], expected_openings[f][c], 1e-6f) << "frame " << f << " cell " << c;
+        // A cell is never drawn while its cut is still opening or closing.
+        for (const OpeningCell& cell : openings.openings()) {
+            EXPECT_EQ(drawn[cell.cell], 0) << "frame " << f;
+            // The other cell, its face neighbour, is drawn while this one opens or closes.
+            EXPECT_TRUE(cell.beside_cut) << "frame " << f;
+        }
+    }
+}
+
+TEST(CellOpenings, ABriefSelectionIsNeverDrawnAndOneFrameToOpenChangesNothing) {
+    CellOpenings openings(4, {1, 1, 1});
+    std::vector<std::uint8_t> drawn;
+    openings.next({0}, drawn);
+    openings.next({1}, drawn);  // selected for one frame only: opens a quarter, then closes
+    ASSERT_EQ(openings.openings().size(), 1u);
+    EXPECT_FALSE(openings.openings()[0].beside_cut);  // alone: its cut opens from the model's top
+    for (int f = 0; f < 6; ++f) {
+        openings.next({0}, drawn);
+        EXPECT_EQ(drawn[0], 0) << f;
+    }
+    EXPECT_TRUE(openings.openings().empty());
+    CellOpenings at_once(1, {2, 1, 1});
+    for (const std::vector<std::uint8_t>& selected : {std::vector<std::uint8_t>{1, 0}, {0, 1}, {1, 1}}) {
+        at_once.next(selected, drawn);
+        EXPECT_EQ(drawn, selected);
+        EXPECT_TRUE(at_once.openings().empty());
+    }
+    EXPECT_THROW(CellOpenings(0, {1, 1, 1}), std::invalid_argument);
+    EXPECT_THROW(CellOpenings(CellOpenings::max_frames_to_open + 1, {1, 1, 1}), std::invalid_argument);
+    EXPECT_THROW(at_once.next({1}, drawn), std::invalid_argument);  // one flag for a grid of two cells
 }
 
 TEST(PacedTransition, ChangesSpreadEvenlyInCrossingOrderAndValuesMeetTheLimitThen) {
@@ -178,7 +199,8 @@ TEST(PacedTransition, ChangesSpreadEvenlyInCrossingOrderAndValuesMeetTheLimitThe
     EXPECT_NEAR(values[9], 0.3f, 1e-6f);
 }
 
-/// pop_max of a whole sequence (frames compared with the frame before).
+/// pop_max of a whole sequence (drawn flags compared with the frame before); `all` receives each
+/// frame's selection.
 std::size_t pop_max(CoherentSequence& sequence, std::size_t frames, std::vector<std::vector<std::uint8_t>>* all = nullptr) {
     std::vector<std::uint8_t> previous;
     std::size_t most = 0;
@@ -189,7 +211,7 @@ std::size_t pop_max(CoherentSequence& sequence, std::size_t frames, std::vector<
             most = std::max(most, pops.in + pops.out);
         }
         previous = *frame.flags;
-        if (all) all->push_back(previous);
+        if (all) all->push_back(*frame.selected);
     }
     return most;
 }
@@ -209,7 +231,7 @@ protected:
         for (std::size_t f = 0; f < timeline.frame_count(); ++f) {
             const CoherentSequence::Frame frame = sequence.next();
             if (f % timeline.frames_per_step == 0) {
-                EXPECT_EQ(*frame.flags, reference.update(source.values(f / timeline.frames_per_step))) << "frame " << f;
+                EXPECT_EQ(*frame.selected, reference.update(source.values(f / timeline.frames_per_step))) << "frame " << f;
             }
             if (check) check(f, frame);
         }
@@ -238,7 +260,7 @@ TEST_F(ShockFront, SmoothSpreadsEachStepsChangesOverItsFrames) {
     const std::size_t smooth_max = pop_max(smooth, timeline.frame_count(), &smooth_flags);
     // Every step is read once by each sequence.
     EXPECT_EQ(source.reads() - reads_before, 10u);
-    // Report steps show the same primaries (no band): smooth differs only between them.
+    // Report steps select the same primaries (no band): smooth differs only between them.
     for (std::size_t f = 0; f < timeline.frame_count(); f += per_step) EXPECT_EQ(none_flags[f], smooth_flags[f]) << f;
     // Each step's n changes come one frame in four: at most ceil(n / 4) per frame. Linear
     // interpolation alone would let them all cross within one frame (each swept cell goes from
@@ -247,23 +269,26 @@ TEST_F(ShockFront, SmoothSpreadsEachStepsChangesOverItsFrames) {
     EXPECT_LE(smooth_max, (none_max + per_step - 1) / per_step);
 }
 
-TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensTheCutGradually) {
+TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensCellsCutsBeforeDrawingThem) {
     // A band the front reaches only at step 2: the primaries appear during the animation.
     const grid::PrimaryRange late{0.75f, 0.8f};
     const AnimationTimeline timeline{0, 4, 4};
     CoherentSequence none(grid, source, timeline, Coherence::none, late, 0.0f);
     CoherentSequence smooth(grid, source, timeline, Coherence::smooth, late, 0.0f);
-    std::size_t appeared = timeline.frame_count();
+    std::size_t first_opening = timeline.frame_count(), first_drawn = timeline.frame_count();
     for (std::size_t f = 0; f < timeline.frame_count(); ++f) {
         const CoherentSequence::Frame n = none.next(), s = smooth.next();
         EXPECT_EQ(n.primary_cells, metrics::count_pops(std::vector<std::uint8_t>(n.flags->size(), 0), *n.flags).in) << f;
-        EXPECT_EQ(n.cut_opening, 1.0f) << f;  // the paper's cut: always the full aperture
-        if (s.primary_cells > 0 && appeared == timeline.frame_count()) appeared = f;
-        const float expected = s.primary_cells == 0 ? 0.0f : std::min(1.0f, float(f - appeared) / 4.0f);
-        EXPECT_EQ(s.cut_opening, expected) << f;
+        EXPECT_EQ(*n.flags, *n.selected) << f;  // the paper's cut: drawn as selected, no opening
+        EXPECT_TRUE(n.openings->empty()) << f;
+        EXPECT_EQ(s.primary_cells, grid::count_primaries(*s.flags)) << f;
+        for (const OpeningCell& cell : *s.openings) EXPECT_EQ((*s.flags)[cell.cell], 0) << f;
+        if (!s.openings->empty()) first_opening = std::min(first_opening, f);
+        if (s.primary_cells > 0) first_drawn = std::min(first_drawn, f);
     }
-    EXPECT_GT(appeared, 0u);  // the band is empty at step 0
-    EXPECT_LT(appeared, timeline.frame_count() - 5);  // and the cut opens in full before the end
+    EXPECT_GT(first_opening, 0u);  // the band is empty at step 0
+    // The first cells' cuts open over 4 frames, the last of them the first they are drawn.
+    EXPECT_EQ(first_drawn, first_opening + 3);
 }
 
 TEST_F(ShockFront, SmoothHysteresisKeepsPrimariesTheBandCovers) {

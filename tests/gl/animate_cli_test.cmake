@@ -43,7 +43,7 @@ string(JSON time GET "${stats}" frames 4 time_step)  # frame 4 of steps 1..3 at 
 if(NOT time GREATER 2.33 OR NOT time LESS 2.34)
   message(FATAL_ERROR "frames[4].time_step ${time}, expected 2.333")
 endif()
-foreach(key primary_exposure pop_in pop_out cut_flicker context_share cut_opening ms)
+foreach(key primary_exposure pop_in pop_out cut_flicker context_share cells_opening upload_bytes ms)
   string(JSON value ERROR_VARIABLE missing GET "${stats}" frames 1 ${key})
   if(missing)
     message(FATAL_ERROR "stats.json frames[1] has no ${key}")

@@ -5,6 +5,7 @@
 
 #include "cutaway/cut_surface/cell_boxes.h"
 #include "cutaway/cut_surface/cut_depth_image.h"
+#include "cutaway/cut_surface/opening_cut.h"
 #include "cutaway/face_drawing.h"
 #include "gl/uniforms.h"
 
@@ -62,6 +63,7 @@ const gl::Texture& CutSeedPass::render_on_gpu(const CutSurfaceInputs& inputs) {
         inputs.grid.draw_faces(inputs.grid.primary_faces());
         glDepthFunc(GL_LESS);
     }
+    if (inputs.openings) inputs.openings->draw_seeds(inputs, framebuffer_);
     if (inputs.combine_seeds) inputs.combine_seeds(depth_);  // a max: widening (a max filter) commutes with it
     return depth_;
 }

@@ -20,6 +20,8 @@
 
 namespace cutaway::pipeline {
 
+class OpeningCut;
+
 /// The primary selection as the CPU holds it, for strategies that precompute per selection.
 struct PrimarySelection {
     const std::vector<std::uint8_t>* flags = nullptr;              ///< one per Eclipse cell
@@ -48,6 +50,10 @@ struct CutSurfaceInputs {
     /// the seed image (cut_seeds.h, DEPTH32F, larger = farther) by the per-pixel max over all of
     /// them before any transform, so every renderer transforms the same seeds.
     std::function<void(const gl::Texture& seeds)> combine_seeds = {};
+    /// Cells whose cut opens or closes over an animation's frames (opening_cut.h), or null: the
+    /// seed strategies add them to their seeds, so their cut grows with the strategy's own slope
+    /// and equals the strategy's cut of the cell once it is a primary.
+    const OpeningCut* openings = nullptr;
 };
 
 class CutSurfaceStrategy {

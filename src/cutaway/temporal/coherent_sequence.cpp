@@ -15,12 +15,18 @@ CoherentSequence::CoherentSequence(const grid::CornerPointGrid& grid, const Step
         throw std::invalid_argument("animation steps " + std::to_string(timeline_.first_step) + ".." +
                                     std::to_string(timeline_.last_step) + ": expected FIRST <= LAST < " +
                                     std::to_string(source_.step_count()) + " and frames per step >= 1");
-    if (coherence_ == Coherence::smooth) opening_.emplace(timeline_.frames_per_step);
+    if (coherence_ == Coherence::smooth) openings_.emplace(std::min(timeline_.frames_per_step, CellOpenings::max_frames_to_open), grid.dims());
 }
 
 CoherentSequence::Frame CoherentSequence::finished(Frame frame) {
+    frame.selected = frame.flags;
+    frame.openings = &no_openings_;
+    if (openings_) {
+        openings_->next(*frame.flags, drawn_);
+        frame.flags = &drawn_;
+        frame.openings = &openings_->openings();
+    }
     frame.primary_cells = std::size_t(std::count_if(frame.flags->begin(), frame.flags->end(), [](std::uint8_t f) { return f != 0; }));
-    if (opening_) frame.cut_opening = opening_->next(frame.primary_cells);
     return frame;
 }
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cutaway/temporal/coherence.h"
-#include "cutaway/temporal/cut_opening.h"
+#include "cutaway/temporal/cell_openings.h"
 #include "cutaway/temporal/paced_transition.h"
 #include "cutaway/temporal/primary_tracker.h"
 #include "cutaway/temporal/step_values.h"
@@ -26,13 +26,16 @@ public:
     struct Frame {
         double time_step = 0;                      ///< fractional report step
         const std::vector<float>* values = nullptr;  ///< one per Eclipse cell
-        const std::vector<std::uint8_t>* flags = nullptr;  ///< one per Eclipse cell, 1 = primary
+        /// One per Eclipse cell, 1 = drawn as a primary: under none the selection; under smooth
+        /// the selection of frames_to_open - 1 frames before, each cell once its cut is open
+        /// (CellOpenings, a report step's frames to open, at most CellOpenings::max_frames_to_open).
+        const std::vector<std::uint8_t>* flags = nullptr;
+        /// One per Eclipse cell, 1 = selected by the coherence mode in this frame.
+        const std::vector<std::uint8_t>* selected = nullptr;
         bool values_changed = true;   ///< false: the same values as the frame before
         std::size_t primary_cells = 0;  ///< flags set
-        /// How far the cut is open (opened_aperture_deg): 1 under none; under smooth the cut opens
-        /// at a bounded speed where primaries appear from none (CutOpening, one report step's
-        /// frames to open).
-        float cut_opening = 1;
+        /// Under smooth, the cells whose cut is opening or closing; empty under none.
+        const std::vector<OpeningCell>* openings = nullptr;
     };
     /// The next frame (0, 1, ... timeline.frame_count() - 1); the pointers stay valid until the
     /// next call. Throws std::logic_error past the last frame.
@@ -46,7 +49,7 @@ private:
     /// the transition between them.
     void advance_to(std::size_t step);
     std::vector<float> read(std::size_t step);
-    /// Counts the frame's primaries and sets its cut opening.
+    /// Under smooth, holds back the selected cells whose cut is still opening; counts the primaries.
     Frame finished(Frame frame);
 
     const StepValueSource& source_;
@@ -60,7 +63,9 @@ private:
     std::vector<float> lower_, upper_, blended_;
     std::vector<std::uint8_t> was_, is_, flags_;  ///< flags at the lower and upper steps, and between
     PacedTransition transition_;
-    std::optional<CutOpening> opening_;  ///< smooth only
+    std::optional<CellOpenings> openings_;  ///< smooth only
+    std::vector<std::uint8_t> drawn_;       ///< the frame's drawn flags (smooth)
+    std::vector<OpeningCell> no_openings_;
     std::size_t steps_read_ = 0;
 };
 
