@@ -231,10 +231,14 @@ def readme_body(document):
                                                  for mode, w in entry["largest_flicker"].items()])
     lines += ["", "Smooth spreads a step's many entries and exits over its frames (pops and flicker fall about as many "
                   "times as there are frames per step), and each cell that enters opens its own cut over a report step's frames "
-                  "(from the model's nearest depth to the cell's rear) before it is drawn as a primary; a cell that leaves "
-                  "is drawn as long after, then its cut closes. A single cell entering in a new place so flips its "
-                  "cut's cross-section a share at a time (a quarter with 4 frames per step). Pops are whole cells and "
-                  "cannot be split over frames: a 3x lower pop max needs none's to be at least 3.", "",
+                  "and one more (from where its view rays enter the model, or beside primaries from their walls, to the "
+                  "cell's rear) before it is drawn as a primary; a cell that leaves is drawn as long after, then its cut "
+                  "closes; the seed strategies' cone slope follows the primaries' centroid a share per frame. A single "
+                  "cell entering in a new place so flips its cut a share at a time. The opening's length trades flicker "
+                  "against lag (fewer primaries drawn yet, more context at report steps); its length and pace are "
+                  "empirical choices on zaphirus and SPE9 (src/cutaway/temporal/cell_openings.h gives the alternatives "
+                  "measured). Pops are whole cells and cannot be split over frames: a 3x lower pop max needs none's to "
+                  "be at least 3.", "",
                   "Upload per switch of report step (bytes per active cell, largest over the run):", ""]
     lines += _per_model(document, lambda entry: [f"{mode} {_number(run['upload']['step_switch_max'], 3)} at report "
                                                  f"steps, {_number(run['upload']['frame_max'], 3)} at any frame"

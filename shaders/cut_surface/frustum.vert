@@ -79,7 +79,6 @@ void main() {
     if ((entry.x & 0x80000000u) != 0u) {
         vec2 drop = (hi - lo) * far_depth / max(wall_slope(hi, 1.0, wall_angle), vec2(1e-6));
         box.entry_depth = max(box.entry_depth, far_depth - max(drop.x, drop.y));
-        box.opening = pow(box.opening, 0.75);
     }
 #else
     add_cell(primary_cells[gl_VertexID]);

@@ -165,7 +165,8 @@ public:
               std::size_t frame_count, std::size_t first_step, temporal::Coherence coherence, const AnimationRanges& ranges)
         : options_(options), scene_(options.scene), renderer_(renderer), settings_(settings), label_(label),
           step_wells_(step_wells), encoder_(encoder), frame_count_(frame_count), shown_wells_step_(first_step),
-          coherence_(coherence), primary_range_(ranges.primary_range), box_(ranges.box) {
+          coherence_(coherence), primary_range_(ranges.primary_range), box_(ranges.box),
+          frames_to_open_(temporal::frames_to_open(options.frames_per_step)) {
         primaries_only_ = settings;
         primaries_only_.ssao = false;
         primaries_only_.colour_bar = false;
@@ -208,6 +209,7 @@ private:
         const std::size_t uploaded_before = renderer_.status(settings_).uploaded_bytes;
         if (frame.values_changed) renderer_.set_colouring(*frame.values, label_);
         select(f, frame);
+        if (coherence_ == temporal::Coherence::smooth) ease_cone_reference();
         if (f == 0 || !frame.openings->empty() || had_openings_) renderer_.set_opening_cells(*frame.openings);
         had_openings_ = !frame.openings->empty();
         // The report step shown (the one held until the next is reached) has its wells.
@@ -236,6 +238,18 @@ private:
         }
     }
 
+    /// Smooth: the seed strategies' cone slope follows the primaries' centroid a share per frame
+    /// (as the cells' cuts open, over temporal::frames_to_open frames), not at once: a
+    /// centroid jump (a few first primaries, a far cell entering) changed the slope of every wall.
+    void ease_cone_reference() {
+        const pipeline::RendererStatus status = renderer_.status(settings_);
+        if (status.primary_cells == 0) return;
+        const float share = 1.0f / float(frames_to_open_);
+        cone_reference_ = cone_reference_ ? *cone_reference_ + share * (status.primary_centroid - *cone_reference_)
+                                          : status.primary_centroid;
+        renderer_.set_cone_reference(cone_reference_);
+    }
+
     /// --frames DIR: frame `f` as a PNG there; the milliseconds it took (0 without --frames).
     double write_png_frame(std::size_t f, const gl::RgbaImage& image) const {
         if (options_.frames_dir.empty()) return 0;
@@ -262,6 +276,8 @@ private:
     std::vector<std::uint8_t> previous_flags_;
     std::vector<metrics::CutState> previous_states_;
     bool had_openings_ = false;
+    std::optional<glm::vec3> cone_reference_;  ///< smooth: the eased point (ease_cone_reference)
+    std::size_t frames_to_open_;
     std::size_t uploaded_bytes_ = 0;  ///< by the frame's upload
 };
 
@@ -339,9 +355,6 @@ int animate(const AnimateOptions& options) {
     const CutVolumeSet cut_volumes =
         load_cut_volumes(scene.cut_volumes, renderer.frame(), volume_wells, scene.model_memory_limit_bytes());
     renderer.set_cut_volumes(cut_volumes.meshes);
-    // Smooth coherence keeps the seed strategies' cone slope: it moves every wall when any cell
-    // enters or leaves.
-    renderer.hold_cone_reference(coherence == temporal::Coherence::smooth);
     // "auto" picks a strategy by the primary count, which changes from frame to frame: a switch
     // redraws the whole cut another way at once (on petra it made the first step's largest
     // flicker). The animation keeps the one auto picks for its largest primary set.

@@ -184,7 +184,6 @@ void CutawayRenderer::set_primary_centroid() {
     CentreSum centres = centroid_.centre_sum(buffers_);
     if (hooks_.sum_centres) centres = hooks_.sum_centres(centres);
     primary_centroid_ = centres.count ? glm::vec3(centres.sum / double(centres.count)) : glm::vec3(0);
-    if (hold_cone_reference_ && !held_cone_reference_ && centres.count) held_cone_reference_ = primary_centroid_;
     primaries_of_all_renderers_ = centres.count;
 }
 
@@ -207,10 +206,8 @@ void CutawayRenderer::set_cut_volumes(const std::vector<shapes::TriangleMesh>& m
     frozen_valid_ = false;
 }
 
-void CutawayRenderer::hold_cone_reference(bool hold) {
-    hold_cone_reference_ = hold;
-    held_cone_reference_.reset();
-    if (hold && primaries_of_all_renderers_ > 0) held_cone_reference_ = primary_centroid_;
+void CutawayRenderer::set_cone_reference(const std::optional<glm::vec3>& point) {
+    cone_reference_ = point;
     frozen_valid_ = false;
 }
 
@@ -262,6 +259,7 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
     status.cut_volume_triangles = volume_cut_.triangle_count();
     status.well_heads = wells_.heads();
     status.uploaded_bytes = uploaded_bytes_;
+    status.primary_centroid = primary_centroid_;
     return status;
 }
 
@@ -305,7 +303,7 @@ CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camer
     return {buffers_, cut_camera, glm::radians(0.5f * std::clamp(s.aperture_h_deg, 0.0f, 180.0f)),
             glm::radians(0.5f * std::clamp(s.aperture_v_deg, 0.0f, 180.0f)), s.back_margin * frame_.radius(),
             nearest_model_depth(frame_, cut_camera),
-            std::max(-(cut_camera.view * glm::vec4(held_cone_reference_.value_or(primary_centroid_), 1.0f)).z, cut_camera.near_plane),
+            std::max(-(cut_camera.view * glm::vec4(cone_reference_.value_or(primary_centroid_), 1.0f)).z, cut_camera.near_plane),
             s.seeds,
             {&primary_flags_, &compact_of_cell_, grid_.dims(), selection_generation_},
             {},

@@ -139,6 +139,7 @@ struct RendererStatus {
     /// Bytes sent to the GPU since construction by set_colouring, select (flags) and
     /// set_opening_cells: what switching a time step costs.
     std::size_t uploaded_bytes = 0;
+    glm::vec3 primary_centroid{0};  ///< render space, of this renderer's primaries (0 without any)
 };
 
 class CutawayRenderer {
@@ -183,12 +184,11 @@ public:
     /// removes them. A frozen cut is made again.
     void set_cut_volumes(const std::vector<shapes::TriangleMesh>& meshes);
 
-    /// The seed strategies match their cone slope to the frustum walls at the primaries' centroid
-    /// (cone_field_strategy.h), so every change of the selection moves every wall a little, over
-    /// the whole cut (on SPE9 one cell entering beside 2732 primaries flipped 1.8% of the model's
-    /// pixels). hold: the reference point stays where it is now (without primaries: where the
-    /// next primaries put it) until released; an animation's smooth coherence holds it.
-    void hold_cone_reference(bool hold);
+    /// The point whose depth the seed strategies match their cone slope to the frustum walls at
+    /// (cone_field_strategy.h): the primaries' centroid unless set here. A smooth animation eases
+    /// it towards the centroid (every change of the selection moves the centroid, and with the
+    /// slope every wall of the cut). std::nullopt: the centroid again.
+    void set_cone_reference(const std::optional<glm::vec3>& point);
 
     /// Cells whose cut opens or closes over an animation's frames (temporal::CellOpenings, smooth
     /// coherence): each frame's stage 1 draws their partial frustums into the cut beside the
@@ -300,8 +300,7 @@ private:
     /// the primaries' centroid), read back from the GPU at the first frame after select_range.
     std::vector<std::uint8_t> primary_flags_;
     glm::vec3 primary_centroid_{0};                 ///< render space, mean of the primary cells' centres
-    bool hold_cone_reference_ = false;               ///< hold_cone_reference
-    std::optional<glm::vec3> held_cone_reference_;   ///< the held point, once there were primaries
+    std::optional<glm::vec3> cone_reference_;       ///< set_cone_reference
     std::uint64_t primaries_of_all_renderers_ = 0;  ///< summed by the hooks, with the centroid
     const std::uint64_t auto_sweep_from_;            ///< auto_sweep_from_primaries of this context's GL_RENDERER
     bool selection_on_cpu_ = false;

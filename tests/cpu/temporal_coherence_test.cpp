@@ -126,8 +126,8 @@ TEST(CellOpenings, AnEntryOpensItsCutBeforeItIsDrawnAndAnExitClosesItAfter) {
     // Cell 0 selected from the start (drawn at once), cell 1 enters at frame 1, cell 0 leaves at 2.
     const std::vector<std::vector<std::uint8_t>> selected{{1, 0}, {1, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}};
     const std::vector<std::vector<std::uint8_t>> expected_drawn{{1, 0}, {1, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}};
-    // sqrt(level / 4): the cross-section's share grows by a quarter per frame.
-    const float q1 = 0.5f, q2 = std::sqrt(0.5f), q3 = std::sqrt(0.75f);
+    // Beside the cut (each cell opens beside the other, drawn): (level / 4)^(3/8).
+    const float q1 = std::pow(0.25f, 0.375f), q2 = std::pow(0.5f, 0.375f), q3 = std::pow(0.75f, 0.375f);
     const std::vector<std::vector<float>> expected_openings{{0, 0}, {0, q1}, {0, q2}, {0, q3}, {0, 0}, {q3, 0}, {q2, 0}, {q1, 0}, {0, 0}};
     for (std::size_t f = 0; f < selected.size(); ++f) {
         openings.next(selected[f], drawn);
@@ -150,6 +150,7 @@ TEST(CellOpenings, ABriefSelectionIsNeverDrawnAndOneFrameToOpenChangesNothing) {
     openings.next({1}, drawn);  // selected for one frame only: opens a quarter, then closes
     ASSERT_EQ(openings.openings().size(), 1u);
     EXPECT_FALSE(openings.openings()[0].beside_cut);  // alone: its cut opens from the model's top
+    EXPECT_FLOAT_EQ(openings.openings()[0].opening, std::pow(0.25f, 1.25f));
     for (int f = 0; f < 6; ++f) {
         openings.next({0}, drawn);
         EXPECT_EQ(drawn[0], 0) << f;
@@ -161,6 +162,9 @@ TEST(CellOpenings, ABriefSelectionIsNeverDrawnAndOneFrameToOpenChangesNothing) {
         EXPECT_EQ(drawn, selected);
         EXPECT_TRUE(at_once.openings().empty());
     }
+    EXPECT_EQ(frames_to_open(4), 5u);
+    EXPECT_EQ(frames_to_open(1), 2u);
+    EXPECT_EQ(frames_to_open(24), CellOpenings::max_frames_to_open);
     EXPECT_THROW(CellOpenings(0, {1, 1, 1}), std::invalid_argument);
     EXPECT_THROW(CellOpenings(CellOpenings::max_frames_to_open + 1, {1, 1, 1}), std::invalid_argument);
     EXPECT_THROW(at_once.next({1}, drawn), std::invalid_argument);  // one flag for a grid of two cells
@@ -287,8 +291,9 @@ TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensCellsCutsBeforeDra
         if (s.primary_cells > 0) first_drawn = std::min(first_drawn, f);
     }
     EXPECT_GT(first_opening, 0u);  // the band is empty at step 0
-    // The first cells' cuts open over 4 frames, the last of them the first they are drawn.
-    EXPECT_EQ(first_drawn, first_opening + 3);
+    // The first cells' cuts open over frames_to_open(4) = 5 frames, the last of them the first
+    // they are drawn.
+    EXPECT_EQ(first_drawn, first_opening + frames_to_open(4) - 1);
 }
 
 TEST_F(ShockFront, SmoothHysteresisKeepsPrimariesTheBandCovers) {

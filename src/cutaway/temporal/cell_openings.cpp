@@ -1,10 +1,19 @@
 #include "cutaway/temporal/cell_openings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
 namespace cutaway::temporal {
+
+std::size_t frames_to_open(std::size_t frames_per_step) {
+    return std::min(frames_per_step + 1, CellOpenings::max_frames_to_open);
+}
+
+float CellOpenings::depth_share(float frames_share, bool beside_cut) {
+    return std::pow(frames_share, beside_cut ? 0.375f : 1.25f);
+}
 
 CellOpenings::CellOpenings(std::size_t frames_to_open, const grid::GridDims& dims)
     : full_(std::uint8_t(frames_to_open)), dims_(dims) {
@@ -40,7 +49,7 @@ void CellOpenings::next(const std::vector<std::uint8_t>& selected, std::vector<s
             else if (!selected[c] && level > 0) --level;
         }
         if (lagged && level == full_) drawn[c] = 1;
-        else if (level > 0) openings_.push_back({std::uint32_t(c), float(std::sqrt(double(level) / double(full_)))});
+        else if (level > 0) openings_.push_back({std::uint32_t(c), float(double(level) / double(full_))});
     }
     // Beside the cut: a face neighbour is drawn as a primary (its cut is open around the cell).
     const auto drawn_at = [&](int i, int j, int k) {
@@ -51,6 +60,7 @@ void CellOpenings::next(const std::vector<std::uint8_t>& selected, std::vector<s
         const grid::CellIjk c = grid::cell_ijk(dims_, opening.cell);
         opening.beside_cut = drawn_at(c.i - 1, c.j, c.k) || drawn_at(c.i + 1, c.j, c.k) || drawn_at(c.i, c.j - 1, c.k) ||
                              drawn_at(c.i, c.j + 1, c.k) || drawn_at(c.i, c.j, c.k - 1) || drawn_at(c.i, c.j, c.k + 1);
+        opening.opening = depth_share(opening.opening, opening.beside_cut);
     }
 }
 

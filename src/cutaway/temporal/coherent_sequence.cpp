@@ -15,7 +15,7 @@ CoherentSequence::CoherentSequence(const grid::CornerPointGrid& grid, const Step
         throw std::invalid_argument("animation steps " + std::to_string(timeline_.first_step) + ".." +
                                     std::to_string(timeline_.last_step) + ": expected FIRST <= LAST < " +
                                     std::to_string(source_.step_count()) + " and frames per step >= 1");
-    if (coherence_ == Coherence::smooth) openings_.emplace(std::min(timeline_.frames_per_step, CellOpenings::max_frames_to_open), grid.dims());
+    if (coherence_ == Coherence::smooth) openings_.emplace(frames_to_open(timeline_.frames_per_step), grid.dims());
 }
 
 CoherentSequence::Frame CoherentSequence::finished(Frame frame) {

@@ -28,7 +28,7 @@ public:
         const std::vector<float>* values = nullptr;  ///< one per Eclipse cell
         /// One per Eclipse cell, 1 = drawn as a primary: under none the selection; under smooth
         /// the selection of frames_to_open - 1 frames before, each cell once its cut is open
-        /// (CellOpenings, a report step's frames to open, at most CellOpenings::max_frames_to_open).
+        /// (CellOpenings over frames_to_open(frames_per_step) frames).
         const std::vector<std::uint8_t>* flags = nullptr;
         /// One per Eclipse cell, 1 = selected by the coherence mode in this frame.
         const std::vector<std::uint8_t>* selected = nullptr;
