@@ -81,14 +81,16 @@ class Experiment:
         return exio.read_json(path) if os.path.exists(path) else None
 
     def run(self, measure, report, draw=None):
-        """The experiment's life: --report-only rewrites the README from the stored JSON; otherwise,
-        unless up to date, `measure(self)` returns the document (None: skipped, nothing written),
-        written as the JSON, then `draw(self, document)` makes the figures and the README is written.
+        """The experiment's life: --report-only redraws the figures and rewrites the README from the
+        stored JSON; otherwise, unless up to date, `measure(self)` returns the document (None: skipped,
+        nothing written), written as the JSON, then `draw(self, document)` makes the figures (from the
+        document alone, so that --report-only can redraw them) and the README is written.
         `report(self, document)` returns a report_markdown.Report."""
         if self.report_only:
             document = self.stored()
             if document is None:
                 options.refuse("--report-only", f"expected the data of an earlier run, found no {exio.shown(self.path(self.data_file))}")
+            os.makedirs(self.figures, exist_ok=True)
         elif self.up_to_date():
             return
         else:
@@ -96,8 +98,8 @@ class Experiment:
             if document is None:
                 return
             write_json(self.path(self.data_file), document)
-            if draw:
-                draw(self, document)
+        if draw:
+            draw(self, document)
         self.write_report(report(self, document), document)
 
     def write_report(self, report, document):
@@ -218,30 +220,88 @@ def cutaway_runs(document):
     return rows
 
 
-def device_label(stats):
-    """What measured a timing plot, for its title: the GL renderer, a software rasteriser named so."""
-    renderer = (stats or {}).get("gl_renderer") or "unknown renderer"
-    if "llvmpipe" in renderer:
-        threads = (stats or {}).get("lp_num_threads")
-        if threads in (None, "unset"):
-            threads = os.environ.get("LP_NUM_THREADS", f"{os.cpu_count()} (llvmpipe's default)")
-        return f"software rasteriser (llvmpipe, {threads} threads): not a GPU"
-    return renderer
+def device_label(context):
+    """What measured a timing plot, for its title, from the data's context (or a render's stats):
+    the GL renderer ("NVIDIA H200"), llvmpipe named as the software rasteriser it is, with the
+    thread count and processor the data recorded (never this machine's: plots are redrawn elsewhere)."""
+    context = context or {}
+    renderer = report_markdown.first(context, "gl_renderer", "gl_renderer_ours") or "GL renderer not recorded"
+    if "llvmpipe" not in renderer:
+        return renderer.split("/")[0]  # NVIDIA's "NVIDIA H200/PCIe/SSE2": the GPU's name
+    threads = report_markdown.first(context, "lp_num_threads", "LP_NUM_THREADS")
+    cpus = report_markdown.first(context, "cpu_count", "num_cpus")
+    if threads in (None, "unset"):
+        threads = f"{cpus} threads (one per CPU)" if threads == "unset" and cpus else "thread count not recorded"
+    else:
+        threads = f"{threads} threads"
+    cpu = report_markdown.first(context, "cpu_model")
+    return f"llvmpipe (software rasteriser, {threads}" + (f" on {cpu}" if cpu else "") + "): not a GPU"
+
+
+# Print size (issue 46): plots are drawn PLOT_WIDTH_IN wide, a journal's double column
+# (PRINT_WIDTH_MM), so a point in matplotlib is a point on paper. Capitals and digits of DejaVu
+# Sans are 0.73 em tall: 9 pt prints them 2.3 mm tall and lower-case words with an ascender
+# (t, d, l) 2.1 mm, above the 2.0 mm (and 7 pt) asked for; 8 pt left such words at 1.9 mm.
+PRINT_WIDTH_MM = 182
+PLOT_WIDTH_IN = PRINT_WIDTH_MM / 25.4
+MIN_PLOT_TEXT_PT = 9
 
 
 def pyplot():
-    """matplotlib.pyplot (Agg) with the experiments' one style."""
+    """matplotlib.pyplot (Agg) with the experiments' one style: PLOT_WIDTH_IN wide at 150 dpi
+    (1075 px), no text below MIN_PLOT_TEXT_PT."""
     plt = exio.require_matplotlib()
-    # 7 x 4 inches at 150 dpi: 1050 px wide, and 9 pt text still 9 pt when printed 182 mm wide.
-    plt.rcParams.update({"figure.figsize": (7, 4), "figure.dpi": 150, "savefig.dpi": 150, "axes.grid": True, "grid.alpha": 0.3,
-                         "axes.spines.top": False, "axes.spines.right": False, "font.size": 9,
-                         "legend.fontsize": 8, "axes.titlesize": 9, "lines.markersize": 4})
+    plt.rcParams.update({"figure.figsize": (PLOT_WIDTH_IN, 4), "figure.dpi": 150, "savefig.dpi": 150, "axes.grid": True,
+                         "grid.alpha": 0.3, "axes.spines.top": False, "axes.spines.right": False, "font.size": 9,
+                         "axes.labelsize": 9, "xtick.labelsize": 9, "ytick.labelsize": 9, "legend.fontsize": 9,
+                         "legend.title_fontsize": 9, "axes.titlesize": 10, "figure.titlesize": 10, "lines.markersize": 5})
     return plt
 
 
+def plot_stages(ax, x, stages_ms):
+    """One line per stage (STAGES order, the colour cycle's colours; total in bold black) of the
+    per-x dicts `stages_ms` ({stage: ms}); stages missing from the first (a run from before the
+    stage was timed) are left out."""
+    for stage in STAGES + ("total",):
+        if stage in stages_ms[0]:
+            style = {"color": "black", "linewidth": 2.2} if stage == "total" else {}
+            ax.plot(x, [s[stage] for s in stages_ms], marker="o", markersize=3.5, label=STAGE_LABELS[stage], **style)
+
+
+def print_size_problems(fig):
+    """Texts of `fig` that print below MIN_PLOT_TEXT_PT when the figure is PRINT_WIDTH_MM wide."""
+    import matplotlib.text
+    scale = PRINT_WIDTH_MM / 25.4 / fig.get_figwidth()
+    return [f"'{t.get_text()[:40]}' {t.get_fontsize() * scale:.1f} pt" for t in fig.findobj(matplotlib.text.Text)
+            if t.get_visible() and t.get_text().strip() and t.get_fontsize() * scale < MIN_PLOT_TEXT_PT - 1e-6]
+
+
+def plain_number(value, _position=None):
+    """A log axis' tick label without a superscript (mathtext prints exponents at 70% of the
+    size): 0.1, 1, 10, 100, 1k, 10k, 100k, 1M, ..."""
+    for factor, suffix in ((1e9, "G"), (1e6, "M"), (1e3, "k")):
+        if abs(value) >= factor:
+            return f"{value / factor:g}{suffix}"
+    return f"{value:g}"
+
+
 def save_figure(fig, path):
-    """Writes the plot as PNG and, beside it, as vector PDF (for print)."""
-    fig.tight_layout()
+    """Lays the figure out (room kept below the axes for figure legends, placed "lower center"),
+    labels log axes with plain numbers, says which texts print too small, and writes it as PNG and,
+    beside it, as vector PDF (for print)."""
+    import matplotlib.ticker
+    for ax in fig.axes:
+        for axis in (ax.xaxis, ax.yaxis):
+            if axis.get_scale() == "log":
+                axis.set_major_formatter(matplotlib.ticker.FuncFormatter(plain_number))
+                axis.set_minor_formatter(matplotlib.ticker.NullFormatter())
+    renderer = fig.canvas.get_renderer()
+    below = max((legend.get_window_extent(renderer).height / fig.bbox.height for legend in fig.legends), default=0)
+    fig.tight_layout(rect=(0, below + (0.01 if below else 0), 1, 1))
+    problems = print_size_problems(fig)
+    if problems:
+        print(f"{exio.shown(path)}: text below {MIN_PLOT_TEXT_PT} pt at {PRINT_WIDTH_MM} mm: " + "; ".join(problems[:5])
+              + (f" and {len(problems) - 5} more" if len(problems) > 5 else ""), file=sys.stderr)
     fig.savefig(path)
     fig.savefig(os.path.splitext(path)[0] + ".pdf")
     exio.wrote(path)

@@ -3,7 +3,8 @@
   --quick        small sizes, few repetitions: a smoke test (outputs under results/quick/ and
                  paper_figures/quick/, so it never overwrites the reference results)
   --force        measure again even when the outputs exist (otherwise the script skips)
-  --report-only  rewrite results/NAME/README.md from the JSON already there, measuring nothing
+  --report-only  rewrite results/NAME/README.md and redraw the plots from the JSON already there,
+                 measuring nothing (figures made of rendered frames stay as they are)
   --build DIR    build folder holding bin/ (default: <repo>/build)
   --out DIR      where results/ and paper_figures/ go (default: the repository)
   --data DIR     the shared data (default: $CUTAWAY_SHARED_DATA, else <repo>/../shared/data); only
@@ -27,7 +28,8 @@ def add_common_options(parser, report_only=True):
     parser.add_argument("--force", action="store_true", help="measure again even if the outputs exist")
     if report_only:
         parser.add_argument("--report-only", action="store_true",
-                            help="rewrite results/NAME/README.md from the JSON already there, without measuring")
+                            help="rewrite results/NAME/README.md and redraw the plots from the JSON already there, "
+                                 "without measuring")
     parser.add_argument("--build", default=os.path.join(REPO, "build"), help="build folder with bin/ (default: %(default)s)")
     parser.add_argument("--out", default=REPO,
                         help="write DIR/results/ and DIR/paper_figures/ (default: the repository, %(default)s)")

@@ -5,7 +5,8 @@ Interface (for experiments/run_all):
   experiments/cut_strategies/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
 Writes results/cut_strategies/results.json (one row per preset x primary fraction x strategy, the
 CPU paths the GPU transforms replace, the crossover, machine context), results/cut_strategies/README.md
-and paper_figures/cut_strategies_time.png (+ .pdf). Skips when all exist unless --force.
+and paper_figures/cut_strategies_time.png, cut_strategies_ratio.png and cut_strategies_error.png (+ .pdf).
+Skips when all exist unless --force; --report-only redraws the plots and the README from results.json.
 --quick: petra only, fractions 1% and 20%, 480x270 for both steps (results/quick/, paper_figures/quick/).
 
 Protocol (SPEC.md section 2, issue 16):
@@ -36,6 +37,7 @@ import sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
 import report_markdown as md  # noqa: E402
+import strategy_style  # noqa: E402
 
 APERTURE_DEG = 60          # `cutaway render`'s default full opening angle
 POSES, WARMUP, REPEAT = 2, 1, 1
@@ -46,9 +48,10 @@ FIRST_POSE = ("0", "25", "0")  # camera_path.h pose 0 (azimuth, elevation, frami
 # (frustum-sweep, equal to the rasterised union: frustum_sweep_gl_test). The Chamfer masks, wrong on
 # most pixels, are timed and listed but not used for the crossover.
 ALTERNATIVES = ("jfa2", "frustum-sweep")
-PLOTTED = ("frustum", "frustum-clusters", "frustum-sweep", "jfa", "jfa2", "exact")
-MODEL_MARKERS = {"zaphirus": "o", "petra": "s", "opharine": "^", "sapphire": "D"}
 CPU_REFERENCES = ("jfa", "jfa2")
+WRONG_PERCENT_LINEAR_BELOW = 1e-4  # the error plot's wrong-pixel axis: linear below, log above (%)
+RATIO_DODGE_DECADES = 0.08  # the ratio plot's sideways spread of one configuration's points, log10 units
+FIGURES = ("cut_strategies_time.png", "cut_strategies_ratio.png", "cut_strategies_error.png")
 
 
 def configuration(quick):
@@ -276,56 +279,93 @@ def report(exp, result):
     out.text("readback_bytes per frame: 0 for every GPU strategy in every run (checked by the script).")
     out.text("Where each strategy runs and why (from the registry):")
     out.bullets([f"`{name}` ({row['device']}): {row['why']}" for name, row in {r["strategy"]: r for r in rows}.items()])
-    out.text("Plot: top, stage-1 time against primaries and against footprint; bottom, frustum / alternative per "
-             "configuration; one colour per strategy, one marker per model, lines join one model's fractions only.")
-    return out.figure(exp.path("cut_strategies_time.png"))
+    out.text("Plots: stage-1 time of every strategy, one panel per model, a line joining the model's primary fractions; "
+             "frustum / strategy per configuration against primaries and against the footprint (every strategy, a point "
+             f"per model and fraction: > 1, cheaper than frustum; a configuration's points spread sideways by at most "
+             f"{RATIO_DODGE_DECADES} decades so that none hides another); the cut error of every strategy against the exact cone "
+             f"field at {qsize[0]}x{qsize[1]} (wrong pixels and mean absolute depth error, a point per model and fraction). "
+             "One colour and marker per strategy in every plot (experiments/common/strategy_style.py).")
+    return out.figure(*(exp.path(f) for f in FIGURES))
 
 
 def plot(exp, result):
-    """Top: cut time against primaries and footprint per strategy; bottom: frustum / alternative.
-    One colour per strategy, one marker per model; a line joins one model's fractions, never two models."""
-    plt, path = cx.pyplot(), exp.path("cut_strategies_time.png")
-    rows, table, size = result["rows"], result["crossover"]["table"], result["protocol"]["size"]
-    fig, axes = plt.subplots(2, 2, figsize=(12, 9), sharex="col")
-    strategies = [s for s in PLOTTED if any(r["strategy"] == s for r in rows)]
-    colour = {name: f"C{i}" for i, name in enumerate(strategies)}
-    for column, (key, label) in enumerate((("primary_cells", "primary cells"),
-                                           ("primary_pixels", f"primary pixels on screen at {size[0]}x{size[1]}"))):
-        top, bottom = axes[0][column], axes[1][column]
-        for name in strategies:
-            for preset, marker in MODEL_MARKERS.items():
-                points = sorted((r[key] if key == "primary_cells" else footprint(rows, r), r["cut_surface_ms"])
-                                for r in rows if r["strategy"] == name and r["preset"] == preset)
-                if points:
-                    top.plot(*zip(*points), "-", marker=marker, color=colour[name], linewidth=1)
-        for name in ALTERNATIVES + ("frustum-clusters",):
-            for preset, marker in MODEL_MARKERS.items():
-                points = sorted((t[key], t[name]["frustum_over_it"]) for t in table if t["preset"] == preset and name in t)
-                if points:
-                    bottom.plot(*zip(*points), "-", marker=marker, color=colour.get(name, "k"), linewidth=1)
-        bottom.axhline(1.0, color="black", linewidth=0.8)
-        for ax in (top, bottom):
-            ax.set_xscale("log")
-            ax.set_yscale("log")
-            ax.grid(True, which="both", linewidth=0.3)
-        bottom.set_xlabel(label + " (log scale)")
-    axes[0][0].set_ylabel("stage 1 (cut_surface) ms, median, log scale")
-    axes[1][0].set_ylabel("frustum ms / strategy ms (> 1: cheaper than frustum)")
-    handles = [plt.Line2D([], [], color=colour[n], label=n) for n in strategies]
-    handles += [plt.Line2D([], [], color="black", marker=m, linestyle="none", label=p)
-                for p, m in MODEL_MARKERS.items() if any(r["preset"] == p for r in rows)]
-    axes[0][1].legend(handles=handles, fontsize=8, loc="best")
-    fig.suptitle(f"Cut-surface strategies, stage 1 at {size[0]}x{size[1]}, aperture {APERTURE_DEG} deg (llvmpipe)")
-    fig.tight_layout()
-    fig.savefig(path, dpi=150)
-    fig.savefig(os.path.splitext(path)[0] + ".pdf")
-    cx.exio.wrote(path)
+    """cut_strategies_time.png: stage-1 time of every strategy, one panel per model;
+    cut_strategies_ratio.png: frustum / strategy per configuration against primaries and footprint;
+    cut_strategies_error.png: each strategy's cut error against the exact cone field. Colours and
+    markers: experiments/common/strategy_style.py."""
+    plt, rows = cx.pyplot(), result["rows"]
+    size, device = result["protocol"]["size"], cx.device_label(result["context"])
+    setting = f"{size[0]}x{size[1]}, aperture {APERTURE_DEG} deg"
+    fig = strategy_style.times_per_model(
+        plt, [(r["preset"], r["strategy"], r["primary_cells"], r["cut_surface_ms"]) for r in rows],
+        f"Stage 1 (cut surface) of every strategy, {setting}\n{device}", "stage 1 ms (median, log scale)")
+    cx.save_figure(fig, exp.path("cut_strategies_time.png"))
+    plt.close(fig)
+    plot_ratio(plt, rows, f"frustum / strategy, stage 1, {setting}\n{device}", exp.path("cut_strategies_ratio.png"))
+    plot_error(plt, rows, result["protocol"], exp.path("cut_strategies_error.png"))
 
 
-def footprint(rows, row):
-    """The configuration's footprint: the frustum row's primary pixels (exposure 1.0)."""
-    return next(r["primary_pixels"] for r in rows if r["strategy"] == "frustum" and r["preset"] == row["preset"]
-                and r["primary_fraction"] == row["primary_fraction"])
+def plot_ratio(plt, rows, title, path):
+    """frustum ms / strategy ms of every strategy but frustum, against primary cells and against the
+    footprint, every configuration of every model a point (no lines: the points of one strategy come
+    from four models). A configuration's points are spread sideways, at most RATIO_DODGE_DECADES
+    either way, so that equal ratios do not hide one another."""
+    frustum = {(r["preset"], r["primary_fraction"]): r for r in rows if r["strategy"] == "frustum"}
+    fig, axes = plt.subplots(1, 2, figsize=(cx.PLOT_WIDTH_IN, 4.4), sharey=True)
+    names = strategy_style.ordered(r["strategy"] for r in rows if r["strategy"] != "frustum")
+    for ax, (key, label) in zip(axes, (("primary_cells", "primary cells"),
+                                           ("primary_pixels", "footprint: primary pixels on screen"))):
+        for i, name in enumerate(names):
+            dodge = 10 ** (RATIO_DODGE_DECADES * (2 * i / (len(names) - 1) - 1))
+            points = [(frustum[(r["preset"], r["primary_fraction"])][key] * dodge,
+                       frustum[(r["preset"], r["primary_fraction"])]["cut_surface_ms"] / r["cut_surface_ms"])
+                      for r in rows if r["strategy"] == name]
+            ax.plot(*zip(*points), linestyle="none", markersize=4.5, alpha=0.9, **strategy_style.style(name))
+        ax.axhline(1.0, color="black", linewidth=0.8)
+        ax.set(xscale="log", yscale="log", xlabel=label + " (log scale)")
+        ax.grid(True, which="both", linewidth=0.3)
+    axes[0].set_ylabel("frustum ms / strategy ms (> 1: cheaper)")
+    fig.suptitle(title)
+    fig.legend(handles=strategy_style.handles(plt, names, linestyle="none"), ncol=4, loc="lower center", frameon=False)
+    cx.save_figure(fig, path)
+    plt.close(fig)
+
+
+def plot_error(plt, rows, protocol, path):
+    """Per strategy, every configuration a point: the share of pixels whose cut depth is wrong beyond
+    the tolerance, and the mean absolute depth error, both against the exact cone field."""
+    import matplotlib.ticker  # after cx.pyplot(), which finds matplotlib
+    fig, axes = plt.subplots(1, 2, figsize=(cx.PLOT_WIDTH_IN, 4.2), sharey=True)
+    names = strategy_style.ordered(r["strategy"] for r in rows)
+    configurations = sorted({(r["preset"], r["primary_fraction"]) for r in rows})
+    for y, name in enumerate(names):
+        errors = [r["quality"]["cut_vs_exact"] for r in rows if r["strategy"] == name]
+        # Spread a strategy's configurations over its row so that equal values stay countable.
+        spread = [y + 0.5 * (i / max(1, len(configurations) - 1) - 0.5) for i in range(len(errors))]
+        axes[0].plot([100 * e["wrong_fraction"] for e in errors], spread, linestyle="none", markersize=4,
+                     **strategy_style.style(name))
+        axes[1].plot([e["mean_abs_error"] for e in errors], spread, linestyle="none", markersize=4,
+                     **strategy_style.style(name))
+    tolerance = rows[0]["quality"]["cut_vs_exact"]["relative_tolerance"]
+    # Wrong shares run from none through a few pixels in 230,400 (jump flooding) to nearly all: a
+    # log axis from WRONG_PERCENT_LINEAR_BELOW up, linear (with 0) below it.
+    axes[0].set_xscale("symlog", linthresh=WRONG_PERCENT_LINEAR_BELOW, linscale=0.5)
+    axes[0].set_xticks([0] + [10.0 ** k for k in range(-3, 3)])  # none at the threshold: it would touch 0's label
+    axes[0].xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(cx.plain_number))
+    axes[0].set(xlabel=f"pixels wrong by more than {100 * tolerance:g}%\nof the depth range (%, log scale above "
+                       f"{WRONG_PERCENT_LINEAR_BELOW:g})", xlim=(-WRONG_PERCENT_LINEAR_BELOW / 2, 150))
+    axes[1].set(xscale="log", xlabel="mean absolute depth error\n(render units, log scale)")
+    axes[0].set_yticks(range(len(names)), names)
+    axes[0].invert_yaxis()
+    for ax in axes:
+        ax.grid(True, which="both", axis="x", linewidth=0.3)
+        ax.grid(False, axis="y")
+    w, h = protocol["quality_size"]
+    az, el, _ = protocol["quality_camera_az_el_dist"]
+    fig.suptitle(f"Cut error against the exact cone field ({w}x{h}, pose {az}/{el}, aperture {APERTURE_DEG} deg),\n"
+                 f"one point per model and primary fraction ({len(configurations)} per strategy)")
+    cx.save_figure(fig, path)
+    plt.close(fig)
 
 
 def measure(exp):
@@ -362,7 +402,7 @@ def measure(exp):
 
 
 def main():
-    cx.Experiment(__doc__, "results.json", ["cut_strategies_time.png"]).run(measure, report, plot)
+    cx.Experiment(__doc__, "results.json", list(FIGURES)).run(measure, report, plot)
 
 
 if __name__ == "__main__":

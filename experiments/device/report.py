@@ -2,6 +2,7 @@
 """Results of scripts/device-benchmarks.sh on a lent GPU machine, as results/device-<gpu>/.
 
   experiments/device/report.py RUN_DIR [RUN_DIR ...]
+  experiments/device/report.py results/device-<gpu>     (the report and plot again from the files there)
 RUN_DIR: the files one device call brought back (a later folder's file replaces an earlier one of
 the same name; the calls' device.log files are joined). Copies the raw outputs (benchmark JSON,
 render stats, scale.jsonl, context.txt, device.log, the GL test log, the rendered frame) into
@@ -21,6 +22,7 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
+import strategy_style  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "volume_common"))
 import volume_experiment as vx  # noqa: E402
@@ -40,7 +42,6 @@ QUERY_NOTE = ("Fenced: wall clock between two glFinish calls; query: GL_TIME_ELA
               "they do not time a software rasteriser's draws), so there a \"no\" is expected and the fenced time is "
               "the measurement; on a GPU a \"no\" marks a stage whose query is not to be read.")
 CUT_COLUMNS = ("frustum", "frustum-clusters", "frustum-sweep", "chamfer-5x5", "jfa", "jfa2")
-MARKERS = ("o", "s", "^", "D")  # one per model, in the benchmark's preset order
 
 
 def gather(run_dirs):
@@ -167,25 +168,15 @@ def cut_strategies_section(document):
 
 
 def plot_cut_strategies(document, gpu, path):
-    """Stage 1 against primary cells: one colour per strategy, one marker per model; a line joins
-    one model's primary fractions, never two models."""
+    """Stage 1 of every strategy against primary cells, one panel per model (the layout, colours
+    and markers of experiments/cut_strategies' plot: experiments/common/strategy_style.py)."""
     plt = cx.pyplot()
-    runs = cx.cutaway_runs(document)
-    presets = document["context"]["presets"].split(",")
-    fig, ax = plt.subplots(figsize=(8, 5))
-    for i, strategy in enumerate(CUT_COLUMNS):
-        for preset, marker in zip(presets, MARKERS):
-            points = sorted((r["primary_cells"], r["stages_ms"]["cut_surface"]) for r in runs
-                            if r["strategy"] == strategy and r["preset"] == preset)
-            ax.plot(*zip(*points), "-", marker=marker, color=f"C{i}", linewidth=1,
-                    label=strategy if preset == presets[0] else None)
-    for preset, marker in zip(presets, MARKERS):
-        ax.plot([], [], linestyle="none", marker=marker, color="black", label=preset)
-    ax.set(xscale="log", yscale="log", xlabel="primary cells (0.1%, 1%, 5%, 20% of each model; log scale)",
-           ylabel="stage 1 (cut_surface) ms, median, log scale",
-           title=f"Cut-surface strategies on an {gpu}, 1920x1080, aperture 60 deg")
-    ax.legend(fontsize="small", ncol=2)
+    points = [(r["preset"], r["strategy"], r["primary_cells"], r["stages_ms"]["cut_surface"]) for r in cx.cutaway_runs(document)]
+    fig = strategy_style.times_per_model(plt, points, f"Stage 1 (cut surface) of every strategy, "
+                                         f"{cx.benchmark_context(document).get('resolution')}, aperture 60 deg\non an {gpu}",
+                                         "stage 1 ms (median, log scale)")
     cx.save_figure(fig, path)
+    plt.close(fig)
 
 
 def fenced_and_query(bench, stage):
@@ -276,7 +267,8 @@ def volume_figures_section(path):
                       + ms(statistics.fmean(means["cpu"])) + f" ms (CPU caster: {fig7[-1]['configuration']['cpu_threads']} "
                       f"threads); the paper's: GPU {PAPER_FIG7_MEAN_MS['gpu']} ms, CPU {PAPER_FIG7_MEAN_MS['cpu']} ms.", ""]
     if fig8:
-        lines += ["### Figure 8: GPU caster as the cube grows (growth-k: 10k x 28k x 25k samples), azimuth 40", "",
+        lines += ["### Figure 8: GPU caster as the cube grows (step k = 1..10: k x 10 inlines, k x 28 crosslines, "
+                  "k x 25 time samples), azimuth 40", "",
                   "| step | dims | M voxels | ms per frame | query ms | queries agree | M samples/s |",
                   "|---:|---|---:|---:|---:|---|---:|"]
         for r in sorted(fig8, key=lambda r: r["step"]):
@@ -349,6 +341,21 @@ def render_section(stats):
             f"(medians of {stats['repeat']}).", ""]
 
 
+def copy_raw(files, out):
+    """The run folders' raw outputs into `out`, their device.log files joined in call order."""
+    os.makedirs(out, exist_ok=True)
+    for name, path in files.items():
+        if name != "device.log" and os.path.realpath(os.path.dirname(path)) != os.path.realpath(out):
+            shutil.copyfile(path, os.path.join(out, name))
+    logs = []
+    for folder in sys.argv[1:]:
+        if os.path.exists(os.path.join(folder, "device.log")):
+            with open(os.path.join(folder, "device.log")) as f:
+                logs.append(f"### call {os.path.basename(os.path.normpath(folder))}\n" + f.read())
+    with open(os.path.join(out, "device.log"), "w") as log:
+        log.write("".join(logs))
+
+
 def main():
     if len(sys.argv) < 2:
         raise SystemExit(__doc__)
@@ -357,15 +364,8 @@ def main():
         raise SystemExit("no context.txt in " + ", ".join(sys.argv[1:]) + ": not a device-benchmarks.sh output folder")
     gpu = gpu_name(files)
     out = os.path.join(cx.REPO, "results", "device-" + gpu.lower().replace(" ", "-"))
-    os.makedirs(out, exist_ok=True)
-    for name, path in files.items():
-        if name != "device.log":
-            shutil.copyfile(path, os.path.join(out, name))
-    with open(os.path.join(out, "device.log"), "w") as log:  # every call's log, in call order
-        for folder in sys.argv[1:]:
-            if os.path.exists(os.path.join(folder, "device.log")):
-                with open(os.path.join(folder, "device.log")) as f:
-                    log.write(f"### call {os.path.basename(os.path.normpath(folder))}\n" + f.read())
+    if any(os.path.realpath(folder) != os.path.realpath(out) for folder in sys.argv[1:]):
+        copy_raw(files, out)
     documents = {n: load_json(files[n]) for n in ("bench_table1.json", "bench_main.json", "bench_cpu_path.json",
                                                   "bench_cut_strategies.json")
                  if n in files}

@@ -106,13 +106,6 @@ def measure(exp):
                                         figure_specs.CAMERA, repeat)
     fraction_rows, _ = sweeps.sweep(exp, sweep_model, sweep_size, [(f, ["--primary-fraction", f]) for f in fractions],
                                     figure_specs.CAMERA, repeat)
-    label = f"{sweep_model}, {sweep_size[0]}x{sweep_size[1]}"
-    device = cx.device_label(stats)
-    sweeps.plot_sweep(exp, aperture_rows, "full aperture angle (degrees, horizontal = vertical)",
-                      f"Frame time vs aperture ({label}, 1% primaries)\n{device}", exp.path("time_vs_aperture.png"))
-    sweeps.plot_sweep(exp, fraction_rows, "primary fraction (of active cells, log scale)",
-                      f"Frame time vs primary fraction ({label}, aperture 60 degrees)\n{device}",
-                      exp.path("time_vs_primary_fraction.png"), log_x=True)
     return {
         "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),
         "context": exp.context(stats), "configuration": stats["configuration"], "figures": numbers,
@@ -120,9 +113,21 @@ def measure(exp):
         "time_vs_primary_fraction": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": fraction_rows}}
 
 
+def plot(exp, document):
+    """The two sweeps' plots, from the document (the composed figures are renders: measure makes them)."""
+    device = cx.device_label(document["context"])
+    for name, xlabel, setting, log_x in (
+            ("time_vs_aperture", "full aperture angle (degrees, horizontal = vertical)", "1% primaries", False),
+            ("time_vs_primary_fraction", "primary fraction (of active cells, log scale)", "aperture 60 degrees", True)):
+        sweep = document[name]
+        what = name.removeprefix("time_vs_").replace("_", " ")
+        sweeps.plot_sweep(sweep, xlabel, f"Frame time vs {what} ({sweep['model']}, {sweep['size'][0]}x{sweep['size'][1]}, "
+                                         f"{setting})\non {device}", exp.path(name + ".png"), log_x=log_x)
+
+
 def main():
     outputs = [f + ".png" for f in FIGURES] + ["time_vs_aperture.png", "time_vs_primary_fraction.png"]
-    cx.Experiment(__doc__, "figures.json", outputs).run(measure, figures_report.report)
+    cx.Experiment(__doc__, "figures.json", outputs).run(measure, figures_report.report, plot)
 
 
 if __name__ == "__main__":

@@ -11,22 +11,18 @@ def sweep(exp, model, size, flag_values, base_options, repeat):
     return rows, stats
 
 
-def plot_sweep(exp, rows, xlabel, title, path, log_x=False):
-    """One line per stage (total in bold black), the legend below the axes, clear of the curves."""
+def plot_sweep(sweep, xlabel, title, path, log_x=False):
+    """One line per stage (total in bold black) of a sweep as the document holds it ({"rows": [{"value",
+    "stages_ms"}]}), the legend below the axes, clear of the curves."""
     plt = cx.pyplot()
-    fig, ax = plt.subplots(figsize=(7, 4.6))
-    x = [r["value"] for r in rows]
-    for stage in cx.STAGES + ("total",):
-        style = {"color": "black", "linewidth": 2.2} if stage == "total" else {}
-        ax.plot(x, [r["stages_ms"][stage] for r in rows], marker="o", label=cx.STAGE_LABELS[stage], **style)
+    fig, ax = plt.subplots(figsize=(cx.PLOT_WIDTH_IN, 4.6))
+    cx.plot_stages(ax, [r["value"] for r in sweep["rows"]], [r["stages_ms"] for r in sweep["rows"]])
     if log_x:
         ax.set_xscale("log")
     ax.set_xlabel(xlabel)
     ax.set_ylabel("time per frame (ms, median)")
     ax.set_ylim(bottom=0)
-    ax.set_title(title)
-    fig.legend(*ax.get_legend_handles_labels(), ncol=4, loc="lower center", frameon=False)
-    fig.tight_layout(rect=(0, 0.13, 1, 1))
-    fig.savefig(path)
-    fig.savefig(path[:-4] + ".pdf")
-    print("wrote", path)
+    fig.suptitle(title)
+    fig.legend(*ax.get_legend_handles_labels(), ncol=3, loc="lower center", frameon=False)
+    cx.save_figure(fig, path)
+    plt.close(fig)

@@ -29,11 +29,13 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
 import report_markdown as md  # noqa: E402
+import strategy_style  # noqa: E402
 
 FULL = ("zaphirus", "petra", "opharine", "sapphire", "scale-1m", "scale-10m", "scale-100m")
 QUICK = ("zaphirus", "petra")
 DEFAULT = "auto"  # picks one of STRATEGIES by primary count
 STRATEGIES = ("frustum-clusters", "frustum-sweep")
+MEMORY_TARGET = 100  # peak resident bytes per active cell (issue 14)
 
 
 def measure_one(exp, preset, size, strategy):
@@ -133,43 +135,56 @@ def report(exp, document):
 
 
 def plot(exp, document):
-    """Frame time per stage and peak bytes per active cell against active cells. One marker per
-    model and no connecting line: each point is a different model (issue 15), named on the right."""
+    """Frame, stage 1, culling, stage 2, the command's wall time and peak bytes per active cell
+    against active cells, a panel each; one colour and marker per strategy (strategy_style), filled
+    where auto picked it, open for the other; no connecting line: each point is a different model
+    (issue 15), named in the memory panel."""
     rows, path = document["models"], exp.path("scale.png")
     plt = cx.pyplot()
-    fig, (left, right) = plt.subplots(1, 2, figsize=(10, 4.2))
-    default = [r for r in rows if is_default(r)]
-    cells = [r["active_cells"] for r in default]
-    for stage, label, marker in (("total", "frame (fenced total)", "o"), ("cut_surface", "stage 1: cut surface", "s"),
-                                 ("secondary", "stage 2: secondaries", "^"), ("culling", "culling", "v")):
-        left.plot(cells, [r["stages_ms"].get(stage, 0) for r in default], marker=marker, linestyle="none",
-                  label=f"{label}, default ({DEFAULT})")
-    # The strategy the default did not pick: its frame and stage 1 as open markers, one shape pair each.
-    for strategy, markers in zip(STRATEGIES, (("o", "s"), ("D", "P"))):
-        other = [r for r in rows if r.get("strategy") == strategy and not is_default(r)]
-        for stage, label, marker, colour in (("total", "frame", markers[0], "C0"), ("cut_surface", "stage 1", markers[1], "C1")):
-            left.plot([r["active_cells"] for r in other], [r["stages_ms"][stage] for r in other], marker=marker,
-                      linestyle="none", markerfacecolor="none", color=colour, label=f"{label}, {strategy}")
-    left.axhline(5000, color="grey", linestyle="--", linewidth=1, label="target: scale-10m frame 5 s")
-    left.set(xscale="log", yscale="log", xlabel="active cells (one model per column)", ylabel="ms (llvmpipe, one timed frame)",
-             title="Frame time")
-    left.legend(fontsize="x-small")
-    per_cell = [r["peak_bytes_per_active_cell"] for r in default]
-    right.plot(cells, per_cell, marker="o", linestyle="none", color="C4")
-    for r, x, y in zip(default, cells, per_cell):
-        # The value too: on a log axis 97 and 100 bytes look the same. Near the target line the
-        # label goes below and to the left, clear of the line and the axes' edge.
-        near_target = y < 150
-        right.annotate(f"{r['preset']}: {y:,.1f}" if y < 1000 else f"{r['preset']}: {y:,.0f}", (x, y),
-                       textcoords="offset points", xytext=(-5, -12) if near_target else (5, 4),
-                       ha="right" if near_target else "left", fontsize="small")
-    right.axhline(100, color="grey", linestyle="--", linewidth=1, label="target: 100 bytes per cell")
-    right.set(xscale="log", yscale="log", xlabel="active cells (one model per point)", ylabel="peak resident bytes / active cell",
-              title="Peak memory per active cell")
-    right.set_xlim(right=max(cells) * 8)
-    right.set_ylim(bottom=min(per_cell) / 2)  # room for the labels below the lowest points
-    right.legend(fontsize="small")
+    fig, axes = plt.subplots(3, 2, figsize=(cx.PLOT_WIDTH_IN, 8.4), sharex=True)
+    panels = (("frame (fenced total), ms", lambda r: r["stages_ms"]["total"], 5000, "scale-10m: 5 s"),
+              ("stage 1: cut surface, ms", lambda r: r["stages_ms"]["cut_surface"], None, None),
+              ("culling, ms", lambda r: r["stages_ms"].get("culling", 0), None, None),
+              ("stage 2: secondaries, ms", lambda r: r["stages_ms"]["secondary"], None, None),
+              ("whole command (wall), s", lambda r: r["command_wall_s"], 30, "scale-10m: 30 s"),
+              ("peak resident bytes / active cell", lambda r: r["peak_bytes_per_active_cell"], MEMORY_TARGET,
+               f"{MEMORY_TARGET} bytes"))
+    strategies = strategy_style.ordered(r["strategy"] for r in rows)
+    for ax, (title, value, target, target_label) in zip(axes.flat, panels):
+        for name in strategies:
+            for picked in (True, False):
+                mine = [r for r in rows if r["strategy"] == name and is_default(r) == picked]
+                ax.plot([r["active_cells"] for r in mine], [value(r) for r in mine], linestyle="none",
+                        markerfacecolor=None if picked else "none", **strategy_style.style(name))
+        if target:
+            ax.axhline(target, color="grey", linestyle="--", linewidth=1)
+            ax.annotate(f"target: {target_label}", (0.02, target), xycoords=("axes fraction", "data"),
+                        textcoords="offset points", xytext=(0, 3), color="dimgrey")
+        ax.set(xscale="log", yscale="log", title=title)
+        ax.grid(True, which="both", linewidth=0.3)
+    memory = axes[2][1]
+    for r in (r for r in rows if is_default(r)):
+        y = r["peak_bytes_per_active_cell"]
+        # Right of the point (the next model's point is well below); near the target line, where
+        # the models sit a decade apart at about the same height, below it, the two staggered.
+        below = [q for q in rows if is_default(q) and q["peak_bytes_per_active_cell"] < 1.5 * MEMORY_TARGET]
+        if r in below:
+            last = r is below[-1]  # at the axes' right end: its label ends at the point
+            memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", ha="right" if last else "center",
+                            xytext=(6 if last else 0, -13 - 11 * (below.index(r) % 2)))
+        else:
+            memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", xytext=(6, 0), va="center")
+    memory.set_ylim(bottom=min(r["peak_bytes_per_active_cell"] for r in rows) / 5)
+    for ax in axes[-1]:
+        ax.set_xlabel("active cells (one model per point)")
+    handles = [plt.Line2D([], [], linestyle="none", markerfacecolor=None if picked else "none",
+                          label=f"{name} ({'picked by ' + DEFAULT if picked else DEFAULT + ' picked the other'})",
+                          **strategy_style.style(name)) for name in strategies for picked in (True, False)]
+    fig.legend(handles=handles, ncol=2, loc="lower center", frameon=False)
+    fig.suptitle(f"Scale: one frame per model at {document['size']}, {DEFAULT} and the other strategy\n"
+                 f"{cx.device_label(document['context'])}")
     cx.save_figure(fig, path)
+    plt.close(fig)
 
 
 def measure(exp):

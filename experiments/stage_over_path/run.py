@@ -51,31 +51,26 @@ def plot(exp, result):
     full = result.get("aperture") == "full opening angle"
     apertures = [c[2] if full else 2 * c[2] for c in camera]
     models = result["models"]
-    fig, axes = plt.subplots(len(models) + 2, 1, figsize=(8, 2.6 + 2.4 * len(models)), sharex=True, squeeze=False,
-                             gridspec_kw={"height_ratios": [0.5, 0.5] + [1] * len(models)})
+    fig, axes = plt.subplots(len(models) + 2, 1, figsize=(cx.PLOT_WIDTH_IN, 2.4 + 2.0 * len(models)), sharex=True,
+                             squeeze=False, gridspec_kw={"height_ratios": [0.55, 0.55] + [1] * len(models)})
+    axes = axes[:, 0]
     poses = list(range(len(camera)))
-    axes[0, 0].plot(poses, [c[0] for c in camera], marker="s", color="tab:blue")
-    axes[0, 0].set_ylabel("azimuth\n(deg)")
-    axes[0, 0].set_title(f"camera path ({result['size']} px, elevation alternating 25/45 degrees)")
-    axes[1, 0].plot(poses, apertures, marker="^", color="tab:red")
-    axes[1, 0].set_ylabel("full aperture\n(deg)")
-    axes = axes[1:]
-    for ax, (preset, rows) in zip(axes[1:, 0], models.items()):
-        for stage in cx.STAGES + ("total",):
-            if stage not in rows[0]["stages_ms"]:  # a run from before the stage was timed
-                continue
-            style = {"color": "black", "linewidth": 2.2} if stage == "total" else {}
-            ax.plot([r["pose"] for r in rows], [r["stages_ms"][stage] for r in rows], marker="o", label=cx.STAGE_LABELS[stage],
-                    **style)
+    elevations = "/".join(f"{e:g}" for e in dict.fromkeys(c[1] for c in camera))
+    axes[0].plot(poses, [c[0] for c in camera], marker="s", color="tab:blue")
+    axes[0].set_ylabel("azimuth\n(deg)")
+    axes[1].plot(poses, apertures, marker="^", color="tab:red")
+    axes[1].set_ylabel("full aperture\n(deg)")
+    for ax, (preset, rows) in zip(axes[2:], models.items()):
+        cx.plot_stages(ax, [r["pose"] for r in rows], [r["stages_ms"] for r in rows])
         ax.set_ylabel("time (ms)")
         ax.set_title(f"{preset} ({int(rows[0]['cells']):,} cells, {int(rows[0]['primary_cells'])} primaries)")
-    axes[-1, 0].set_xlabel("camera pose (index along the path above)")
-    handles, labels = axes[1, 0].get_legend_handles_labels()
-    fig.tight_layout(rect=(0, 0.07, 1, 1))
-    fig.legend(handles, labels, ncol=4, loc="lower center", frameon=False)
-    fig.savefig(path)
-    fig.savefig(os.path.splitext(path)[0] + ".pdf")
-    cx.exio.wrote(path)
+    axes[-1].set_xlabel("camera pose along the path: azimuth and aperture rise together,\n"
+                        "so this path cannot tell their effects apart")
+    fig.legend(*axes[2].get_legend_handles_labels(), ncol=3, loc="lower center", frameon=False)
+    fig.suptitle(f"Stage times over the camera path (top: azimuth and aperture; elevation alternating {elevations} deg),\n"
+                 f"{result['size']} px, frustum cut, on {cx.device_label(result['context'])}")
+    cx.save_figure(fig, path)
+    plt.close(fig)
 
 
 def report(exp, document):

@@ -8,7 +8,8 @@ samples per second, raw trials; machine context), its README.md and paper_figure
 (+ .pdf: medians with min-max bars). Skips when all exist unless --force; plots the JSON again when
 it exists and --force was not given. --quick: steps 1-3, 128x128 pixels, 5 trials.
 
-Protocol: synthetic cubes "growth-1" .. "growth-10" (step k: 10k x 28k x 25k samples, seed 1),
+Protocol: synthetic cubes "growth-1" .. "growth-10" (step k: k x 10 inlines, k x 28 crosslines and
+k x 25 time samples, 10x28x25 to 100x280x250, seed 1),
 a fixed viewpoint (azimuth 40, elevation 25, distance framing the cube, time axis scaled to the
 larger lateral extent so the cube's footprint on screen stays the same), grey transfer function,
 512x512 pixels, GPU caster, 20 timed trials after one warm-up, mean after dropping min and max.
@@ -28,23 +29,27 @@ import volume_experiment as vx  # noqa: E402
 def plot(exp, result):
     """Median frame time per cube with min-max bars over the trials (PNG and vector PDF)."""
     figure_path = exp.path("volume_fig8.png")
-    plt = cx.exio.require_matplotlib()
+    plt = cx.pyplot()
     rows, size = result["steps"], result["protocol"]["size"][0]
     voxels = [r["voxels"] / 1e6 for r in rows]
     medians = [sorted(r["trials_ms"])[len(r["trials_ms"]) // 2] for r in rows]
     low = [m - min(r["trials_ms"]) for m, r in zip(medians, rows)]
     high = [max(r["trials_ms"]) - m for m, r in zip(medians, rows)]
-    fig, ax = plt.subplots(figsize=(7, 4))
-    ax.errorbar(voxels, medians, yerr=[low, high], marker="o", capsize=3, label="GPU caster (median, min-max bars)")
-    ax.set_xlabel("cube size (million voxels; step k holds 10k inlines x 28k crosslines x 25k time samples)")
+    fig, ax = plt.subplots(figsize=(cx.PLOT_WIDTH_IN, 4.4))
+    ax.errorbar(voxels, medians, yerr=[low, high], marker="o", capsize=3,
+                label=f"GPU caster: median and min-max of {result['protocol']['trials']} trials per cube")
+    for r, x, y in ((rows[0], voxels[0], medians[0]), (rows[-1], voxels[-1], medians[-1])):
+        ax.annotate(f"step {r['step']}: {'x'.join(map(str, r['dims']))}", (x, y), textcoords="offset points",
+                    xytext=(8, -14), ha="left" if r is rows[0] else "right")
+    k1 = [d // rows[0]["step"] for d in rows[0]["dims"]]
+    ax.set_xlabel(f"cube size (million voxels); step k = {rows[0]['step']}..{rows[-1]['step']}: k x {k1[0]} inlines, "
+                  f"k x {k1[1]} crosslines,\nk x {k1[2]} time samples")
     ax.set_ylabel("time per frame (ms)")
     ax.set_ylim(bottom=0)
-    ax.set_title(f"Fig. 8: fixed viewpoint, growing cube, {size}x{size} px", fontsize=9)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(figure_path, dpi=150)
-    fig.savefig(os.path.splitext(figure_path)[0] + ".pdf")
-    cx.exio.wrote(figure_path)
+    fig.suptitle(f"Fig. 8: fixed viewpoint, growing cube, {size}x{size} px\non {cx.device_label(result['context'])}")
+    fig.legend(*ax.get_legend_handles_labels(), loc="lower center", frameon=False)
+    cx.save_figure(fig, figure_path)
+    plt.close(fig)
 
 
 def measure(exp):
@@ -72,7 +77,7 @@ def measure(exp):
 
     result = {
         "experiment": "volume_fig8", "quick": quick,
-        "protocol": {"cubes": "growth-k: 10k x 28k x 25k samples, seed 1", "viewpoint": [40, 25, 0],
+        "protocol": {"cubes": "growth-k: k x 10 inlines, k x 28 crosslines, k x 25 time samples, seed 1", "viewpoint": [40, 25, 0],
                      "size": [size, size], "trials": trials, "warmup": 1, "caster": "gpu", "transfer_function": "grey",
                      "statistic": "mean after dropping min and max",
                      "time": "fenced wall clock of exit_points + ray_cast stages (readback excluded), ms",
@@ -88,7 +93,9 @@ def report(exp, document):
     medians = [statistics.median(r["trials_ms"]) for r in steps]
     result = md.Report(
         "Seismic figure 8: GPU ray casting time as the cube grows",
-        f"Time to ray cast growing synthetic seismic cubes ({proto['cubes']}) from one viewpoint (azimuth "
+        f"Time to ray cast growing synthetic seismic cubes (growth-k, k = {steps[0]['step']}..{steps[-1]['step']}: "
+        f"k x {steps[0]['dims'][0] // steps[0]['step']} inlines, k x {steps[0]['dims'][1] // steps[0]['step']} crosslines "
+        f"and k x {steps[0]['dims'][2] // steps[0]['step']} time samples, seed 1) from one viewpoint (azimuth "
         f"{proto['viewpoint'][0]}, elevation {proto['viewpoint'][1]}, the time axis scaled so the cube's footprint on "
         f"screen stays the same) into {proto['size'][0]}x{proto['size'][1]} pixels, {proto['caster'].upper()} caster, "
         f"{proto['transfer_function']} transfer function, as Duan & Li's figure 8: {proto['trials']} timed trials per cube "

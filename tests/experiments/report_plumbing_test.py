@@ -11,8 +11,10 @@ import unittest
 
 REPO = os.path.abspath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
 sys.path.insert(0, os.path.join(REPO, "experiments", "common"))
+import cutaway_experiment as cx  # noqa: E402
 import report_markdown as md  # noqa: E402
 import results_index  # noqa: E402
+import strategy_style  # noqa: E402
 
 PYTHON = "/usr/bin/python3"
 
@@ -119,6 +121,38 @@ class CommandLineTest(unittest.TestCase):
             ratio = json.load(f)["summary"]["cpu_over_gpu"]
         fig7 = next(row for row in rows if row.startswith("| [volume_fig7]"))
         self.assertIn(f"({ratio:.2f}x)", fig7)
+
+
+class PlotTest(unittest.TestCase):
+    def test_every_strategy_in_the_data_has_its_own_colour_and_marker(self):
+        with open(os.path.join(REPO, "results", "cut_strategies", "results.json")) as f:
+            names = set(json.load(f)["context"]["strategies"].split(",")) | {"auto"}
+        self.assertEqual(names - set(strategy_style.STYLES), set())
+        self.assertEqual(len({c for c, _ in strategy_style.STYLES.values()}), len(strategy_style.STYLES))
+        self.assertEqual(len({m for _, m in strategy_style.STYLES.values()}), len(strategy_style.STYLES))
+
+    def test_device_label_names_what_the_data_recorded(self):
+        self.assertEqual(cx.device_label({"gl_renderer": "NVIDIA H200/PCIe/SSE2"}), "NVIDIA H200")
+        label = cx.device_label({"gl_renderer": "llvmpipe (LLVM 15.0.6, 256 bits)", "LP_NUM_THREADS": "3"})
+        self.assertIn("software rasteriser, 3 threads", label)
+        self.assertIn("thread count not recorded", cx.device_label({"gl_renderer": "llvmpipe"}))
+
+    def test_report_only_redraws_the_plots_at_print_size(self):
+        folder = os.path.join(self.scratch, "results", "cut_strategies")
+        os.makedirs(folder)
+        shutil.copy(os.path.join(REPO, "results", "cut_strategies", "results.json"), folder)
+        result = run(os.path.join(REPO, "experiments", "cut_strategies", "run.py"), "--report-only", "--out", self.scratch)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertNotIn("text below", result.stderr)
+        for name in ("cut_strategies_time", "cut_strategies_ratio", "cut_strategies_error"):
+            for ext in (".png", ".pdf"):
+                self.assertTrue(os.path.exists(os.path.join(self.scratch, "paper_figures", name + ext)), name + ext)
+
+    def setUp(self):
+        self.scratch = tempfile.mkdtemp(prefix="cutaway-plots-")
+
+    def tearDown(self):
+        shutil.rmtree(self.scratch)
 
 
 if __name__ == "__main__":
