@@ -13,6 +13,7 @@ SECOND_VIEW = ("--camera", 215, 45, 0)  # the far side, higher: the paper's seco
 # Fig. 14's two-property row: primaries in the high-porosity channels (a spatially coherent
 # cluster in the generated models, as fig. 15's first window), shown among cells coloured by PERMX.
 TWO_PROPERTIES_PORO = (0.30, 0.40)
+FRONT_RANGE = (0.5, 1.0)  # fig. 11's primaries: SWAT behind the waterflood's front
 
 
 def figure_specs(model, steps, swat_range):
@@ -35,8 +36,12 @@ def figure_specs(model, steps, swat_range):
          "panels": [("the cut made here (azimuth 35)", ["--camera", 35, 30, 0]),
                     ("turned to azimuth 80: cut follows", ["--camera", 80, 30, 0]),
                     ("turned to azimuth 80: cut frozen", ["--camera", 80, 30, 0, "--freeze-camera", 35, 30, 0])]},
-        {"name": "fig11_aperture180_steps", "title": "Fig. 11: aperture 180 degrees over SWAT time steps",
-         "panels": [(f"SWAT step {s}", ["--aperture-180", "--property", "SWAT", "--step", s, "--colour-range", *swat_range])
+        # One primary range for every step (the swept zone behind the flood front, SWAT 0.5-1), as
+        # a reservoir engineer tracks a front: a top fraction taken anew at each step selects the
+        # same number of cells whatever the water did.
+        {"name": "fig11_aperture180_steps", "title": "Fig. 11: aperture 180 degrees over SWAT time steps, primaries SWAT 0.5-1",
+         "panels": [(f"SWAT step {s}", ["--aperture-180", "--property", "SWAT", "--step", s, "--range", *FRONT_RANGE,
+                                        "--colour-range", *swat_range])
                     for s in steps]},
         {"name": "fig12_hidden_lines", "title": "Fig. 12: internal lines of secondaries shown / hidden", "zoom": True,
          "panels": [("internal lines", []), ("hidden internal lines", ["--hide-internal-lines"])]},
@@ -45,17 +50,24 @@ def figure_specs(model, steps, swat_range):
     ]
 
 
-def models_figure(presets, size):
+MODEL_PROPERTIES = ("PORO", "PERMX", "NTG", "SWAT")  # fig. 14's rows (sapphire has no FACIES)
+
+
+def models_figure(presets, size, row_options):
     """Fig. 14: the four models, each coloured by a different property, from two views each; a last
     row shows two properties in one frame (the paper's ZMap row; shared/data has no ZMap model, so
     the first preset stands in): cells coloured by PERMX, primaries picked by PORO's high-porosity
-    window (`render --select-by PORO`)."""
-    properties = ("PORO", "PERMX", "NTG", "SWAT")  # SWAT: step 0 (sapphire has no FACIES)
-    rows = [[(f"{p} ({prop}), azimuth {view[1]}", ["--property", prop, *view], f"preset:{p}") for view in (CAMERA, SECOND_VIEW)]
-            for p, prop in zip(presets, properties)]
+    window (`render --select-by PORO`). `row_options`: per property of MODEL_PROPERTIES (and
+    "two_properties"), (caption suffix, options) fitting it to its model's data (models_options)."""
+    rows = []
+    for p, prop in zip(presets, MODEL_PROPERTIES):
+        suffix, options = row_options.get(prop, ("", []))
+        rows.append([(f"{p} ({prop}{suffix}), azimuth {view[1]}", ["--property", prop, *options, *view], f"preset:{p}")
+                     for view in (CAMERA, SECOND_VIEW)])
     lo, hi = TWO_PROPERTIES_PORO
+    _, colour = row_options.get("two_properties", ("", []))
     rows.append([(f"{presets[0]}: PERMX colours, primaries PORO {lo:.2f}-{hi:.2f}, azimuth {view[1]}",
-                  ["--property", "PERMX", "--select-by", "PORO", "--range", lo, hi, *view], f"preset:{presets[0]}")
+                  ["--property", "PERMX", "--select-by", "PORO", "--range", lo, hi, *colour, *view], f"preset:{presets[0]}")
                  for view in (CAMERA, SECOND_VIEW)])
     return {"name": "fig14_models",
             "title": "Fig. 14: the four synthetic models with properties, two views each; last row: two properties",
