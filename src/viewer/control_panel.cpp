@@ -1,6 +1,7 @@
 #include "viewer/control_panel.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <variant>
@@ -259,7 +260,7 @@ unsigned volumes_section(ViewerState& state, const ViewerScene& scene, PanelRequ
 unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const PanelInfo& info,
                             PanelRequests& requests) {
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(360, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);  // 360 clipped "aperture H (full)"
     unsigned changes = change_none;
     if (ImGui::Begin("cutaway")) {
         ImGui::TextWrapped("%s", scene.description().c_str());
@@ -273,6 +274,10 @@ unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const 
         if (ImGui::CollapsingHeader("lines and post-processing")) changes |= lines_and_post_section(state);
         if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen)) changes |= view_section(state, info, requests);
     }
+    const float width = ImGui::GetIO().DisplaySize.x;
+    const float share = ImGui::IsWindowCollapsed() || width <= 0 ? 0.0f : (ImGui::GetWindowPos().x + ImGui::GetWindowWidth()) / width;
+    if (std::abs(share - state.panel_share) > 1e-3f) changes |= change_frame;
+    state.panel_share = share;
     ImGui::End();
     return changes;
 }

@@ -129,8 +129,10 @@ int ViewerApp::render_height() const { return std::max(1, int(std::lround(window
 
 pipeline::Camera ViewerApp::camera_for(const pipeline::OrbitPose& pose) const {
     const pipeline::CutawayRenderer& renderer = scene_->renderer();
+    // The panel covers the image's left columns: the model is framed right of it.
+    const float panel_px = state_.ui_visible ? state_.panel_share * float(render_width()) : 0.0f;
     return pipeline::make_orbit_camera(renderer.frame(), pose, render_width(), render_height(),
-                                       renderer.status(settings_).colour_bar_reserved_width);
+                                       renderer.status(settings_).colour_bar_reserved_width, panel_px);
 }
 
 int ViewerApp::run() {

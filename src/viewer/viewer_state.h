@@ -19,6 +19,9 @@ struct ViewerState {
     int frames_per_step = 8;                       ///< frames from one report step to the next while playing
     std::string coherence = "smooth";              ///< how play moves between steps (temporal::Coherence by name)
     bool ui_visible = true;                        ///< control panel and timing overlay
+    /// Share of the window's width the control panel covers from its left edge (0: hidden or
+    /// collapsed): the model is framed to the right of it.
+    float panel_share = 0;
     float render_scale = 1;                        ///< render size / window framebuffer size
     /// While the view moves, frames are drawn smaller to hold this many per second (interaction_
     /// resolution.h); the full size once it stops. 0: always the full size.

@@ -61,6 +61,13 @@ void check_framing(const grid::CornerPointGrid& grid, const char* name, int widt
         // The model stays inside the panel and left of the colour bar: they never overlap.
         EXPECT_GE(box.x0, 0);
         EXPECT_LT(float(box.x1), bounds.x0) << "model reaches under the colour bar, " << name << " azimuth " << pose.azimuth_deg;
+        // The viewer's control panel keeps the left columns too: the model is framed between.
+        const float panel = 0.3f * float(width);
+        renderer->render(settings, pipeline::make_orbit_camera(renderer->frame(), pose, width, height,
+                                                               renderer->status(settings).colour_bar_reserved_width, panel));
+        const PixelBox beside = model_pixels(pipeline::FrameReadback(*renderer).read_eclipse_ids(), width, height);
+        EXPECT_GE(float(beside.x0), panel - 1.0f) << "model under the panel, " << name << " azimuth " << pose.azimuth_deg;
+        EXPECT_LT(float(beside.x1), bounds.x0) << "model under the colour bar beside the panel, " << name;
 
         // The bar draws exactly where its layout says: over the background (the model stays clear
         // of the bar, checked above), the frame with and without it differs only inside the
