@@ -363,7 +363,8 @@ def plot_error(plt, rows, protocol, path):
     w, h = protocol["quality_size"]
     az, el, _ = protocol["quality_camera_az_el_dist"]
     fig.suptitle(f"Cut error against the exact cone field ({w}x{h}, pose {az}/{el}, aperture {APERTURE_DEG} deg),\n"
-                 f"one point per model and primary fraction ({len(configurations)} per strategy)")
+                 f"one point per model and primary fraction ({len(configurations)} per strategy); the frustum strategies\n"
+                 f"cut the paper's frustum union, another surface than the cone field: their error is that difference")
     cx.save_figure(fig, path)
     plt.close(fig)
 
