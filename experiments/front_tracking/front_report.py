@@ -25,9 +25,12 @@ def protocol(camera, video, models):
             "video": video,
             "context_share": "per frame: pixels showing a secondary cell's own surface (not primary, cut fill or "
                              "border line) over pixels showing any cell. The target compares its mean over the frames "
-                             "at report steps, where both modes show the same step's values (between steps none still "
-                             "shows the step before while smooth moves on: a growing front leaves smooth less context "
-                             "there by the lag alone); the mean over all frames is reported beside it",
+                             "at report steps after the first, where both modes show the same step's values and "
+                             "primaries (between steps none still shows the step before while smooth moves on: a "
+                             "growing front leaves smooth less context there by the values alone). The first frame is "
+                             "reported apart: it has no frame before it to flicker against, and smooth shows there the "
+                             "cuts of the cells entering in the frames after it already opening; the mean over all "
+                             "frames is reported beside it",
             "targets": {"primary_exposure_min": 1.0, "cut_flicker_max none/smooth": FLICKER_RATIO,
                         "pop_max none/smooth": POP_RATIO, "context_share at report steps |smooth/none - 1|": CONTEXT_TOLERANCE,
                         "frame_over_render": ANIMATE_OVER_RENDER}}
@@ -83,10 +86,11 @@ def model_entry(case, model, steps, runs, dates):
              "range": list(model["range"]), "dates_figure": dates, "runs": {}}
     for mode, stats in runs.items():
         frames = stats["frames"]
-        at_steps = [f["context_share"] for f in frames if "context_share" in f and float(f["time_step"]).is_integer()]
+        at_steps = [f["context_share"] for f in frames[1:] if "context_share" in f and float(f["time_step"]).is_integer()]
         entry["runs"][mode] = {
             **{k: stats.get(k) for k in SUMMARIES},
             "context_share_at_steps": statistics.mean(at_steps) if at_steps else None,
+            "context_share_first_frame": frames[0].get("context_share"),
             "colour_range": stats["property"]["colour_range"], "primary_range": stats["property"]["primary_range"],
             "hysteresis_band": stats["property"]["hysteresis_band"], "strategy": stats["strategy"],
             "upload": _upload_per_active_cell(frames, stats["active_cells"]),
@@ -140,7 +144,9 @@ def targets(document):
             "pop_max": {"none": none["pop_max"], "smooth": smooth["pop_max"], "ratio": pops, "holds": pops >= POP_RATIO},
             "context_share_at_steps": {"none": none["context_share_at_steps"], "smooth": smooth["context_share_at_steps"],
                                        "relative_change": context, "holds": abs(context) <= CONTEXT_TOLERANCE,
-                                       "all_frames": {"none": none["context_share_mean"], "smooth": smooth["context_share_mean"]}}}
+                                       "all_frames": {"none": none["context_share_mean"], "smooth": smooth["context_share_mean"]},
+                                       "first_frame": {"none": none["context_share_first_frame"],
+                                                       "smooth": smooth["context_share_first_frame"]}}}
     timing = document["timing"]
     result["animate_over_render"] = {"model": timing["model"], "ratio": timing["frame_over_render"],
                                      "holds": timing["frame_over_render"] <= ANIMATE_OVER_RENDER}
@@ -209,7 +215,7 @@ def readme_body(document):
     lines = ["Context: " + p["context_share"] + ".", "",
              "## Targets", "",
              "| model | property, size, frames | exposure min none / smooth | cut flicker max none / smooth (ratio) "
-             "| pop max none / smooth (ratio) | context share at report steps none / smooth (change); all frames |",
+             "| pop max none / smooth (ratio) | context share at report steps none / smooth (change); first frame; all frames |",
              "|---|---|---|---|---|---|"]
     for name, entry in document["models"].items():
         m, model = t[name], p["models"][name]
@@ -221,6 +227,7 @@ def readme_body(document):
                      f"{_number(f['none'], 3)} / {_number(f['smooth'], 3)} ({_number(f['ratio'], 3)}x) {_mark(f['holds'])} | "
                      f"{q['none']} / {q['smooth']} ({_number(q['ratio'], 3)}x) {_mark(q['holds'])} | "
                      f"{_number(c['none'], 3)} / {_number(c['smooth'], 3)} ({100 * c['relative_change']:+.1f}%) {_mark(c['holds'])}; "
+                     f"{_number(c['first_frame']['none'], 3)} / {_number(c['first_frame']['smooth'], 3)}; "
                      f"{_number(c['all_frames']['none'], 3)} / {_number(c['all_frames']['smooth'], 3)} |")
     timing, a = document["timing"], t["animate_over_render"]
     lines += ["", f"Targets: exposure min 1.0 in both modes; none/smooth ratio of cut flicker max and of pop max at least "
@@ -230,15 +237,14 @@ def readme_body(document):
                                                  f"({w['primaries_before']} -> {w['primaries_after']} primaries)"
                                                  for mode, w in entry["largest_flicker"].items()])
     lines += ["", "Smooth spreads a step's many entries and exits over its frames (pops and flicker fall about as many "
-                  "times as there are frames per step), and each cell that enters opens its own cut over a report step's frames "
-                  "and one more (from where its view rays enter the model, or beside primaries from their walls, to the "
-                  "cell's rear) before it is drawn as a primary; a cell that leaves is drawn as long after, then its cut "
-                  "closes; the seed strategies' cone slope follows the primaries' centroid a share per frame. A single "
-                  "cell entering in a new place so flips its cut a share at a time. The opening's length trades flicker "
-                  "against lag (fewer primaries drawn yet, more context at report steps); its length and pace are "
-                  "empirical choices on zaphirus and SPE9 (src/cutaway/temporal/cell_openings.h gives the alternatives "
-                  "measured). Pops are whole cells and cannot be split over frames: a 3x lower pop max needs none's to "
-                  "be at least 3.", "",
+                  "times as there are frames per step), and each cell that enters opens its own cut over the frames of a "
+                  "report step before it enters (from where its view rays enter the model, or beside primaries from "
+                  "their walls, to the cell's rear; the frames ahead are made before they are shown), so it is drawn as "
+                  "a primary the frame it is selected; a cell that leaves closes its cut over as many frames after; the "
+                  "seed strategies' cone slope follows the primaries' centroid a share per frame. A single cell entering "
+                  "in a new place so flips its cut a share at a time. The opening's length and pace are empirical "
+                  "choices on zaphirus and SPE9 (src/cutaway/temporal/cell_openings.h). Pops are whole cells and "
+                  "cannot be split over frames: a 3x lower pop max needs none's to be at least 3.", "",
                   "Upload per switch of report step (bytes per active cell, largest over the run):", ""]
     lines += _per_model(document, lambda entry: [f"{mode} {_number(run['upload']['step_switch_max'], 3)} at report "
                                                  f"steps, {_number(run['upload']['frame_max'], 3)} at any frame"

@@ -47,11 +47,9 @@ namespace {
 
 using nlohmann::json;
 
-/// Per-cell arrays the animation holds besides the model: two report steps, their blend, the
-/// paced transition's two times and the renderer's compact copy of the colouring (4 bytes each),
-/// flags at the two steps, between them, drawn and of the frame before, and the cell openings'
-/// level and history (1 each).
-constexpr std::size_t animation_bytes_per_cell = 6 * 4 + 7;
+/// Per-cell arrays the animation holds besides the model: the sequence's, the renderer's compact
+/// copy of the colouring (4 bytes) and the flags of the frame before (1).
+constexpr std::size_t animation_bytes_per_cell = temporal::CoherentSequence::bytes_per_cell + 4 + 1;
 /// Per-pixel arrays besides the render targets: the frame handed to ffmpeg and the one being
 /// read (4 bytes each), two frames' cut states (1 each).
 constexpr std::size_t animation_bytes_per_pixel = 4 * 2 + 2;

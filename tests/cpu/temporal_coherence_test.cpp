@@ -120,54 +120,67 @@ std::vector<float> opening_by_cell(const CellOpenings& openings, std::size_t cel
     return by_cell;
 }
 
-TEST(CellOpenings, AnEntryOpensItsCutBeforeItIsDrawnAndAnExitClosesItAfter) {
-    CellOpenings openings(4, {2, 1, 1});
-    std::vector<std::uint8_t> drawn;
-    // Cell 0 selected from the start (drawn at once), cell 1 enters at frame 1, cell 0 leaves at 2.
-    const std::vector<std::vector<std::uint8_t>> selected{{1, 0}, {1, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}};
-    const std::vector<std::vector<std::uint8_t>> expected_drawn{{1, 0}, {1, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}};
-    // Beside the cut (each cell opens beside the other, drawn): (level / 4)^(3/8).
-    const float q1 = std::pow(0.25f, 0.375f), q2 = std::pow(0.5f, 0.375f), q3 = std::pow(0.75f, 0.375f);
-    const std::vector<std::vector<float>> expected_openings{{0, 0}, {0, q1}, {0, q2}, {0, q3}, {0, 0}, {q3, 0}, {q2, 0}, {q1, 0}, {0, 0}};
+/// Runs `openings` over `selected` (one frame each), each frame's window the frames ahead as far as
+/// `frames_to_open` reaches; `check` sees every frame.
+void run_openings(CellOpenings& openings, std::size_t frames_to_open, const std::vector<std::vector<std::uint8_t>>& selected,
+                  const std::function<void(std::size_t)>& check) {
     for (std::size_t f = 0; f < selected.size(); ++f) {
-        openings.next(selected[f], drawn);
-        EXPECT_EQ(drawn, expected_drawn[f]) << "frame " << f;
-        const std::vector<float> by_cell = opening_by_cell(openings, 2);
-        for (std::size_t c = 0; c < 2; ++c) EXPECT_NEAR(by_cell[c], expected_openings[f][c], 1e-6f) << "frame " << f << " cell " << c;
-        // A cell is never drawn while its cut is still opening or closing.
-        for (const OpeningCell& cell : openings.openings()) {
-            EXPECT_EQ(drawn[cell.cell], 0) << "frame " << f;
-            // The other cell, its face neighbour, is drawn while this one opens or closes.
-            EXPECT_TRUE(cell.beside_cut) << "frame " << f;
-        }
+        std::vector<const std::vector<std::uint8_t>*> window;
+        for (std::size_t k = f; k < selected.size() && k < f + frames_to_open; ++k) window.push_back(&selected[k]);
+        openings.next(window);
+        check(f);
     }
 }
 
-TEST(CellOpenings, ABriefSelectionIsNeverDrawnAndOneFrameToOpenChangesNothing) {
+TEST(CellOpenings, AnEntryOpensItsCutBeforeItIsDrawnAndAnExitClosesItAfter) {
+    CellOpenings openings(4, {2, 1, 1});
+    // Cell 0 selected from the start, cell 1 enters at frame 4, cell 0 leaves at 5.
+    const std::vector<std::vector<std::uint8_t>> selected{{1, 0}, {1, 0}, {1, 0}, {1, 0}, {1, 1},
+                                                          {0, 1}, {0, 1}, {0, 1}, {0, 1}, {0, 1}};
+    // Beside the cut (each cell opens beside the other, drawn): (level / 4)^(3/8). Cell 1's cut
+    // opens over the 3 frames before it enters, cell 0's closes over the 3 after it leaves.
+    const float q1 = std::pow(0.25f, 0.375f), q2 = std::pow(0.5f, 0.375f), q3 = std::pow(0.75f, 0.375f);
+    const std::vector<std::vector<float>> expected{{0, 0},  {0, q1}, {0, q2}, {0, q3}, {0, 0},
+                                                   {q3, 0}, {q2, 0}, {q1, 0}, {0, 0},  {0, 0}};
+    run_openings(openings, 4, selected, [&](std::size_t f) {
+        const std::vector<float> by_cell = opening_by_cell(openings, 2);
+        for (std::size_t c = 0; c < 2; ++c) EXPECT_NEAR(by_cell[c], expected[f][c], 1e-6f) << "frame " << f << " cell " << c;
+        for (const OpeningCell& cell : openings.openings()) {
+            // A selected cell is drawn, its cut open: never among the openings.
+            EXPECT_EQ(selected[f][cell.cell], 0) << "frame " << f;
+            // The other cell, its face neighbour, is drawn while this one opens or closes.
+            EXPECT_TRUE(cell.beside_cut) << "frame " << f;
+        }
+    });
+}
+
+TEST(CellOpenings, ABriefSelectionOpensAheadAShortAbsenceKeepsTheCutAndOneFrameChangesNothing) {
     CellOpenings openings(4, {1, 1, 1});
-    std::vector<std::uint8_t> drawn;
-    openings.next({0}, drawn);
-    openings.next({1}, drawn);  // selected for one frame only: opens a quarter, then closes
-    ASSERT_EQ(openings.openings().size(), 1u);
-    EXPECT_FALSE(openings.openings()[0].beside_cut);  // alone: its cut opens from the model's top
-    EXPECT_FLOAT_EQ(openings.openings()[0].opening, std::pow(0.25f, 1.25f));
-    for (int f = 0; f < 6; ++f) {
-        openings.next({0}, drawn);
-        EXPECT_EQ(drawn[0], 0) << f;
-    }
-    EXPECT_TRUE(openings.openings().empty());
+    // Selected at frame 3 only: its cut opens from frame 0 (3 frames ahead), closes after it.
+    const std::vector<std::vector<std::uint8_t>> brief{{0}, {0}, {0}, {1}, {0}, {0}, {0}, {0}, {0}};
+    const std::vector<float> levels{1, 2, 3, 0, 3, 2, 1, 0, 0};
+    run_openings(openings, 4, brief, [&](std::size_t f) {
+        // Alone (no neighbour drawn): its cut opens from where the view rays enter the model.
+        EXPECT_NEAR(opening_by_cell(openings, 1)[0], CellOpenings::depth_share(levels[f] / 4.0f, false), 1e-6f) << f;
+        for (const OpeningCell& cell : openings.openings()) EXPECT_FALSE(cell.beside_cut);
+    });
+    // Absent for one frame between two selections: its cut stays fully open meanwhile.
+    CellOpenings gap(4, {1, 1, 1});
+    const std::vector<std::vector<std::uint8_t>> absent{{1}, {0}, {1}, {1}};
+    run_openings(gap, 4, absent, [&](std::size_t f) {
+        EXPECT_FLOAT_EQ(opening_by_cell(gap, 1)[0], f == 1 ? 1.0f : 0.0f) << f;
+    });
     CellOpenings at_once(1, {2, 1, 1});
-    for (const std::vector<std::uint8_t>& selected : {std::vector<std::uint8_t>{1, 0}, {0, 1}, {1, 1}}) {
-        at_once.next(selected, drawn);
-        EXPECT_EQ(drawn, selected);
-        EXPECT_TRUE(at_once.openings().empty());
-    }
+    run_openings(at_once, 1, {{1, 0}, {0, 1}, {1, 1}}, [&](std::size_t) { EXPECT_TRUE(at_once.openings().empty()); });
     EXPECT_EQ(frames_to_open(4), 5u);
     EXPECT_EQ(frames_to_open(1), 2u);
     EXPECT_EQ(frames_to_open(24), CellOpenings::max_frames_to_open);
     EXPECT_THROW(CellOpenings(0, {1, 1, 1}), std::invalid_argument);
     EXPECT_THROW(CellOpenings(CellOpenings::max_frames_to_open + 1, {1, 1, 1}), std::invalid_argument);
-    EXPECT_THROW(at_once.next({1}, drawn), std::invalid_argument);  // one flag for a grid of two cells
+    const std::vector<std::uint8_t> one{1}, two{1, 0};
+    EXPECT_THROW(at_once.next({&one}), std::invalid_argument);  // one flag for a grid of two cells
+    EXPECT_THROW(at_once.next({}), std::invalid_argument);      // no frame
+    EXPECT_THROW(at_once.next({&two, &two}), std::invalid_argument);  // a window past its frames to open
 }
 
 TEST(PacedTransition, ChangesSpreadEvenlyInCrossingOrderAndValuesMeetTheLimitThen) {
@@ -215,7 +228,7 @@ std::size_t pop_max(CoherentSequence& sequence, std::size_t frames, std::vector<
             most = std::max(most, pops.in + pops.out);
         }
         previous = *frame.flags;
-        if (all) all->push_back(*frame.selected);
+        if (all) all->push_back(*frame.flags);
     }
     return most;
 }
@@ -235,7 +248,7 @@ protected:
         for (std::size_t f = 0; f < timeline.frame_count(); ++f) {
             const CoherentSequence::Frame frame = sequence.next();
             if (f % timeline.frames_per_step == 0) {
-                EXPECT_EQ(*frame.selected, reference.update(source.values(f / timeline.frames_per_step))) << "frame " << f;
+                EXPECT_EQ(*frame.flags, reference.update(source.values(f / timeline.frames_per_step))) << "frame " << f;
             }
             if (check) check(f, frame);
         }
@@ -273,27 +286,39 @@ TEST_F(ShockFront, SmoothSpreadsEachStepsChangesOverItsFrames) {
     EXPECT_LE(smooth_max, (none_max + per_step - 1) / per_step);
 }
 
-TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensCellsCutsBeforeDrawingThem) {
-    // A band the front reaches only at step 2: the primaries appear during the animation.
+TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensCellsCutsBeforeTheyEnter) {
+    // A band the front reaches only after step 1: the primaries appear during the animation.
     const grid::PrimaryRange late{0.75f, 0.8f};
     const AnimationTimeline timeline{0, 4, 4};
     CoherentSequence none(grid, source, timeline, Coherence::none, late, 0.0f);
     CoherentSequence smooth(grid, source, timeline, Coherence::smooth, late, 0.0f);
-    std::size_t first_opening = timeline.frame_count(), first_drawn = timeline.frame_count();
+    const std::size_t opening_frames = frames_to_open(4);  // 5: opening over the 4 frames before entry
+    std::vector<std::vector<float>> opening;             // per frame, per cell
+    std::vector<std::vector<std::uint8_t>> flags;        // per frame, smooth's
     for (std::size_t f = 0; f < timeline.frame_count(); ++f) {
         const CoherentSequence::Frame n = none.next(), s = smooth.next();
         EXPECT_EQ(n.primary_cells, metrics::count_pops(std::vector<std::uint8_t>(n.flags->size(), 0), *n.flags).in) << f;
-        EXPECT_EQ(*n.flags, *n.selected) << f;  // the paper's cut: drawn as selected, no opening
         EXPECT_TRUE(n.openings->empty()) << f;
         EXPECT_EQ(s.primary_cells, grid::count_primaries(*s.flags)) << f;
-        for (const OpeningCell& cell : *s.openings) EXPECT_EQ((*s.flags)[cell.cell], 0) << f;
-        if (!s.openings->empty()) first_opening = std::min(first_opening, f);
-        if (s.primary_cells > 0) first_drawn = std::min(first_drawn, f);
+        opening.emplace_back(s.flags->size(), 0.0f);
+        for (const OpeningCell& cell : *s.openings) {
+            EXPECT_EQ((*s.flags)[cell.cell], 0) << f;
+            opening.back()[cell.cell] = cell.opening;
+        }
+        flags.push_back(*s.flags);
     }
-    EXPECT_GT(first_opening, 0u);  // the band is empty at step 0
-    // The first cells' cuts open over frames_to_open(4) = 5 frames, the last of them the first
-    // they are drawn.
-    EXPECT_EQ(first_drawn, first_opening + frames_to_open(4) - 1);
+    // Each cell that enters at frame f had its cut opening, wider frame by frame, in the frames
+    // f - 4 .. f - 1: it is drawn the frame its cut is open, not later.
+    std::size_t entries = 0;
+    for (std::size_t f = opening_frames; f < flags.size(); ++f)
+        for (std::size_t c = 0; c < flags[f].size(); ++c) {
+            if (!flags[f][c] || flags[f - 1][c]) continue;
+            ++entries;
+            EXPECT_EQ(opening[f - opening_frames][c], 0.0f) << "frame " << f << " cell " << c;
+            for (std::size_t k = f - opening_frames + 1; k < f; ++k)
+                EXPECT_GT(opening[k][c], opening[k - 1][c]) << "frame " << k << " cell " << c;
+        }
+    EXPECT_GT(entries, 0u);
 }
 
 TEST_F(ShockFront, SmoothHysteresisKeepsPrimariesTheBandCovers) {

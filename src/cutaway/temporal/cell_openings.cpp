@@ -22,34 +22,29 @@ CellOpenings::CellOpenings(std::size_t frames_to_open, const grid::GridDims& dim
                                     " frames to open, found " + std::to_string(frames_to_open));
 }
 
-void CellOpenings::next(const std::vector<std::uint8_t>& selected, std::vector<std::uint8_t>& drawn) {
-    if (selected.size() != dims_.cell_count())
-        throw std::invalid_argument("cell openings: " + std::to_string(selected.size()) + " flags, expected " +
-                                    std::to_string(dims_.cell_count()));
-    drawn.assign(selected.size(), 0);
+void CellOpenings::next(const std::vector<const std::vector<std::uint8_t>*>& window) {
+    if (window.empty() || window.size() > full_)
+        throw std::invalid_argument("cell openings: a window of " + std::to_string(window.size()) + " frames, expected 1.." +
+                                    std::to_string(int(full_)));
+    for (const std::vector<std::uint8_t>* flags : window)
+        if (flags->size() != dims_.cell_count())
+            throw std::invalid_argument("cell openings: " + std::to_string(flags->size()) + " flags, expected " +
+                                        std::to_string(dims_.cell_count()));
+    const std::vector<std::uint8_t>& drawn = *window.front();
     openings_.clear();
-    if (level_.size() != selected.size()) {
-        // The first frame: every selected cell open, and selected in the frames "before" it.
-        level_.resize(selected.size());
-        history_.resize(selected.size());
-        for (std::size_t c = 0; c < selected.size(); ++c) {
-            level_[c] = selected[c] ? full_ : 0;
-            history_[c] = selected[c] ? 0xff : 0;
-        }
-    }
-    const unsigned lag_bit = 1u << (full_ - 1);
-    for (std::size_t c = 0; c < selected.size(); ++c) {
-        history_[c] = std::uint8_t((history_[c] << 1) | (selected[c] ? 1u : 0u));
-        // Drawn: selected frames_to_open - 1 frames ago, with its cut open; a drawn cell keeps its
-        // cut whatever the selection says now (it left: the cut closes once it is no longer drawn).
-        const bool lagged = (history_[c] & lag_bit) != 0;
+    if (level_.size() != drawn.size()) level_.assign(drawn.size(), 0);  // the first frame
+    for (std::size_t c = 0; c < drawn.size(); ++c) {
         std::uint8_t& level = level_[c];
-        if (!(lagged && level == full_)) {
-            if (selected[c] && level < full_) ++level;
-            else if (!selected[c] && level > 0) --level;
+        if (drawn[c]) {
+            level = full_;
+            continue;
         }
-        if (lagged && level == full_) drawn[c] = 1;
-        else if (level > 0) openings_.push_back({std::uint32_t(c), float(double(level) / double(full_))});
+        // Frames until the cell is selected (window.size(): not within the window).
+        std::size_t ahead = 1;
+        while (ahead < window.size() && !(*window[ahead])[c]) ++ahead;
+        if (ahead < window.size()) level = std::max(level, std::uint8_t(full_ - ahead));
+        else if (level > 0) --level;
+        if (level > 0) openings_.push_back({std::uint32_t(c), float(double(level) / double(full_))});
     }
     // Beside the cut: a face neighbour is drawn as a primary (its cut is open around the cell).
     const auto drawn_at = [&](int i, int j, int k) {

@@ -1,15 +1,15 @@
 #pragma once
-// Smooth coherence's cut, cell by cell: a cell that enters the primaries opens its own cut before
-// it is drawn as a primary, and a cell that leaves closes it after, each over a few frames.
+// Smooth coherence's cut, cell by cell: a cell that enters the primaries opens its own cut in the
+// frames before it is drawn as a primary, and a cell that leaves closes it in the frames after,
+// each over a few frames.
 // A primary's cut is a frustum from the camera to its rear; a cell entering where nothing was cut
 // flips every pixel of that frustum's cross-section from kept to cut away in one frame, the
 // largest flicker an animation has where single cells enter (SPE9's water). Here the cut of an
 // entering cell reaches deeper frame by frame, from the model's nearest depth (cutting nothing)
 // to the cell's rear (CutawayRenderer::set_opening_cells draws it, FramePass::opening_cut), and
-// the cell is drawn as a primary once the cut has reached it, so every primary pixel of a frame
-// stays visible. Exits mirror entries: the cell is drawn as long after it leaves the selection
-// as entries are late, then its cut closes. So the drawn primaries are the selection of
-// frames_to_open - 1 frames before, the order and pacing of the changes kept. No OpenGL here.
+// is open when the cell enters, so every primary pixel of a frame stays visible. The openings
+// read the selection of the frames ahead (CoherentSequence keeps them), so the drawn primaries
+// are the frame's selection itself: no lag behind the values shown. No OpenGL here.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -30,16 +30,13 @@ struct OpeningCell {
 };
 
 /// Frames over which smooth coherence opens a cell's cut: a report step's frames and one more, at
-/// most CellOpenings::max_frames_to_open; a cell is drawn that many frames less one after it
-/// enters. Longer openings flicker less and lag more: on zaphirus's waterflood at 4 frames per
-/// step (960x540), opening over 4, 5, 6 and 8 frames lowered the largest flicker 2.5, 3.1, 3.6
-/// and 4.0 times against none's and raised the context share at report steps by 6, 10, 15 and
-/// 22% (fewer primaries drawn yet); 5 is where both targets of issue 44 hold.
+/// most CellOpenings::max_frames_to_open; the last of them is the first the cell is drawn.
+/// Longer openings flicker less (results/front_tracking measures the flicker against none's).
 std::size_t frames_to_open(std::size_t frames_per_step);
 
 class CellOpenings {
 public:
-    /// The most frames a cut takes to open (the history kept per cell is one byte).
+    /// The most frames a cut takes to open (CoherentSequence keeps as many frames ahead).
     static constexpr std::size_t max_frames_to_open = 8;
 
     /// `frames_to_open`: frames over which a cell's cut opens, the last of them the first the cell
@@ -48,15 +45,17 @@ public:
     /// `dims`: the grid's, for the cells' neighbours.
     CellOpenings(std::size_t frames_to_open, const grid::GridDims& dims);
 
-    /// The next frame: `selected` are the frame's primary flags as coherence selects them (one per
-    /// Eclipse cell); `drawn` receives the flags of the cells drawn as primaries: those selected
-    /// frames_to_open - 1 frames before whose cut is open. A cell's cut level moves one step per
-    /// frame towards full while it is selected or drawn, towards 0 otherwise; between the two its
-    /// cut is opening by depth_share(level / full). The first frame finds every selected cell
-    /// drawn (nothing was shown before it to flicker against).
-    void next(const std::vector<std::uint8_t>& selected, std::vector<std::uint8_t>& drawn);
+    /// The next frame. `window[k]` holds the primary flags (one per Eclipse cell) k frames on:
+    /// window[0] the frame's own selection, drawn as it is; then up to frames_to_open - 1 frames
+    /// ahead (fewer at an animation's end). A cell selected d frames on opens its cut to at least
+    /// (frames_to_open - d) / frames_to_open of its frames; a cell selected nowhere in the window
+    /// closes its cut one frame's share per frame. Between the two its cut is opening by
+    /// depth_share. The first frame finds the cuts of the frame's selection open (nothing was
+    /// shown before it to flicker against).
+    void next(const std::vector<const std::vector<std::uint8_t>*>& window);
 
-    /// The cells opening or closing in the last frame, by Eclipse index.
+    /// The cells opening or closing in the last frame, by Eclipse index (never one of its
+    /// selection).
     const std::vector<OpeningCell>& openings() const { return openings_; }
 
     /// The share of its depth a cell's cut reaches after `frames_share` of its frames to open.
@@ -72,8 +71,7 @@ public:
 private:
     std::uint8_t full_;
     grid::GridDims dims_;
-    std::vector<std::uint8_t> level_;    ///< per Eclipse cell, 0..full_
-    std::vector<std::uint8_t> history_;  ///< per Eclipse cell, bit k: selected k frames before (k < 8)
+    std::vector<std::uint8_t> level_;  ///< per Eclipse cell, 0..full_: frames of its cut open
     std::vector<OpeningCell> openings_;
 };
 

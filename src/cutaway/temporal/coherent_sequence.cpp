@@ -18,14 +18,7 @@ CoherentSequence::CoherentSequence(const grid::CornerPointGrid& grid, const Step
     if (coherence_ == Coherence::smooth) openings_.emplace(frames_to_open(timeline_.frames_per_step), grid.dims());
 }
 
-CoherentSequence::Frame CoherentSequence::finished(Frame frame) {
-    frame.selected = frame.flags;
-    frame.openings = &no_openings_;
-    if (openings_) {
-        openings_->next(*frame.flags, drawn_);
-        frame.flags = &drawn_;
-        frame.openings = &openings_->openings();
-    }
+CoherentSequence::Frame CoherentSequence::counted(Frame frame) {
     frame.primary_cells = std::size_t(std::count_if(frame.flags->begin(), frame.flags->end(), [](std::uint8_t f) { return f != 0; }));
     return frame;
 }
@@ -55,13 +48,36 @@ void CoherentSequence::advance_to(std::size_t step) {
 }
 
 CoherentSequence::Frame CoherentSequence::next() {
-    if (next_frame_ >= timeline_.frame_count())
-        throw std::logic_error("animation: frame " + std::to_string(next_frame_) + " past the last (" +
+    if (returned_frames_ >= timeline_.frame_count())
+        throw std::logic_error("animation: frame " + std::to_string(returned_frames_) + " past the last (" +
                                std::to_string(timeline_.frame_count() - 1) + ")");
-    const std::size_t frame = next_frame_++;
+    ++returned_frames_;
+    if (!openings_) return counted(make_frame());
+    const std::size_t window_frames = frames_to_open(timeline_.frames_per_step);
+    while (ahead_.size() < window_frames && made_frames_ < timeline_.frame_count()) {
+        const Frame made = make_frame();
+        ahead_.push_back({made.time_step, *made.values, *made.flags, made.values_changed});
+    }
+    current_ = std::move(ahead_.front());
+    ahead_.pop_front();
+    window_.assign(1, &current_.flags);
+    for (std::size_t k = 0; k + 1 < window_frames && k < ahead_.size(); ++k) window_.push_back(&ahead_[k].flags);
+    openings_->next(window_);
+    Frame frame;
+    frame.time_step = current_.time_step;
+    frame.values = &current_.values;
+    frame.flags = &current_.flags;
+    frame.values_changed = current_.values_changed;
+    frame.openings = &openings_->openings();
+    return counted(frame);
+}
+
+CoherentSequence::Frame CoherentSequence::make_frame() {
+    const std::size_t frame = made_frames_++;
     const StepBlend blend = blend_at(timeline_, frame, coherence_);
     Frame result;
     result.time_step = timeline_.time_step(frame);
+    result.openings = &no_openings_;
     const bool new_step = lower_step_ != blend.lower;
     if (new_step) advance_to(blend.lower);
     if (blend.weight == 0.0f) {
@@ -69,13 +85,13 @@ CoherentSequence::Frame CoherentSequence::next() {
         result.flags = &was_;
         // Held steps (none between report steps) change nothing.
         result.values_changed = new_step || coherence_ == Coherence::smooth;
-        return finished(result);
+        return result;
     }
     transition_.values_at(blend.weight, lower_, upper_, blended_);
     transition_.flags_at(blend.weight, was_, is_, flags_);
     result.values = &blended_;
     result.flags = &flags_;
-    return finished(result);
+    return result;
 }
 
 }  // namespace cutaway::temporal

@@ -1,9 +1,11 @@
 #pragma once
 // The frames of an animation over report steps, in order: each frame's values (the colouring)
 // and primary flags under a coherence mode (coherence.h). Reads each report step from its source
-// once. No OpenGL here.
+// once. Under smooth, frames are made frames_to_open - 1 ahead of the one returned, so that the
+// cuts of cells about to enter open before they do (CellOpenings). No OpenGL here.
 #include <cstddef>
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <vector>
 
@@ -26,15 +28,13 @@ public:
     struct Frame {
         double time_step = 0;                      ///< fractional report step
         const std::vector<float>* values = nullptr;  ///< one per Eclipse cell
-        /// One per Eclipse cell, 1 = drawn as a primary: under none the selection; under smooth
-        /// the selection of frames_to_open - 1 frames before, each cell once its cut is open
-        /// (CellOpenings over frames_to_open(frames_per_step) frames).
+        /// One per Eclipse cell, 1 = selected by the coherence mode in this frame (drawn as a
+        /// primary).
         const std::vector<std::uint8_t>* flags = nullptr;
-        /// One per Eclipse cell, 1 = selected by the coherence mode in this frame.
-        const std::vector<std::uint8_t>* selected = nullptr;
         bool values_changed = true;   ///< false: the same values as the frame before
         std::size_t primary_cells = 0;  ///< flags set
-        /// Under smooth, the cells whose cut is opening or closing; empty under none.
+        /// Under smooth, the cells whose cut is opening (they enter within frames_to_open - 1
+        /// frames) or closing (they left); empty under none.
         const std::vector<OpeningCell>* openings = nullptr;
     };
     /// The next frame (0, 1, ... timeline.frame_count() - 1); the pointers stay valid until the
@@ -44,13 +44,28 @@ public:
     /// Report steps read from the source so far.
     std::size_t steps_read() const { return steps_read_; }
 
+    /// Per-cell bytes the sequence holds at most besides the model (values at two steps and
+    /// between them, the transition's two times, flags at the steps and between them, the frames
+    /// kept ahead and the one returned, and the openings' levels).
+    static constexpr std::size_t bytes_per_cell = 5 * 4 + 3 + (CellOpenings::max_frames_to_open + 1) * 5 + 1;
+
 private:
+    /// A frame made ahead of the one returned (smooth), its arrays its own.
+    struct AheadFrame {
+        double time_step = 0;
+        std::vector<float> values;
+        std::vector<std::uint8_t> flags;
+        bool values_changed = true;
+    };
+    /// The next frame in order as the coherence mode makes it, without openings; the pointers
+    /// stay valid until the next call.
+    Frame make_frame();
     /// Makes `lower_` hold report step `step` and, under smooth, `upper_` the step after it with
     /// the transition between them.
     void advance_to(std::size_t step);
     std::vector<float> read(std::size_t step);
-    /// Under smooth, holds back the selected cells whose cut is still opening; counts the primaries.
-    Frame finished(Frame frame);
+    /// Counts the frame's primaries.
+    static Frame counted(Frame frame);
 
     const StepValueSource& source_;
     AnimationTimeline timeline_;
@@ -58,13 +73,15 @@ private:
     grid::PrimaryRange range_;
     float band_;
     PrimaryTracker tracker_;  ///< memberships at report steps, in step order
-    std::size_t next_frame_ = 0;
+    std::size_t made_frames_ = 0, returned_frames_ = 0;
     std::optional<std::size_t> lower_step_, upper_step_;
     std::vector<float> lower_, upper_, blended_;
     std::vector<std::uint8_t> was_, is_, flags_;  ///< flags at the lower and upper steps, and between
     PacedTransition transition_;
     std::optional<CellOpenings> openings_;  ///< smooth only
-    std::vector<std::uint8_t> drawn_;       ///< the frame's drawn flags (smooth)
+    std::deque<AheadFrame> ahead_;          ///< smooth: frames made, not yet returned
+    AheadFrame current_;                    ///< smooth: the frame returned last
+    std::vector<const std::vector<std::uint8_t>*> window_;  ///< the openings' window (smooth)
     std::vector<OpeningCell> no_openings_;
     std::size_t steps_read_ = 0;
 };
