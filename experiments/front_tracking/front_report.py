@@ -154,24 +154,25 @@ def targets(document):
 
 
 def flicker_pops_figure(document, path):
-    """Per model (columns): cut_flicker and pops (in + out) per frame against the fractional report
-    step, both modes."""
+    """Per model (rows): cut_flicker (left) and pops in + out (right) per frame against the
+    fractional report step, both modes; sized to print at the page width."""
     plt = cx.pyplot()
     names = list(document["models"])
-    fig, axes = plt.subplots(2, len(names), figsize=(4.2 * len(names), 5.2), squeeze=False)
-    for c, name in enumerate(names):
+    fig, axes = plt.subplots(len(names), 2, figsize=(cx.PLOT_WIDTH_IN, 1.0 + 1.9 * len(names)), squeeze=False)
+    for r, name in enumerate(names):
         for mode, run in document["models"][name]["runs"].items():
             series = run["per_frame"]
             t = series["time_step"]
-            axes[0][c].plot(t[1:], series["cut_flicker"][1:], label=mode, color=MODE_COLOURS[mode], linewidth=0.9)
-            axes[1][c].plot(t[1:], series["pops"][1:], label=mode, color=MODE_COLOURS[mode], linewidth=0.9)
-        axes[0][c].set_title(f"{name}: cut flicker per frame")
-        axes[0][c].set_ylabel("share of model pixels changed")
-        axes[1][c].set_title(f"{name}: primary pops per frame")
-        axes[1][c].set_ylabel("cells in + out")
-        axes[1][c].set_xlabel("report step (fractional)")
-        for ax in (axes[0][c], axes[1][c]):
-            ax.legend(title="--coherence")
+            axes[r][0].plot(t[1:], series["cut_flicker"][1:], label=mode, color=MODE_COLOURS[mode], linewidth=0.9)
+            axes[r][1].plot(t[1:], series["pops"][1:], label=mode, color=MODE_COLOURS[mode], linewidth=0.9)
+        axes[r][0].set_title(f"{name}: cut flicker")
+        axes[r][0].set_ylabel("pixels changed (share)")
+        axes[r][1].set_title(f"{name}: primary pops")
+        axes[r][1].set_ylabel("cells in + out")
+    for ax in axes[-1]:
+        ax.set_xlabel("report step (fractional)")
+    axes[0][1].legend(title="--coherence")
+
     cx.save_figure(fig, path)
     plt.close(fig)
 

@@ -30,6 +30,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "common"))
 sys.path.insert(0, os.path.join(HERE, "..", "figures"))
 sys.path.insert(0, HERE)
+import compose  # noqa: E402
 import cutaway_experiment as cx  # noqa: E402
 import front_cases  # noqa: E402
 import front_report  # noqa: E402
@@ -57,6 +58,12 @@ QUICK_MODELS = {"zaphirus": {"case": "zaphirus", "property": "SWAT", "range": (0
 CAMERA = ("--camera", 35, 30, 0)
 VIDEO = {"size": (640, 360), "fps": 12, "crf": 30}
 TIMING_SIZE = FULL_SIZE
+
+
+def print_text_px(panel_width):
+    """--text-height for panels `panel_width` px wide of a figure of 4 panels a row (the dates
+    figure, figure 11): its text prints at 7 pt once compose wraps the rows to its columns."""
+    return compose.min_text_px(compose.figure_width_px(compose.columns_for([[None] * 4]), panel_width))
 
 
 class FrontExperiment:
@@ -100,7 +107,8 @@ class FrontExperiment:
             frames[mode] = os.path.join(scratch, f"frames_{name}_{mode}")
             self.animate(egrid, model, mode, VIDEO["size"], os.path.join(scratch, f"video_{name}_{mode}.json"),
                          self.out(f"{name}_{mode}.mp4"),
-                         ("--no-metrics", "--fps", VIDEO["fps"], "--crf", VIDEO["crf"], "--frames", frames[mode]))
+                         ("--no-metrics", "--fps", VIDEO["fps"], "--crf", VIDEO["crf"], "--frames", frames[mode],
+                          "--text-height", print_text_px(VIDEO["size"][0])))
         return frames
 
     def timing_run(self, name, model, egrid, scratch):
@@ -120,7 +128,8 @@ class FrontExperiment:
         for step in front_report.four_steps(model, len(steps)):
             image = os.path.join(scratch, f"fig11_{step}.png")
             self.exp.render(egrid, *CAMERA, "--aperture-180", "--property", model["property"], "--time-step", step, "--range",
-                            *model["range"], "--colour-range", *colour_range, "--size", *size, image=image)
+                            *model["range"], "--colour-range", *colour_range, "--size", *size,
+                            "--text-height", print_text_px(size[0]), image=image)
             panels.append((f"{steps[step]['date']} (report step {step})", image))
         title = (f"Fig. 11 on a simulated waterflood: aperture 180, {name} {model['property']} "
                  f"{model['range'][0]}-{model['range'][1]}, one colour range")

@@ -73,4 +73,23 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
     return placed;
 }
 
+std::optional<PlacedLabel> place_caption(const std::string& text, int width, int height, float reserved_right,
+                                         float min_text_px) {
+    float s = label_text_scale(height, min_text_px);
+    const PixelRect unit_ink = ink_box({text, 0, 0, 1});
+    if (unit_ink.x0 > unit_ink.x1) return std::nullopt;  // blank text
+    // Margin and padding at the full scale; the text shrinks to what is left of the width.
+    const float pad = 2 * s, margin = 6 * s;
+    const float room = std::max(1.0f, float(width) - reserved_right - 2 * margin - 2 * pad);
+    s = std::min(s, room / std::max(1.0f, unit_ink.x1));
+    PlacedLabel caption;
+    caption.line = {text, margin + pad, margin + pad, s};
+    const PixelRect ink = ink_box(caption.line);
+    caption.box = {ink.x0 - pad, ink.y0 - pad, ink.x1 + pad, ink.y1 + pad};
+    caption.anchor_x = caption.box.x0;
+    caption.anchor_y = caption.box.y0;
+    if (!inside(caption.box, float(width), float(height))) return std::nullopt;  // an image too small for text
+    return caption;
+}
+
 }  // namespace cutaway::annotation

@@ -2,6 +2,7 @@
 // Name labels next to points of an image (a well's name beside its wellhead): each label a box
 // of text placed near its anchor, inside the image, clear of the labels placed before it.
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,11 @@ float label_text_scale(int height, float min_text_px = 0);
 /// before; if none does, the nearest one inside the image. Every box returned lies inside the image.
 std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests, int width, int height,
                                       float reserved_right = 0, float min_text_px = 0);
+
+/// A caption of the whole image (an animation frame's date and step): one line at its top-left
+/// corner with a margin, at label_text_scale, shrunk to fit left of `reserved_right` columns if it
+/// is wider. Nothing for blank text or an image too small to hold it; the box lies inside the image.
+std::optional<PlacedLabel> place_caption(const std::string& text, int width, int height, float reserved_right = 0,
+                                         float min_text_px = 0);
 
 }  // namespace cutaway::annotation

@@ -33,6 +33,7 @@
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
 #include "cutaway/temporal/step_values.h"
+#include "eclipse/step_clock.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
 #include "grid/primary_selection.h"
@@ -171,6 +172,12 @@ public:
         primaries_only_.only = pipeline::OnlyLayer::primaries;
     }
 
+    /// Draws each frame's date (from `steps`, none when empty) and report step of `step_count`.
+    void caption_with(std::vector<eclipse::ReportStep> steps, std::size_t step_count) {
+        caption_steps_ = std::move(steps);
+        caption_step_count_ = step_count;
+    }
+
     /// Frame `f` of `frame`: its stats entry.
     json draw(std::size_t f, const temporal::CoherentSequence::Frame& frame) {
         const auto started = std::chrono::steady_clock::now();
@@ -206,6 +213,9 @@ private:
     pipeline::Camera upload(std::size_t f, const temporal::CoherentSequence::Frame& frame) {
         const std::size_t uploaded_before = renderer_.status(settings_).uploaded_bytes;
         if (frame.values_changed) renderer_.set_colouring(*frame.values, label_);
+        if (caption_step_count_ > 0)
+            renderer_.set_caption(eclipse::step_caption(label_.property, eclipse::date_at(caption_steps_, frame.time_step),
+                                                        frame.time_step, caption_step_count_));
         select(f, frame);
         if (coherence_ == temporal::Coherence::smooth) ease_cone_reference();
         if (f == 0 || !frame.openings->empty() || had_openings_) renderer_.set_opening_cells(*frame.openings);
@@ -277,6 +287,8 @@ private:
     std::optional<glm::vec3> cone_reference_;  ///< smooth: the eased point (ease_cone_reference)
     std::size_t frames_to_open_;
     std::size_t uploaded_bytes_ = 0;  ///< by the frame's upload
+    std::vector<eclipse::ReportStep> caption_steps_;  ///< caption_with: the dates
+    std::size_t caption_step_count_ = 0;              ///< caption_with: report steps (0: no caption)
 };
 
 /// What stats.json says of the run beside its frames.
@@ -357,8 +369,11 @@ int animate(const AnimateOptions& options) {
     // redraws the whole cut another way at once (on petra it made the first step's largest
     // flicker). The animation keeps the one auto picks for its largest primary set.
     settings.strategy = pipeline::resolve_cut_strategy(settings.strategy, ranges.survey.most_primaries, renderer.status().auto_sweep_from);
-    const annotation::ColourBarLabel label{scene.property, ranges.colour_range.min, ranges.colour_range.max,
-                                           annotation::property_unit(scene.property)};
+    annotation::ColourBarLabel label{scene.property, ranges.colour_range.min, ranges.colour_range.max,
+                                     annotation::property_unit(scene.property)};
+    label.min_text_px = scene.text_height_px;
+    // --primaries none: the steps' values select nothing, no range to mark.
+    if (settings.primaries) label.primary_range = annotation::ColourBarLabel::Span{ranges.primary_range.min, ranges.primary_range.max};
     const double setup_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - setup_started).count();
 
     temporal::CoherentSequence sequence(grid, source, timeline, coherence, ranges.primary_range, ranges.band, ranges.box);
@@ -374,6 +389,8 @@ int animate(const AnimateOptions& options) {
     const std::size_t frame_count = timeline.frame_count();
     ProgressBar progress("cutaway animate", frame_count, "frames");
     FrameLoop loop(options, renderer, settings, label, step_wells, encoder, frame_count, timeline.first_step, coherence, ranges);
+    if (options.caption) loop.caption_with(model.report_steps ? model.report_steps->steps() : std::vector<eclipse::ReportStep>(),
+                                           source.step_count());
     json frames = json::array();
     const auto frames_started = std::chrono::steady_clock::now();
     for (std::size_t f = 0; f < frame_count; ++f) {

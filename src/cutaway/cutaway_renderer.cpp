@@ -113,7 +113,8 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       composite_(shaders),
       colour_bar_(shaders),
       wells_(shaders),
-      well_labels_(shaders) {
+      well_labels_(shaders),
+      frame_caption_(shaders) {
     // The GPU holds the pillars now: the CPU copy is not read again (compact_of_cell_ answers the
     // few Eclipse -> compact lookups a selection change needs, from ACTNUM).
     layout_.pillars = std::vector<float>();  // (= {} would keep the capacity)
@@ -358,6 +359,7 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
     state.distributed = bool(hooks_.combine_max);
     state.screen_passes = hooks_.screen_passes;
     state.wells = !wells_.empty();
+    state.caption = !caption_.empty();
     return state;
 }
 
@@ -451,6 +453,11 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     case FramePass::well_labels:
         well_labels_.draw(post_.final_framebuffer, wells_.heads(), f.camera, colour_bar_reserved_width(f.settings),
                           label_.min_text_px);
+        empty_vertex_array_.bind();
+        return;
+    case FramePass::caption:
+        frame_caption_.draw(post_.final_framebuffer, width_, height_, caption_,
+                            f.settings.colour_bar ? colour_bar_reserved_width(f.settings) : 0.0f, label_.min_text_px);
         empty_vertex_array_.bind();
         return;
     }

@@ -34,6 +34,7 @@
 #include "cutaway/secondary_pass.h"
 #include "cutaway/visibility/visible_faces.h"
 #include "cutaway/well_labels.h"
+#include "cutaway/frame_caption.h"
 #include "cutaway/well_tubes.h"
 #include "gl/image.h"
 #include "gl/stage_timer.h"
@@ -200,6 +201,10 @@ public:
     /// once per set. Throws std::invalid_argument for a well whose path or radius makes no tube.
     void set_wells(const WellSet& wells);
 
+    /// A line of text over every frame from now on, at its top-left corner (an animation's date and
+    /// report step); empty: none (FramePass::caption).
+    void set_caption(const std::string& text) { caption_ = text; }
+
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until freeze(std::nullopt).
     void freeze(const std::optional<Camera>& camera);
 
@@ -322,6 +327,8 @@ private:
     ColourBar colour_bar_;
     WellTubes wells_;
     WellLabels well_labels_;
+    FrameCaption frame_caption_;
+    std::string caption_;
     gl::VertexArray empty_vertex_array_;
     std::vector<std::pair<std::string, std::unique_ptr<CutSurfaceStrategy>>> strategies_;
     std::optional<Camera> frozen_camera_;

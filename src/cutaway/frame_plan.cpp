@@ -34,6 +34,7 @@ constexpr PassInfo pass_names[] = {
     {FramePass::composite, "composite"},
     {FramePass::colour_bar, "colour_bar"},
     {FramePass::well_labels, "well_labels"},
+    {FramePass::caption, "caption"},
 };
 
 /// Stage 1 and what follows it: the strategy's cut, the distributed max, the mean filter; the cut
@@ -86,6 +87,7 @@ void plan_primaries_and_post(const FrameSettings& s, const RendererState& state,
     PlannedStage post{"post", {FramePass::composite}};
     if (s.colour_bar) post.passes.push_back(FramePass::colour_bar);
     if (state.wells) post.passes.push_back(FramePass::well_labels);
+    if (state.caption) post.passes.push_back(FramePass::caption);
     plan.stages.push_back(post);
 }
 
@@ -127,7 +129,8 @@ PassTargets targets_of(FramePass pass, const FramePlan& plan) {
     case FramePass::composite:
         return {target_scene | (plan.runs(FramePass::ssao) ? target_occlusion : 0), target_final};
     case FramePass::colour_bar:
-    case FramePass::well_labels: return {target_final, target_final};
+    case FramePass::well_labels:
+    case FramePass::caption: return {target_final, target_final};
     }
     return {};
 }

@@ -38,6 +38,7 @@ enum class FramePass {
     composite,           ///< shading, saturation, silhouette into the final image
     colour_bar,          ///< the colour bar onto the final image
     well_labels,         ///< each well's name beside its wellhead, onto the final image
+    caption,             ///< a line of text at the top-left corner (an animation's date), onto the final image
 };
 
 /// Images a pass reads or writes (bit flags).
@@ -66,6 +67,7 @@ struct RendererState {
     bool distributed = false;        ///< hooks combine the frame over several renderers
     bool screen_passes = true;       ///< this renderer runs SSAO and post (false: a rank other than 0)
     bool wells = false;              ///< the renderer holds well tubes to draw
+    bool caption = false;            ///< the renderer holds a caption to draw
 };
 
 /// A group of passes timed together under one stats.json stage name; `stage` empty: untimed work

@@ -17,7 +17,7 @@
 #include "io/output_batch.h"
 #include "viewer/camera_controller.h"
 #include "viewer/option_tokens.h"
-#include "viewer/step_clock.h"
+#include "eclipse/step_clock.h"
 #include "viewer/step_overlay.h"
 #include "viewer/timing_overlay.h"
 #include "volumes/cut_volume_json.h"
@@ -166,8 +166,9 @@ bool ViewerApp::frame(bool last_frame_due) {
         info_.render_height = render_height();
         info_.step_caption = scene_->step_count() == 0
                                  ? std::string()
-                                 : step_caption(scene_->property().name, date_at(scene_->report_steps(), shown_time_step()),
-                                                shown_time_step(), scene_->step_count());
+                                 : eclipse::step_caption(scene_->property().name,
+                                                         eclipse::date_at(scene_->report_steps(), shown_time_step()),
+                                                         shown_time_step(), scene_->step_count());
         changes |= draw_control_panel(state_, *scene_, info_, requests);
         const pipeline::CutawayRenderer& renderer = scene_->renderer();
         const float colour_bar_share = renderer.status(settings_).colour_bar_reserved_width / float(renderer.status().width);

@@ -8,6 +8,7 @@
 
 #include "annotation/axis_ticks.h"
 #include "annotation/colour_bar_layout.h"
+#include "annotation/label_placement.h"
 #include "annotation/property_units.h"
 
 namespace cutaway::annotation {
@@ -192,6 +193,30 @@ TEST(AxisTicks, RoundStepsAndDigits) {
     EXPECT_EQ(symmetric.labels, (std::vector<std::string>{"-2.5", "0.0", "2.5"}));
     EXPECT_THROW(nice_ticks(1, 0), std::invalid_argument);
     EXPECT_THROW(nice_ticks(0, NAN), std::invalid_argument);
+}
+
+// An animation frame's caption (place_caption): at the top left, inside the image and left of
+// the colour bar's columns, shrunk rather than cut when the image is narrow; nothing to draw for
+// blank text or an image too small for it.
+TEST(FrameCaption, StaysInsideTheImageLeftOfTheColourBar) {
+    const std::string text = "SWAT  2031-06-15  (step 2.5 of 30)";
+    for (const Size size : {Size{1920, 1080}, Size{320, 180}, Size{120, 400}}) {
+        const float reserved = 0.15f * float(size.width);
+        const auto caption = place_caption(text, size.width, size.height, reserved);
+        ASSERT_TRUE(caption.has_value()) << size.width << "x" << size.height;
+        const PixelRect ink = ink_box(caption->line);
+        EXPECT_GE(ink.x0, caption->box.x0);
+        EXPECT_LE(ink.x1, caption->box.x1);
+        EXPECT_GE(caption->box.x0, 0.0f);
+        EXPECT_GE(caption->box.y0, 0.0f);
+        EXPECT_LE(caption->box.x1, float(size.width) - reserved) << size.width << "x" << size.height;
+        EXPECT_LE(caption->box.y1, 0.2f * float(size.height)) << "at the top";
+    }
+    // Wide enough: capitals 2% of the height, as the colour bar's; taller on request.
+    EXPECT_FLOAT_EQ(place_caption(text, 1920, 1080)->line.scale, label_text_scale(1080));
+    EXPECT_FLOAT_EQ(place_caption(text, 1920, 1080, 0, 40)->line.scale, 40 / cap_height_px);
+    EXPECT_FALSE(place_caption("   ", 1920, 1080).has_value());
+    EXPECT_FALSE(place_caption(text, 1920, 10).has_value());
 }
 
 }  // namespace

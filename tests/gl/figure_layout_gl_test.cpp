@@ -9,6 +9,7 @@
 #include <iostream>
 
 #include "annotation/colour_bar_layout.h"
+#include "annotation/label_placement.h"
 #include "cutaway/colour_map.h"
 #include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
@@ -157,6 +158,50 @@ TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
     EXPECT_GT(glm::length(silhouette - shell), 150.0);
     EXPECT_GT(silhouette.b, silhouette.r + 100);  // blue/cyan, as the domain experts asked
     EXPECT_GT(band_unchanged, silhouette_count / 10);  // the line is doubled, not a solid band
+}
+
+// An animation's date (set_caption): dark text at the top-left corner, drawn where its layout
+// says and nowhere else, gone again when the caption is emptied.
+TEST(FigureLayout, CaptionDrawsItsTextOnlyInsideItsBox) {
+    constexpr int width = 960, height = 540;
+    auto renderer = make_renderer(petra(), width, height);
+    pipeline::FrameSettings settings;
+    settings.ssao = false;
+    const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height,
+                                                                renderer->status(settings).colour_bar_reserved_width);
+    renderer->render(settings, camera);
+    const gl::RgbaImage plain = pipeline::FrameReadback(*renderer).read_image();
+    const std::vector<std::uint32_t> ids = pipeline::FrameReadback(*renderer).read_eclipse_ids();
+    const std::string text = "SWAT  2031-06-15  (step 2.5 of 30)";
+    renderer->set_caption(text);
+    renderer->render(settings, camera);
+    const gl::RgbaImage captioned = pipeline::FrameReadback(*renderer).read_image();
+    renderer->set_caption("");
+    renderer->render(settings, camera);
+    const gl::RgbaImage again = pipeline::FrameReadback(*renderer).read_image();
+    const auto caption = annotation::place_caption(text, width, height, renderer->status(settings).colour_bar_reserved_width);
+    ASSERT_TRUE(caption.has_value());
+    // Model pixels are left out of the comparisons: coplanar faces may rasterise either way from
+    // frame to frame on llvmpipe.
+    std::size_t outside = 0, dark = 0, restored = 0, background = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const std::uint8_t* c = captioned.at(x, y);
+            const bool in_box = float(x) + 1 > caption->box.x0 && float(x) < caption->box.x1 && float(y) + 1 > caption->box.y0 &&
+                                float(y) < caption->box.y1;
+            const auto is_dark = [](const std::uint8_t* rgb) { return rgb[0] < 60 && rgb[1] < 60 && rgb[2] < 60; };
+            if (in_box) dark += is_dark(c) && !is_dark(plain.at(x, y));
+            if (ids[std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)] != 0) continue;
+            ++background;
+            if (!in_box) outside += !std::equal(plain.at(x, y), plain.at(x, y) + 3, c);
+            restored += std::equal(plain.at(x, y), plain.at(x, y) + 3, again.at(x, y));
+        }
+    EXPECT_EQ(outside, 0u) << "caption pixels outside its box";
+    // The strokes cover about a fifth of the text's ink box; at least 10 dark pixels per glyph.
+    EXPECT_GT(dark, 10 * text.size());
+    // Capitals at least 2% of the height (the colour bar's), legible when the frame is a figure.
+    EXPECT_GE(caption->line.scale * annotation::cap_height_px, 0.02f * height);
+    EXPECT_EQ(restored, background) << "an empty caption draws nothing";
 }
 
 TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {

@@ -1,9 +1,9 @@
-// The viewer's date of a frame between report steps (step_clock.h).
+// The date of an animation's frame between report steps (step_clock.h).
 #include <gtest/gtest.h>
 
-#include "viewer/step_clock.h"
+#include "eclipse/step_clock.h"
 
-namespace cutaway::viewer {
+namespace cutaway::eclipse {
 namespace {
 
 eclipse::ReportStep step_on(int year, int month, int day, double elapsed_days) {
@@ -34,4 +34,4 @@ TEST(StepClock, CaptionNamesPropertyDateAndStep) {
 }
 
 }  // namespace
-}  // namespace cutaway::viewer
+}  // namespace cutaway::eclipse

@@ -1,11 +1,11 @@
-#include "viewer/step_clock.h"
+#include "eclipse/step_clock.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 
-namespace cutaway::viewer {
+namespace cutaway::eclipse {
 
 std::string date_at(const std::vector<eclipse::ReportStep>& steps, double time_step) {
     if (steps.empty()) return {};
@@ -28,4 +28,4 @@ std::string step_caption(const std::string& property, const std::string& date, d
     return property + "  " + (date.empty() ? "" : date + "  ") + step;
 }
 
-}  // namespace cutaway::viewer
+}  // namespace cutaway::eclipse
