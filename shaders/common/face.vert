@@ -4,7 +4,8 @@
 // the face's 4 corners so it can give the window-space distance to the quad's 4 edges
 // (single-pass wireframe, Baerentzen et al. 2006) without a geometry shader.
 // Variants: CULL_FRONT_INTERIOR (secondaries: an interior face seen from outside its cell always
-// coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries);
+// coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries),
+// CULL_FRONT (the far walls of hidden primaries, primary/primary.frag HIDDEN_WALLS);
 // PLAIN_FRAME (no cut read);
 // STORED_CORNERS (the face's corners read from src/cutaway/exposed_surface.h's buffer, 4 per
 // face in drawing order) with CULL_HIDDEN_BACK (a face both of whose triangles face away, which
@@ -60,6 +61,9 @@ void main() {
 #endif
 #ifdef CULL_BACK
     culled = culled || back_facing;
+#endif
+#ifdef CULL_FRONT
+    culled = culled || !back_facing;
 #endif
 #ifdef CULL_HIDDEN_BACK
     culled = culled || !f.any_triangle_front_facing;

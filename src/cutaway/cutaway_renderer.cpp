@@ -437,6 +437,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     case FramePass::secondaries: draw_secondaries(f); return;
     case FramePass::bind_scene: scene_.framebuffer.bind(); return;
     case FramePass::primaries: primary_.draw_primaries(draw_context(f.camera), buffers_.primary_faces(), f.settings); return;
+    case FramePass::hidden_primary_walls: primary_.draw_hidden_walls(draw_context(f.camera), buffers_.primary_faces()); return;
     case FramePass::wells: wells_.draw(f.camera); return;
     case FramePass::shell_contours: primary_.draw_shell_depth(draw_context(f.camera), scene_); return;
     case FramePass::reset_depth_test: glDepthFunc(GL_LESS); return;

@@ -26,6 +26,7 @@ constexpr PassInfo pass_names[] = {
     {FramePass::secondaries, "secondaries"},
     {FramePass::bind_scene, "bind_scene"},
     {FramePass::primaries, "primaries"},
+    {FramePass::hidden_primary_walls, "hidden_primary_walls"},
     {FramePass::wells, "wells"},
     {FramePass::shell_contours, "shell_contours"},
     {FramePass::reset_depth_test, "reset_depth_test"},
@@ -77,6 +78,7 @@ void plan_secondaries(const FrameSettings& s, FramePlan& plan) {
 void plan_primaries_and_post(const FrameSettings& s, const RendererState& state, FramePlan& plan) {
     PlannedStage primary{"primary", {FramePass::bind_scene}};
     if (plan.draw_primaries) primary.passes.push_back(FramePass::primaries);
+    if (s.only == OnlyLayer::secondaries && s.primaries) primary.passes.push_back(FramePass::hidden_primary_walls);
     if (state.wells) primary.passes.push_back(FramePass::wells);
     if (s.contours) primary.passes.push_back(FramePass::shell_contours);
     primary.passes.push_back(FramePass::reset_depth_test);
@@ -122,6 +124,7 @@ PassTargets targets_of(FramePass pass, const FramePlan& plan) {
     case FramePass::bind_scene:
     case FramePass::reset_depth_test: return {};
     case FramePass::primaries:
+    case FramePass::hidden_primary_walls:
     case FramePass::wells: return {0, target_scene};
     case FramePass::shell_contours:
     case FramePass::combine_scene: return {target_scene, target_scene};

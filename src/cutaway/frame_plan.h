@@ -30,6 +30,7 @@ enum class FramePass {
     secondaries,         ///< stage 2: clipped secondaries, cut fill, wireframe and borders
     bind_scene,          ///< the G-buffer bound again for stage 3
     primaries,           ///< stage 3: primary cells with their own edge colour
+    hidden_primary_walls,  ///< stage 3, --only secondaries: the hidden primaries' far walls (grey)
     wells,               ///< stage 3: well tubes, never cut (drawn by every renderer of a distributed frame)
     shell_contours,      ///< stage 3: shell contours and shell-cut lines
     reset_depth_test,    ///< depth test back to GL_LESS after the scene

@@ -12,11 +12,15 @@ public:
     explicit PrimaryPass(const gl::ShaderLibrary& shaders);
     /// Draws `faces` into the bound scene framebuffer.
     void draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings);
+    /// --only secondaries: the far walls (back faces) of the hidden primaries' `faces`, grey, as
+    /// cut fill, pushed behind coincident secondary faces (which win the depth test).
+    void draw_hidden_walls(const FaceDrawContext& context, const FaceBuffer& faces);
     /// Draws the nearest outer face's linear depth (GridBuffers::outer_faces) into scene.shell_framebuffer.
     void draw_shell_depth(const FaceDrawContext& context, const SceneTargets& scene);
 
 private:
     gl::Program primaries_;
+    gl::Program hidden_walls_;
     gl::Program shell_depth_;
 };
 
