@@ -32,17 +32,13 @@ MIN_SILHOUETTE_PIXELS = 500
 # at most 25% of the model's pixels darker than luminance 40/255 (Rec. 601 weights) in a cutaway
 # panel (a figure a referee reads in print; sapphire's PERMX on a linear scale had 83-86%), and
 # see-through below 0.5% of the silhouette: background pixels the model encloses (white holes
-# not connected to the panel's border; only-secondaries had 15.8-16.6%). Only-primaries panels
+# not connected to the panel's border; only-secondaries had 15.8-16.6%, then 1.3-1.8% where hidden
+# primaries were the rear shell, until their far walls were drawn). Only-primaries panels
 # show the primaries alone inside the shell's contour, so neither check applies to them. The
 # colour bar (its box in the render's stats) is left out of both.
 MAX_DARK_SHARE = 0.25
 DARK_LUMINANCE = 40 / 255
 MAX_SEE_THROUGH_SHARE = 0.005
-# Only-secondaries panels: where a hidden primary is itself the model's rear shell, the cut still
-# reaches the back and the background shows (1.35-1.79% on fig. 15's opharine panels). The 0.5%
-# target is open for that mode (issue 46); until it is met this bound holds the mode at the level
-# reached, so a return of the old hole (15.8-16.6%, the clamp missing where primaries hide) fails.
-MAX_SEE_THROUGH_SHARE_ONLY_SECONDARIES = 0.02
 # Print size (issue 46): at most two panels side by side (a 5000 px strip prints its text and
 # details too small), and every text, captions and the colour bars' capitals, at least 7 pt when
 # the figure is printed 182 mm wide (compose.min_text_px of the figure's width).
@@ -58,11 +54,6 @@ def fail(failures, message):
 def is_only_primaries(panel):
     options = panel.get("options", [])
     return any(a == "--only" and b == "primaries" for a, b in zip(options, options[1:]))
-
-
-def is_only_secondaries(panel):
-    options = panel.get("options", [])
-    return any(a == "--only" and b == "secondaries" for a, b in zip(options, options[1:]))
 
 
 def check_dark_and_see_through(name, figure, images, failures, np):
@@ -93,13 +84,9 @@ def check_dark_and_see_through(name, figure, images, failures, np):
         if dark > MAX_DARK_SHARE:
             fail(failures, f"{name} panel {index} ({panel['caption']}): {100 * dark:.1f}% of the model darker than "
                            f"luminance 40 (> {100 * MAX_DARK_SHARE:.0f}%)")
-        limit = MAX_SEE_THROUGH_SHARE_ONLY_SECONDARIES if is_only_secondaries(panel) else MAX_SEE_THROUGH_SHARE
-        if see_through >= limit:
+        if see_through >= MAX_SEE_THROUGH_SHARE:
             fail(failures, f"{name} panel {index} ({panel['caption']}): background on {100 * see_through:.2f}% of the "
-                           f"silhouette (>= {100 * limit:.1f}%: see-through)")
-        elif see_through >= MAX_SEE_THROUGH_SHARE:
-            print(f"OPEN (issue 46): {name} panel {index}: see-through {100 * see_through:.2f}% is above the "
-                  f"{100 * MAX_SEE_THROUGH_SHARE:.1f}% target for this mode")
+                           f"silhouette (>= {100 * MAX_SEE_THROUGH_SHARE:.1f}%: see-through)")
 
 
 def check_print_size(name, figure, failures):
