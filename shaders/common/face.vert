@@ -5,7 +5,8 @@
 // (single-pass wireframe, Baerentzen et al. 2006) without a geometry shader.
 // Variants: CULL_FRONT_INTERIOR (secondaries: an interior face seen from outside its cell always
 // coincides with its neighbour's copy, which is the one kept), CULL_BACK (primaries),
-// CULL_FRONT (the far walls of hidden primaries, primary/primary.frag HIDDEN_WALLS);
+// SHELL_BACKS (back-facing shell faces only: the far walls of hidden primaries where they are the
+// model's outer surface, primary/primary.frag HIDDEN_WALLS);
 // PLAIN_FRAME (no cut read);
 // STORED_CORNERS (the face's corners read from src/cutaway/exposed_surface.h's buffer, 4 per
 // face in drawing order) with CULL_HIDDEN_BACK (a face both of whose triangles face away, which
@@ -62,8 +63,8 @@ void main() {
 #ifdef CULL_BACK
     culled = culled || back_facing;
 #endif
-#ifdef CULL_FRONT
-    culled = culled || !back_facing;
+#ifdef SHELL_BACKS
+    culled = culled || !back_facing || face_class != face_class_shell;
 #endif
 #ifdef CULL_HIDDEN_BACK
     culled = culled || !f.any_triangle_front_facing;

@@ -1,10 +1,10 @@
 #version 450 core
 // Stage 3: primary cells, drawn whole (never clipped), with their own edge colour: a lighter
 // shade of the cell's colour (secondaries' edges are darker), so primaries keep their colour.
-// Variant HIDDEN_WALLS (--only secondaries): the far walls of the hidden primaries, back faces
-// only (common/face.vert CULL_FRONT), in a neutral grey without lines, as cut fill: where a
-// hidden primary is the model's rear shell nothing of the secondaries lies behind it, and the
-// wall keeps the hole it leaves from showing the background.
+// Variant HIDDEN_WALLS (--only secondaries): the far walls of the hidden primaries where they are
+// the model's shell (common/face.vert SHELL_BACKS), in a neutral grey without lines, as cut fill:
+// there nothing of the secondaries lies behind a hidden primary, and the wall keeps the hole it
+// leaves from showing the background. Elsewhere the secondaries behind show, as before.
 #include "common/grid.glsl"
 #include "common/shading.glsl"
 #include "common/frame_outputs.glsl"

@@ -8,7 +8,7 @@ PrimaryPass::PrimaryPass(const gl::ShaderLibrary& shaders)
     : primaries_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "primary/primary.frag"}},
                                {{"CULL_BACK", ""}})),
       hidden_walls_(shaders.build({{GL_VERTEX_SHADER, "common/face.vert"}, {GL_FRAGMENT_SHADER, "primary/primary.frag"}},
-                                  {{"CULL_FRONT", ""}, {"HIDDEN_WALLS", ""}})),
+                                  {{"SHELL_BACKS", ""}, {"HIDDEN_WALLS", ""}})),
       shell_depth_(shaders.build({{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "primary/shell_depth.frag"}})) {}
 
 void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings) {
@@ -19,8 +19,7 @@ void PrimaryPass::draw_primaries(const FaceDrawContext& context, const FaceBuffe
 
 void PrimaryPass::draw_hidden_walls(const FaceDrawContext& context, const FaceBuffer& faces) {
     prepare_face_program(hidden_walls_, context);
-    // A wall shared with a secondary cell behind it coincides with that cell's face: a few depth
-    // units back, the secondary's face is the one seen.
+    // A few depth units back: where a shell face is drawn by stage 2 as well, stage 2's wins.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 4.0f);
     context.grid.draw_faces(faces);

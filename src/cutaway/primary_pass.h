@@ -12,8 +12,8 @@ public:
     explicit PrimaryPass(const gl::ShaderLibrary& shaders);
     /// Draws `faces` into the bound scene framebuffer.
     void draw_primaries(const FaceDrawContext& context, const FaceBuffer& faces, const FrameSettings& settings);
-    /// --only secondaries: the far walls (back faces) of the hidden primaries' `faces`, grey, as
-    /// cut fill, pushed behind coincident secondary faces (which win the depth test).
+    /// --only secondaries: the far walls of the hidden primaries' `faces` that are shell faces
+    /// (back-facing), grey, as cut fill, behind anything stage 2 drew at the same depth.
     void draw_hidden_walls(const FaceDrawContext& context, const FaceBuffer& faces);
     /// Draws the nearest outer face's linear depth (GridBuffers::outer_faces) into scene.shell_framebuffer.
     void draw_shell_depth(const FaceDrawContext& context, const SceneTargets& scene);
