@@ -79,5 +79,5 @@ def layers_figure(model, ranges, size):
     (columns, `ranges`: (caption, (lo, hi)) pairs)."""
     layers = (("full cutaway", []), ("only primaries", ["--only", "primaries"]), ("only secondaries", ["--only", "secondaries"]))
     rows = [[(f"{layer}, {caption}", ["--range", lo, hi, *options]) for caption, (lo, hi) in ranges] for layer, options in layers]
-    return {"name": "fig15_only_layers", "title": f"Fig. 15: only primaries / only secondaries ({model[7:]}, two PORO ranges)",
+    return {"name": "fig15_only_layers", "title": f"Fig. 15: only primaries / only secondaries ({model[7:]}, two PORO ranges; grey: the shell behind hidden primaries)",
             "rows": rows, "model": model, "size": size}
