@@ -214,8 +214,8 @@ private:
         const std::size_t uploaded_before = renderer_.status(settings_).uploaded_bytes;
         if (frame.values_changed) renderer_.set_colouring(*frame.values, label_);
         if (caption_step_count_ > 0)
-            renderer_.set_caption(eclipse::step_caption(label_.property, eclipse::date_at(caption_steps_, frame.time_step),
-                                                        frame.time_step, caption_step_count_));
+            settings_.caption = eclipse::step_caption(label_.property, eclipse::date_at(caption_steps_, frame.time_step),
+                                                      frame.time_step, caption_step_count_);
         select(f, frame);
         if (coherence_ == temporal::Coherence::smooth) ease_cone_reference();
         if (f == 0 || !frame.openings->empty() || had_openings_) renderer_.set_opening_cells(*frame.openings);
@@ -271,7 +271,7 @@ private:
     const AnimateOptions& options_;
     const RenderOptions& scene_;
     pipeline::CutawayRenderer& renderer_;
-    const pipeline::FrameSettings& settings_;
+    pipeline::FrameSettings settings_;  ///< the run's, with each frame's caption
     pipeline::FrameSettings primaries_only_;
     const annotation::ColourBarLabel& label_;
     const StepWellSets& step_wells_;

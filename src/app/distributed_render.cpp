@@ -358,7 +358,7 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     std::vector<std::string> stage_order;
     for (const auto& [name, value] : stats["stages_ms"].items()) stage_order.push_back(name);
     const std::vector<double> gathered = mpi.gather(rank_numbers(scene, stats, exchange, stage_order));
-    const pipeline::FacesDrawn drawn = rank.renderer().faces_drawn();
+    const pipeline::FacesDrawn drawn = pipeline::FrameReadback(rank.renderer()).faces_drawn();
     const std::uint64_t faces_secondary = mpi.sum(drawn.secondary), faces_primary = mpi.sum(drawn.primary);
     if (!mpi.root()) return 0;
 

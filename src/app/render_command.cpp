@@ -67,7 +67,7 @@ RenderOptions colouring_options(const grid::CornerPointGrid& grid, const RenderO
 
 /// Faces each pass drew, frames drawn again, the cut's read-back and the culling's counts.
 void add_draw_counts(json& stats, const pipeline::CutawayRenderer& renderer) {
-    stats["faces_drawn"] = faces_drawn_json(renderer.faces_drawn());
+    stats["faces_drawn"] = faces_drawn_json(pipeline::FrameReadback(renderer).faces_drawn());
     // Frames drawn twice because the culling's face buffer grew (cutaway_renderer.h render).
     stats["frames_redrawn"] = renderer.status().frames_redrawn;
     // Per frame (every timed frame reads back the same amount): 0 for the strategies on the GPU.
@@ -92,7 +92,7 @@ void add_extra_frames(json& stats, const RenderOptions& options, pipeline::Cutaw
         for (int i = 0; i < std::max(1, options.repeat); ++i)
             baseline.push_back(renderer.render_baseline(camera, settings.draw).wall_ms);
         stats["baseline_ms"] = metrics::median(baseline);
-        stats["baseline_faces_drawn"] = renderer.faces_drawn().secondary;
+        stats["baseline_faces_drawn"] = pipeline::FrameReadback(renderer).faces_drawn().secondary;
         stats["total_over_baseline"] = stats["stages_ms"]["total"].get<double>() / metrics::median(baseline);
     }
 }

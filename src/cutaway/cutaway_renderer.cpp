@@ -359,7 +359,6 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
     state.distributed = bool(hooks_.combine_max);
     state.screen_passes = hooks_.screen_passes;
     state.wells = !wells_.empty();
-    state.caption = !caption_.empty();
     return state;
 }
 
@@ -457,7 +456,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
         empty_vertex_array_.bind();
         return;
     case FramePass::caption:
-        frame_caption_.draw(post_.final_framebuffer, width_, height_, caption_,
+        frame_caption_.draw(post_.final_framebuffer, width_, height_, f.settings.caption,
                             f.settings.colour_bar ? colour_bar_reserved_width(f.settings) : 0.0f, label_.min_text_px);
         empty_vertex_array_.bind();
         return;
@@ -510,20 +509,6 @@ gl::StageTime CutawayRenderer::render_baseline(const Camera& camera, DrawMode dr
     return timer_.stages().back();
 }
 
-FacesDrawn CutawayRenderer::faces_drawn() const {
-    FacesDrawn drawn = last_drawn_;
-    if (visible_used_) {
-        drawn.culling = visible_.read_counts();
-        drawn.secondary = drawn.culling->faces;
-    }
-    return drawn;
-}
-
-void CutawayRenderer::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {
-    const bool same_size = x1 - x0 == width_ && y1 - y0 == height_;
-    glBlitNamedFramebuffer(post_.final_framebuffer.id(), framebuffer, 0, 0, width_, height_, x0, y0, x1, y1,
-                           GL_COLOR_BUFFER_BIT, same_size ? GL_NEAREST : GL_LINEAR);
-}
 
 gl::RgbaImage CutawayRenderer::read_image() const {
     return gl::read_rgba(post_.final_framebuffer.id(), 0, width_, height_);

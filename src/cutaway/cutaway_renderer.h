@@ -201,10 +201,6 @@ public:
     /// once per set. Throws std::invalid_argument for a well whose path or radius makes no tube.
     void set_wells(const WellSet& wells);
 
-    /// A line of text over every frame from now on, at its top-left corner (an animation's date and
-    /// report step); empty: none (FramePass::caption).
-    void set_caption(const std::string& text) { caption_ = text; }
-
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until freeze(std::nullopt).
     void freeze(const std::optional<Camera>& camera);
 
@@ -220,12 +216,6 @@ public:
 
     /// The renderer's state for a frame with `settings` (no GPU read-back).
     RendererStatus status(const FrameSettings& settings = {}) const;
-    /// What the last frame (render or render_baseline) drew; the culling's counts are read back.
-    FacesDrawn faces_drawn() const;
-
-    /// Copies the last frame onto `framebuffer` (0: a window's) over the rectangle (x0, y0)-(x1, y1),
-    /// scaled with linear filtering when the sizes differ.
-    void present(unsigned framebuffer, int x0, int y0, int x1, int y1) const;
 
 private:
     friend class FrameReadback;  // renderer_readback.h: the last frame's images for metrics and tests
@@ -328,7 +318,6 @@ private:
     WellTubes wells_;
     WellLabels well_labels_;
     FrameCaption frame_caption_;
-    std::string caption_;
     gl::VertexArray empty_vertex_array_;
     std::vector<std::pair<std::string, std::unique_ptr<CutSurfaceStrategy>>> strategies_;
     std::optional<Camera> frozen_camera_;

@@ -89,7 +89,7 @@ void plan_primaries_and_post(const FrameSettings& s, const RendererState& state,
     PlannedStage post{"post", {FramePass::composite}};
     if (s.colour_bar) post.passes.push_back(FramePass::colour_bar);
     if (state.wells) post.passes.push_back(FramePass::well_labels);
-    if (state.caption) post.passes.push_back(FramePass::caption);
+    if (!s.caption.empty()) post.passes.push_back(FramePass::caption);
     plan.stages.push_back(post);
 }
 

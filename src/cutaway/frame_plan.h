@@ -68,7 +68,6 @@ struct RendererState {
     bool distributed = false;        ///< hooks combine the frame over several renderers
     bool screen_passes = true;       ///< this renderer runs SSAO and post (false: a rank other than 0)
     bool wells = false;              ///< the renderer holds well tubes to draw
-    bool caption = false;            ///< the renderer holds a caption to draw
 };
 
 /// A group of passes timed together under one stats.json stage name; `stage` empty: untimed work

@@ -1,6 +1,6 @@
 #pragma once
 // Every switch of one cutaway frame, with the paper's defaults (SPEC.md section 2). A run's
-// stats.json prints all of them (frame_settings_json).
+// stats.json prints the options they come from (RenderOptions::describe).
 #include <string>
 
 namespace cutaway::pipeline {
@@ -71,6 +71,9 @@ struct FrameSettings {
     /// the paper's frustums do; false: clamped to just in front of the farthest shell surface.
     bool see_through = false;
     bool colour_bar = true;
+    /// A line of text at the frame's top-left corner (an animation's date and report step);
+    /// empty: none (FramePass::caption).
+    std::string caption;
     /// Equal depths in stages 2 and 3: the fragment drawn first wins (GL_LESS, the default) or the
     /// one drawn last (GL_LEQUAL). Tests use it to tell draw-order ties from real differences.
     bool depth_ties_to_last = false;

@@ -21,6 +21,21 @@ FloatImage read_packed_value(const gl::Texture& texture) {
 }  // namespace
 
 
+FacesDrawn FrameReadback::faces_drawn() const {
+    FacesDrawn drawn = renderer_.last_drawn_;
+    if (renderer_.visible_used_) {
+        drawn.culling = renderer_.visible_.read_counts();
+        drawn.secondary = drawn.culling->faces;
+    }
+    return drawn;
+}
+
+void FrameReadback::present(unsigned framebuffer, int x0, int y0, int x1, int y1) const {
+    const bool same_size = x1 - x0 == renderer_.width_ && y1 - y0 == renderer_.height_;
+    glBlitNamedFramebuffer(renderer_.post_.final_framebuffer.id(), framebuffer, 0, 0, renderer_.width_, renderer_.height_,
+                           x0, y0, x1, y1, GL_COLOR_BUFFER_BIT, same_size ? GL_NEAREST : GL_LINEAR);
+}
+
 FloatImage FrameReadback::read_scene_depth() const { return read_packed_value(renderer_.scene_.normal_depth); }
 
 FloatImage FrameReadback::read_cut_depth() const {

@@ -25,6 +25,11 @@ public:
 
     /// Per-pixel ids read back: compact cell + 1 (0 = background) and flags (shared_constants.h).
     IdImage read_ids() const { return renderer_.read_ids(); }
+    /// What the last frame (render or render_baseline) drew; the culling's counts are read back.
+    FacesDrawn faces_drawn() const;
+    /// Copies the last frame onto `framebuffer` (0: a window's) over the rectangle (x0, y0)-(x1, y1),
+    /// scaled with linear filtering when the sizes differ.
+    void present(unsigned framebuffer, int x0, int y0, int x1, int y1) const;
     /// Linear depth of the visible surface in the model camera (0 = background).
     FloatImage read_scene_depth() const;
     /// The cut surface used by the last frame: depth along the cut camera's axis (0 = no cut).

@@ -12,12 +12,13 @@
 
 #include "app/run_context.h"
 #include "app/run_context_json.h"
+#include "cutaway/renderer_readback.h"
+#include "eclipse/step_clock.h"
 #include "gl/gl_error.h"
 #include "gl/image.h"
 #include "io/output_batch.h"
 #include "viewer/camera_controller.h"
 #include "viewer/option_tokens.h"
-#include "eclipse/step_clock.h"
 #include "viewer/step_overlay.h"
 #include "viewer/timing_overlay.h"
 #include "volumes/cut_volume_json.h"
@@ -200,7 +201,7 @@ bool ViewerApp::frame(bool last_frame_due) {
     glViewport(0, 0, window_fb_width_, window_fb_height_);
     glClearColor(0, 0, 0, 1);
     glClear(GL_COLOR_BUFFER_BIT);
-    scene_->renderer().present(0, 0, 0, window_fb_width_, window_fb_height_);
+    pipeline::FrameReadback(scene_->renderer()).present(0, 0, 0, window_fb_width_, window_fb_height_);
     imgui_.end_frame(state_.ui_visible);
 
     const bool stopping = quit_ || window_.close_requested() || last_frame_due;

@@ -160,7 +160,7 @@ TEST(FigureLayout, SilhouetteColourDiffersFromTheShellCutLines) {
     EXPECT_GT(band_unchanged, silhouette_count / 10);  // the line is doubled, not a solid band
 }
 
-// An animation's date (set_caption): dark text at the top-left corner, drawn where its layout
+// An animation's date (FrameSettings::caption): dark text at the top-left corner, drawn where its layout
 // says and nowhere else, gone again when the caption is emptied.
 TEST(FigureLayout, CaptionDrawsItsTextOnlyInsideItsBox) {
     constexpr int width = 960, height = 540;
@@ -173,10 +173,10 @@ TEST(FigureLayout, CaptionDrawsItsTextOnlyInsideItsBox) {
     const gl::RgbaImage plain = pipeline::FrameReadback(*renderer).read_image();
     const std::vector<std::uint32_t> ids = pipeline::FrameReadback(*renderer).read_eclipse_ids();
     const std::string text = "SWAT  2031-06-15  (step 2.5 of 30)";
-    renderer->set_caption(text);
+    settings.caption = text;
     renderer->render(settings, camera);
     const gl::RgbaImage captioned = pipeline::FrameReadback(*renderer).read_image();
-    renderer->set_caption("");
+    settings.caption.clear();
     renderer->render(settings, camera);
     const gl::RgbaImage again = pipeline::FrameReadback(*renderer).read_image();
     const auto caption = annotation::place_caption(text, width, height, renderer->status(settings).colour_bar_reserved_width);

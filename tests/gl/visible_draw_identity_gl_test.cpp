@@ -260,7 +260,7 @@ TEST(VisibleFaceBuffer, AFrameThatOverflowsGrowsTheBufferAndIsDrawnAgainUnchange
     renderer->render(settings, camera);
     EXPECT_EQ(renderer->status().frames_redrawn, 1u) << "100 records cannot hold the frame: it is drawn again once";
     EXPECT_GE(pipeline::RendererProbe(*renderer).face_buffer_capacity(), records.size());
-    EXPECT_EQ(renderer->faces_drawn().culling->faces_requested, records.size());
+    EXPECT_EQ(pipeline::FrameReadback(*renderer).faces_drawn().culling->faces_requested, records.size());
     EXPECT_EQ(pipeline::RendererProbe(*renderer).read_visible_faces(), records);
     EXPECT_EQ(pipeline::FrameReadback(*renderer).read_eclipse_ids(), cells);
     renderer->render(settings, camera);
