@@ -1,19 +1,22 @@
 #!/usr/bin/env python3
-"""Figure 8 of Duan & Li: GPU ray casting time as the cube grows 10 times by 10x28x25 samples.
+"""Figure 8 of Duan & Li: GPU and CPU ray casting time as the cube grows 10 times by 10x28x25 samples.
 
 Interface (for experiments/run_all):
   experiments/volume_fig8/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
 Writes results/volume_fig8/fig8.json (per growth step: dims, sample count, trimmed-mean time in ms,
-samples per second, raw trials; machine context), its README.md and paper_figures/volume_fig8.png
-(+ .pdf: medians with min-max bars). Skips when all exist unless --force; plots the JSON again when
-it exists and --force was not given. --quick: steps 1-3, 128x128 pixels, 5 trials.
+samples per second, raw trials, for each caster; machine context), its README.md and
+paper_figures/volume_fig8.png (+ .pdf: medians with min-max bars, log time axis). Skips when all
+exist unless --force; plots the JSON again when it exists and --force was not given. --quick:
+steps 1-3, 128x128 pixels, 5 trials (3 for the CPU caster).
 
 Protocol: synthetic cubes "growth-1" .. "growth-10" (step k: k x 10 inlines, k x 28 crosslines and
 k x 25 time samples, 10x28x25 to 100x280x250, seed 1),
 a fixed viewpoint (azimuth 40, elevation 25, distance framing the cube, time axis scaled to the
 larger lateral extent so the cube's footprint on screen stays the same), grey transfer function,
-512x512 pixels, GPU caster, 20 timed trials after one warm-up, mean after dropping min and max.
+512x512 pixels, 20 timed trials of the GPU caster and 5 of the CPU caster (the paper's CPU series;
+the slow reference, all the machine's threads) after one warm-up each, mean after dropping min and max.
 """
+import math
 import os
 import statistics
 import sys
@@ -26,26 +29,43 @@ import report_markdown as md  # noqa: E402
 import volume_experiment as vx  # noqa: E402
 
 
+CASTERS = (("gpu", "o", "C0", "GPU caster (fragment shader)"), ("cpu", "s", "C1", "CPU caster"))
+
+
+def caster_rows(rows, caster):
+    """Each growth step's record of `caster` (runs from before the CPU series hold the GPU's at the top level)."""
+    return [r.get(caster, r if caster == "gpu" else None) for r in rows]
+
+
 def plot(exp, result):
-    """Median frame time per cube with min-max bars over the trials (PNG and vector PDF)."""
+    """Median frame time per cube and caster with min-max bars over the trials, log time axis (PNG and PDF)."""
     figure_path = exp.path("volume_fig8.png")
     plt = cx.pyplot()
     rows, size = result["steps"], result["protocol"]["size"][0]
     voxels = [r["voxels"] / 1e6 for r in rows]
-    medians = [sorted(r["trials_ms"])[len(r["trials_ms"]) // 2] for r in rows]
-    low = [m - min(r["trials_ms"]) for m, r in zip(medians, rows)]
-    high = [max(r["trials_ms"]) - m for m, r in zip(medians, rows)]
     fig, ax = plt.subplots(figsize=(cx.PLOT_WIDTH_IN, 4.4))
-    ax.errorbar(voxels, medians, yerr=[low, high], marker="o", capsize=3,
-                label=f"GPU caster: median and min-max of {result['protocol']['trials']} trials per cube")
-    for r, x, y in ((rows[0], voxels[0], medians[0]), (rows[-1], voxels[-1], medians[-1])):
-        ax.annotate(f"step {r['step']}: {'x'.join(map(str, r['dims']))}", (x, y), textcoords="offset points",
-                    xytext=(8, -14), ha="left" if r is rows[0] else "right")
-    k1 = [d // rows[0]["step"] for d in rows[0]["dims"]]
-    ax.set_xlabel(f"cube size (million voxels); step k = {rows[0]['step']}..{rows[-1]['step']}: k x {k1[0]} inlines, "
-                  f"k x {k1[1]} crosslines,\nk x {k1[2]} time samples")
-    ax.set_ylabel("time per frame (ms)")
-    ax.set_ylim(bottom=0)
+    shown_ms = []
+    for caster, marker, colour, name in CASTERS:
+        records = caster_rows(rows, caster)
+        if any(c is None for c in records):
+            continue
+        shown_ms += [t for c in records for t in c["trials_ms"]]
+        medians = [statistics.median(c["trials_ms"]) for c in records]
+        low = [m - min(c["trials_ms"]) for m, c in zip(medians, records)]
+        high = [max(c["trials_ms"]) - m for m, c in zip(medians, records)]
+        threads = result["protocol"].get("cpu_threads") if caster == "cpu" else None
+        ax.errorbar(voxels, medians, yerr=[low, high], marker=marker, color=colour, capsize=3,
+                    label=f"{name}{f', {threads} threads' if threads else ''}: median and min-max of "
+                          f"{len(records[0]['trials_ms'])} trials per cube")
+    ax.set_yscale("log")
+    # Whole decades, so the log axis has labelled ticks however close the times are.
+    ax.set_ylim(10 ** math.floor(math.log10(min(shown_ms))), 10 ** math.ceil(math.log10(max(shown_ms))))
+    first, last = rows[0], rows[-1]
+    k1 = [d // first["step"] for d in first["dims"]]
+    ax.set_xlabel(f"cube size (million voxels); step k = {first['step']}..{last['step']}: k x {k1[0]} inlines, "
+                  f"k x {k1[1]} crosslines,\nk x {k1[2]} time samples ({'x'.join(map(str, first['dims']))} to "
+                  f"{'x'.join(map(str, last['dims']))})")
+    ax.set_ylabel("time per frame (ms, log)")
     fig.suptitle(f"Fig. 8: fixed viewpoint, growing cube, {size}x{size} px\non {cx.device_label(result['context'])}")
     fig.legend(*ax.get_legend_handles_labels(), loc="lower center", frameon=False)
     cx.save_figure(fig, figure_path)
@@ -59,55 +79,85 @@ def measure(exp):
     quick = exp.quick
     steps = range(1, 4) if quick else range(1, 11)
     size, trials = (128, 5) if quick else (512, 20)
+    cpu_trials = 3 if quick else 5
 
     rows, last_stats = [], None
     with vx.Workspace(exp) as work:
         for step in steps:
             cube = work.generate(f"growth-{step}", "--preset", f"growth-{step}", "--seed", "1")
-            stats = work.volume(cube, "--caster", "gpu", "--tf", "grey", "--camera", "40", "25", "0",
-                                "--size", str(size), str(size), "--warmup", "1", "--repeat", str(trials))
+            row = {"step": step}
+            for caster, repeat in (("gpu", trials), ("cpu", cpu_trials)):
+                stats = work.volume(cube, "--caster", caster, "--tf", "grey", "--camera", "40", "25", "0",
+                                    "--size", str(size), str(size), "--warmup", "1", "--repeat", str(repeat))
+                times = vx.frame_times_ms(stats)
+                row["dims"] = stats["input"]["dims"]
+                row[caster] = {"trimmed_mean_ms": vx.trimmed_mean(times), "trials_ms": times, "samples": stats["samples"],
+                               "samples_per_second": stats["samples_per_second"], "gl_query_valid": stats["gl_query_valid"]}
+                if caster == "gpu":
+                    last_stats = stats
+                else:
+                    cpu_threads = stats["configuration"].get("cpu_threads")
             os.remove(cube)
-            times = vx.frame_times_ms(stats)
-            dims = stats["input"]["dims"]
-            rows.append({"step": step, "dims": dims, "voxels": dims[0] * dims[1] * dims[2],
-                         "trimmed_mean_ms": vx.trimmed_mean(times), "trials_ms": times, "samples": stats["samples"],
-                         "samples_per_second": stats["samples_per_second"], "gl_query_valid": stats["gl_query_valid"]})
-            last_stats = stats
-            print(f"growth-{step} {dims}: {rows[-1]['trimmed_mean_ms']:.2f} ms, {stats['samples']} samples")
+            dims = row["dims"]
+            row["voxels"] = dims[0] * dims[1] * dims[2]
+            rows.append(row)
+            print(f"growth-{step} {dims}: GPU {row['gpu']['trimmed_mean_ms']:.2f} ms, CPU {row['cpu']['trimmed_mean_ms']:.2f} ms")
 
     result = {
         "experiment": "volume_fig8", "quick": quick,
         "protocol": {"cubes": "growth-k: k x 10 inlines, k x 28 crosslines, k x 25 time samples, seed 1", "viewpoint": [40, 25, 0],
-                     "size": [size, size], "trials": trials, "warmup": 1, "caster": "gpu", "transfer_function": "grey",
+                     "size": [size, size], "trials": trials, "cpu_trials": cpu_trials, "cpu_threads": cpu_threads, "warmup": 1,
+                     "casters": ["gpu", "cpu"], "transfer_function": "grey",
                      "statistic": "mean after dropping min and max",
-                     "time": "fenced wall clock of exit_points + ray_cast stages (readback excluded), ms",
+                     "time": "fenced wall clock of exit_points + ray_cast stages (readback excluded; the CPU caster's "
+                             "ray_cast alone), ms",
                      "configuration": last_stats["configuration"]},
         "context": exp.context(last_stats), "steps": rows,
-        "slowest_over_fastest": max(r["trimmed_mean_ms"] for r in rows) / min(r["trimmed_mean_ms"] for r in rows)}
+        "slowest_over_fastest": {c: max(r[c]["trimmed_mean_ms"] for r in rows) / min(r[c]["trimmed_mean_ms"] for r in rows)
+                                 for c in ("gpu", "cpu")},
+        "cpu_over_gpu": [r["cpu"]["trimmed_mean_ms"] / r["gpu"]["trimmed_mean_ms"] for r in rows]}
     return result
 
 
 def report(exp, document):
-    """Per growth step: the cube, its median and trimmed-mean time, samples per second."""
+    """Per growth step: the cube, each caster's median and trimmed-mean time, samples per second."""
     proto, steps = document["protocol"], document["steps"]
-    medians = [statistics.median(r["trials_ms"]) for r in steps]
+    gpu, cpu = caster_rows(steps, "gpu"), caster_rows(steps, "cpu")
+    both = all(c is not None for c in cpu)
+    medians = [statistics.median(c["trials_ms"]) for c in gpu]
+    cpu_medians = [statistics.median(c["trials_ms"]) for c in cpu] if both else []
+    cpu_part = f" and {proto.get('cpu_trials')} of the CPU caster" if both else ""
+    ratios = f"; the CPU caster {min(document['cpu_over_gpu']):.1f}-{max(document['cpu_over_gpu']):.1f}x the GPU's" if both else ""
     result = md.Report(
-        "Seismic figure 8: GPU ray casting time as the cube grows",
+        "Seismic figure 8: GPU and CPU ray casting time as the cube grows",
         f"Time to ray cast growing synthetic seismic cubes (growth-k, k = {steps[0]['step']}..{steps[-1]['step']}: "
         f"k x {steps[0]['dims'][0] // steps[0]['step']} inlines, k x {steps[0]['dims'][1] // steps[0]['step']} crosslines "
         f"and k x {steps[0]['dims'][2] // steps[0]['step']} time samples, seed 1) from one viewpoint (azimuth "
         f"{proto['viewpoint'][0]}, elevation {proto['viewpoint'][1]}, the time axis scaled so the cube's footprint on "
-        f"screen stays the same) into {proto['size'][0]}x{proto['size'][1]} pixels, {proto['caster'].upper()} caster, "
-        f"{proto['transfer_function']} transfer function, as Duan & Li's figure 8: {proto['trials']} timed trials per cube "
-        f"after {proto['warmup']} warm-up; a trial is the {proto['time']}.",
-        headline=f"{steps[0]['voxels']:,} to {steps[-1]['voxels']:,} voxels: "
-                 f"{md.ms(medians[0])} to {md.ms(medians[-1])} ms (medians)")
+        f"screen stays the same) into {proto['size'][0]}x{proto['size'][1]} pixels, "
+        f"{proto['transfer_function']} transfer function, as Duan & Li's figure 8: {proto['trials']} timed trials of the "
+        f"GPU caster{cpu_part} per cube after "
+        f"{proto['warmup']} warm-up; a trial is the {proto['time']}.",
+        headline=f"{steps[0]['voxels']:,} to {steps[-1]['voxels']:,} voxels: GPU caster "
+                 f"{md.ms(medians[0])} to {md.ms(medians[-1])} ms (medians){ratios}")
     result.section("Per cube")
-    result.table(["step", "dims", "voxels", "median ms", "min-max ms", "trimmed mean ms", "samples / s (millions)"],
-                 [[r["step"], "x".join(map(str, r["dims"])), f"{r['voxels']:,}", md.ms(m),
-                   f"{md.ms(min(r['trials_ms']))}-{md.ms(max(r['trials_ms']))}", md.ms(r["trimmed_mean_ms"]),
-                   f"{r['samples_per_second'] / 1e6:,.0f}"] for r, m in zip(steps, medians)])
-    result.text(f"Slowest / fastest cube (trimmed means): {document['slowest_over_fastest']:.2f}x.")
+    header = ["step", "dims", "voxels", "GPU median ms", "GPU min-max ms", "GPU trimmed mean ms", "GPU samples / s (millions)"]
+    if both:
+        header += ["CPU median ms", "CPU trimmed mean ms", "CPU / GPU"]
+    rows = []
+    for k, (r, g, m) in enumerate(zip(steps, gpu, medians)):
+        row = [r["step"], "x".join(map(str, r["dims"])), f"{r['voxels']:,}", md.ms(m),
+               f"{md.ms(min(g['trials_ms']))}-{md.ms(max(g['trials_ms']))}", md.ms(g["trimmed_mean_ms"]),
+               f"{g['samples_per_second'] / 1e6:,.0f}"]
+        if both:
+            row += [md.ms(cpu_medians[k]), md.ms(cpu[k]["trimmed_mean_ms"]), f"{document['cpu_over_gpu'][k]:.1f}x"]
+        rows.append(row)
+    result.table(header, rows)
+    slowest = document["slowest_over_fastest"]
+    if isinstance(slowest, dict):
+        result.text(f"Slowest / fastest cube (trimmed means): GPU caster {slowest['gpu']:.2f}x, CPU caster {slowest['cpu']:.2f}x.")
+    else:
+        result.text(f"Slowest / fastest cube (trimmed means): {slowest:.2f}x.")
     return result.figure(exp.path("volume_fig8.png"))
 
 
