@@ -1,7 +1,7 @@
 #pragma once
 // A benchmark program's own flags through CLI11, in the spellings the experiments and scripts pass
 // (`--presets=a,b`, `--size=1920x1080`, `--ssao=0`, `--preset NAME`), checked while parsing with
-// the validators of `cutaway` (app/option_checks.h) and the project's name tables, before any model
+// the validators of `cutaway` (app_core/option_checks.h) and the project's name tables, before any model
 // is loaded or GL context made. Google Benchmark's own arguments (`--benchmark_*`, `--v=N`) are
 // left in argv for benchmark::Initialize; `--help` prints the program's flags, then Google
 // Benchmark's.

@@ -36,10 +36,10 @@
 #include <string>
 #include <vector>
 
-#include "app/heap_policy.h"
-#include "app/model_source.h"
-#include "app/render_options.h"
-#include "app/run_context.h"
+#include "app_core/heap_policy.h"
+#include "app_core/model_source.h"
+#include "app_core/render_options.h"
+#include "app_core/run_context.h"
 #include "bench_cutaway_options.h"
 #include "stage_counters.h"
 #include "camera_path.h"
@@ -363,7 +363,7 @@ void add_context(const bench::CutawayBenchOptions& o, const std::vector<std::str
 }  // namespace
 
 int main(int argc, char** argv) {
-    app::keep_freed_heap_memory();  // as `cutaway` (app/heap_policy.h)
+    app::keep_freed_heap_memory();  // as `cutaway` (app_core/heap_policy.h)
     bench::CutawayBenchOptions options;
     CLI::App flags{"Cutaway frame times over the paper's camera path (Google Benchmark)", "bench_cutaway"};
     bench::add_cutaway_bench_flags(flags, options);

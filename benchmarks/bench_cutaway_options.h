@@ -7,7 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 #include "bench_cli.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"

@@ -24,11 +24,11 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/heap_policy.h"
-#include "app/model_source.h"
-#include "app/option_checks.h"
-#include "app/render_options.h"
-#include "app/run_context.h"
+#include "app_core/heap_policy.h"
+#include "app_core/model_source.h"
+#include "app_core/option_checks.h"
+#include "app_core/render_options.h"
+#include "app_core/run_context.h"
 #include "bench_cli.h"
 #include "distributed/mpi_session.h"
 #include "distributed/rank_blocks.h"
@@ -157,7 +157,7 @@ void add_context(const DistributedBenchOptions& o, const distributed::MpiSession
 
 int main(int argc, char** argv) {
     using namespace cutaway;
-    app::keep_freed_heap_memory();  // as `cutaway` (app/heap_policy.h)
+    app::keep_freed_heap_memory();  // as `cutaway` (app_core/heap_policy.h)
     const distributed::MpiSession mpi;
     DistributedBenchOptions options;
     CLI::App flags{"One distributed cutaway frame across the ranks of mpirun (Google Benchmark)", "bench_distributed"};

@@ -23,8 +23,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "app/option_checks.h"
-#include "app/run_context.h"
+#include "app_core/option_checks.h"
+#include "app_core/run_context.h"
 #include "bench_cli.h"
 #include "generators/generator.h"
 #include "generators/presets.h"

@@ -27,7 +27,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "app/run_context.h"
+#include "app_core/run_context.h"
 #include "bench_cli.h"
 #include "grid/grdecl_reader.h"
 

@@ -34,8 +34,8 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "app/option_checks.h"
-#include "app/run_context.h"
+#include "app_core/option_checks.h"
+#include "app_core/run_context.h"
 #include "bench_cli.h"
 #include "grid/box_grid.h"
 #include "grid/grdecl_reader.h"

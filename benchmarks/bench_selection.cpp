@@ -17,10 +17,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/model_source.h"
-#include "app/option_checks.h"
-#include "app/render_options.h"
-#include "app/run_context.h"
+#include "app_core/model_source.h"
+#include "app_core/option_checks.h"
+#include "app_core/render_options.h"
+#include "app_core/run_context.h"
 #include "bench_cli.h"
 #include "cutaway/cutaway_renderer.h"
 #include "cutaway/grid_layout.h"

@@ -17,8 +17,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/option_checks.h"
-#include "app/run_context.h"
+#include "app_core/option_checks.h"
+#include "app_core/run_context.h"
 #include "bench_cli.h"
 #include "generators/seismic_model.h"
 #include "gl/gl_context.h"

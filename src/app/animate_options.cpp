@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <system_error>
 
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 #include "cutaway/temporal/coherence.h"
 
 namespace cutaway::app {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render_report.h"
+#include "app_core/render_report.h"
 #include "metrics/median.h"
 
 namespace cutaway::app {

@@ -19,13 +19,13 @@
 #include <utility>
 #include <vector>
 
-#include "app/exit_status.h"
-#include "app/frame_wells.h"
-#include "app/heap_policy.h"
-#include "app/model_source.h"
-#include "app/render_report.h"
-#include "app/run_context.h"
-#include "app/run_context_json.h"
+#include "app_core/exit_status.h"
+#include "app_core/frame_wells.h"
+#include "app_core/heap_policy.h"
+#include "app_core/model_source.h"
+#include "app_core/render_report.h"
+#include "app_core/run_context.h"
+#include "app_core/run_context_json.h"
 #include "cutaway/cell_id_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cutaway_renderer.h"

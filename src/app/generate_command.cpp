@@ -8,7 +8,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 #include "app/parameter_options.h"
 #include "generators/flow_deck_writer.h"
 #include "generators/generator.h"

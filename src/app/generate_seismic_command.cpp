@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "app/commands.h"
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 #include "app/parameter_options.h"
 #include "generators/seismic_model.h"
 #include "generators/seismic_segy_writer.h"

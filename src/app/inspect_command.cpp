@@ -10,10 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
-#include "app/model_source.h"
-#include "app/option_checks.h"
-#include "app/property_statistics.h"
-#include "app/render_options.h"
+#include "app_core/model_source.h"
+#include "app_core/option_checks.h"
+#include "app_core/property_statistics.h"
+#include "app_core/render_options.h"
 #include "eclipse/eclipse_error.h"
 #include "eclipse/init_reader.h"
 #include "eclipse/simulator_case.h"

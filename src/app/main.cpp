@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "app/commands.h"
-#include "app/exit_status.h"
-#include "app/heap_policy.h"
+#include "app_core/exit_status.h"
+#include "app_core/heap_policy.h"
 #include "app/mpi_launch.h"
 #include "io/interrupt_cleanup.h"
 

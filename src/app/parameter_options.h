@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 
 namespace cutaway::app {
 

@@ -1,7 +1,7 @@
 // `cutaway view MODEL [options]`: the interactive viewer (src/viewer/).
 #include "app/commands.h"
-#include "app/model_source.h"
-#include "app/option_checks.h"
+#include "app_core/model_source.h"
+#include "app_core/option_checks.h"
 #include "viewer/viewer_app.h"
 #include "viewer/viewer_script.h"
 

@@ -12,10 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
-#include "app/heap_policy.h"
-#include "app/option_checks.h"
-#include "app/run_context.h"
-#include "app/run_context_json.h"
+#include "app_core/heap_policy.h"
+#include "app_core/option_checks.h"
+#include "app_core/run_context.h"
+#include "app_core/run_context_json.h"
 #include "gl/gl_context.h"
 #include "gl/image.h"
 #include "gl/shader_library.h"

@@ -12,7 +12,7 @@
 #include "cutaway/active_cell_rank.h"
 #include "cutaway/camera.h"
 #include "cutaway/colour_bar.h"
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_resolve.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"

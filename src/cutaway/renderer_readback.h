@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cutaway_renderer.h"
 

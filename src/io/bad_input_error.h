@@ -1,7 +1,7 @@
 #pragma once
 // The base of every refusal of what the user gave: a malformed file (GRDECL, SEG-Y, simulator
 // results), an unusable output path. The message names the file, keyword or field and what was
-// expected; `cutaway` maps every such error to exit code 2 (app/exit_status.h).
+// expected; `cutaway` maps every such error to exit code 2 (app_core/exit_status.h).
 #include <stdexcept>
 #include <string>
 

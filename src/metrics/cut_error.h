@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <span>
 
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 
 namespace cutaway::metrics {
 

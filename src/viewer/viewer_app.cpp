@@ -10,8 +10,8 @@
 #include <iostream>
 #include <stdexcept>
 
-#include "app/run_context.h"
-#include "app/run_context_json.h"
+#include "app_core/run_context.h"
+#include "app_core/run_context_json.h"
 #include "cutaway/renderer_readback.h"
 #include "eclipse/step_clock.h"
 #include "gl/gl_error.h"

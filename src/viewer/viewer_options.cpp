@@ -1,6 +1,6 @@
 #include "viewer/viewer_options.h"
 
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 #include "viewer/viewer_script.h"
 
 namespace cutaway::viewer {

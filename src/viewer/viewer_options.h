@@ -4,7 +4,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/render_options.h"
+#include "app_core/render_options.h"
 
 namespace cutaway::viewer {
 

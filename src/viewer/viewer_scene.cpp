@@ -2,8 +2,8 @@
 
 #include <utility>
 
-#include "app/frame_wells.h"
-#include "app/step_value_sources.h"
+#include "app_core/frame_wells.h"
+#include "app_core/step_value_sources.h"
 #include "cutaway/camera.h"
 #include "grid/cell_geometry.h"
 #include "grid/primary_selection.h"

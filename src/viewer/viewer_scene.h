@@ -5,8 +5,8 @@
 #include <memory>
 #include <optional>
 
-#include "app/model_source.h"
-#include "app/render_options.h"
+#include "app_core/model_source.h"
+#include "app_core/render_options.h"
 #include "cutaway/cutaway_renderer.h"
 #include "gl/shader_library.h"
 #include "viewer/property_histogram.h"

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render_options.h"
+#include "app_core/render_options.h"
 #include "cutaway/camera.h"
 #include "volumes/cut_volume.h"
 

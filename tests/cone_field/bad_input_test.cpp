@@ -7,11 +7,11 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "cutaway/cone_field/brute_force.h"
-#include "cutaway/cone_field/chamfer.h"
-#include "cutaway/cone_field/cone_slope.h"
-#include "cutaway/cone_field/exact_reference.h"
-#include "cutaway/cone_field/jump_flooding.h"
+#include "cone_field/brute_force.h"
+#include "cone_field/chamfer.h"
+#include "cone_field/cone_slope.h"
+#include "cone_field/exact_reference.h"
+#include "cone_field/jump_flooding.h"
 #include "metrics/cut_error.h"
 
 namespace cutaway::cone_field {

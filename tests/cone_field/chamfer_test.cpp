@@ -5,7 +5,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "cutaway/cone_field/chamfer.h"
+#include "cone_field/chamfer.h"
 
 namespace cutaway::cone_field {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "cutaway/cone_field/cone_slope.h"
+#include "cone_field/cone_slope.h"
 
 namespace cutaway::cone_field {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 
 namespace cutaway::cone_field::testing {
 

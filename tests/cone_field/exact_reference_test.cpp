@@ -6,9 +6,9 @@
 #include <random>
 
 #include "cone_test_scenes.h"
-#include "cutaway/cone_field/brute_force.h"
-#include "cutaway/cone_field/cone_slope.h"
-#include "cutaway/cone_field/exact_reference.h"
+#include "cone_field/brute_force.h"
+#include "cone_field/cone_slope.h"
+#include "cone_field/exact_reference.h"
 
 namespace cutaway::cone_field {
 namespace {

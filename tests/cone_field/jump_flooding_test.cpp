@@ -4,8 +4,8 @@
 #include <iostream>
 
 #include "cone_test_scenes.h"
-#include "cutaway/cone_field/exact_reference.h"
-#include "cutaway/cone_field/jump_flooding.h"
+#include "cone_field/exact_reference.h"
+#include "cone_field/jump_flooding.h"
 #include "metrics/cut_error.h"
 
 namespace cutaway::cone_field {

@@ -1,4 +1,4 @@
-// The heap policy `cutaway` and the benchmarks set first (src/app/heap_policy.h): memory a batch
+// The heap policy `cutaway` and the benchmarks set first (src/app_core/heap_policy.h): memory a batch
 // of draws frees is reused by the next without being faulted in again.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
@@ -7,7 +7,7 @@
 #include <cstring>
 #include <vector>
 
-#include "app/heap_policy.h"
+#include "app_core/heap_policy.h"
 
 // AddressSanitizer's allocator ignores mallopt: nothing to test there.
 #if !defined(__SANITIZE_ADDRESS__)

@@ -10,7 +10,7 @@
 #include <cmath>
 #include <vector>
 
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 
 namespace cutaway::test {
 namespace {

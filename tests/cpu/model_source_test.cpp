@@ -1,8 +1,8 @@
-// MODEL arguments (app/model_source.h): a preset asked for one static property skips the water
+// MODEL arguments (app_core/model_source.h): a preset asked for one static property skips the water
 // flood, and every array it does generate is the same as the full model's, bit for bit.
 #include <gtest/gtest.h>
 
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 
 namespace cutaway::app {
 namespace {

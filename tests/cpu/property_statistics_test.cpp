@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/property_statistics.h"
+#include "app_core/property_statistics.h"
 #include "grid/box_grid.h"
 
 namespace cutaway::app {

@@ -1,4 +1,4 @@
-// A simulator case as a MODEL argument (app/model_source.h) on OPM Flow's SPE1 and SPE9 output
+// A simulator case as a MODEL argument (app_core/model_source.h) on OPM Flow's SPE1 and SPE9 output
 // (the eclipse_flow fixture): what load_model reads, what hold_property adds or releases, the
 // MPI path's box, and that reading step after step holds one step.
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 #include "eclipse/report_steps.h"
 #include "grid/grid_box.h"
 

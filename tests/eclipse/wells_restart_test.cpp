@@ -12,7 +12,7 @@
 #include <opm/input/eclipse/Schedule/Schedule.hpp>
 #include <opm/input/eclipse/Schedule/Well/Well.hpp>
 
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 #include "io/bad_input_error.h"
 #include "wells/deck_wells.h"
 #include "wells/restart_wells.h"

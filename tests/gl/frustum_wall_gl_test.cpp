@@ -19,7 +19,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 #include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"
 #include "grid/box_grid.h"

@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 #include "cutaway/cutaway_renderer.h"
 #include "gl/gl_context.h"
 #include "grid/primary_selection.h"

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "cone_test_scenes.h"
-#include "cutaway/cone_field/exact_reference.h"
+#include "cone_field/exact_reference.h"
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cut_surface/gpu_cone_transform.h"

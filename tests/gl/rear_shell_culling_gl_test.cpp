@@ -21,7 +21,7 @@
 #include <random>
 #include <string>
 
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 #include "cutaway/face_drawing.h"
 #include "cutaway/rear_shell_depth.h"
 #include "gl/uniforms.h"

@@ -4,8 +4,8 @@
 
 #include <random>
 
-#include "app/frame_wells.h"
-#include "app/model_source.h"
+#include "app_core/frame_wells.h"
+#include "app_core/model_source.h"
 #include "common/shared_constants.h"
 #include "cutaway/renderer_readback.h"
 #include "gl_test_support.h"

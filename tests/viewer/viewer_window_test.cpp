@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "annotation/colour_bar_layout.h"
-#include "app/model_source.h"
-#include "app/render_options.h"
+#include "app_core/model_source.h"
+#include "app_core/render_options.h"
 #include "cpu/test_files.h"
 #include "gl/image.h"
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "cutaway/cone_field/cone_slope.h"
+#include "cone_field/cone_slope.h"
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/cut_surface/cut_seeds.h"
 #include "cutaway/cut_surface/gpu_cone_transform.h"

@@ -19,9 +19,9 @@
 #include <functional>
 #include <string>
 
-#include "cutaway/cone_field/chamfer.h"
-#include "cutaway/cone_field/cone_image.h"
-#include "cutaway/cone_field/jump_flooding.h"
+#include "cone_field/chamfer.h"
+#include "cone_field/cone_image.h"
+#include "cone_field/jump_flooding.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 
 namespace cutaway::pipeline {

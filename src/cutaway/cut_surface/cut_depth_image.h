@@ -4,7 +4,7 @@
 // the cut camera, 0 = nothing cut. On the CPU (cone_field::FloatImage, rows top to bottom) it is
 // s itself, the depth along the cut camera's view axis (render units), 0 = nothing cut.
 #include "cutaway/camera.h"
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 #include "gl/gl_objects.h"
 
 namespace cutaway::pipeline {

@@ -10,7 +10,7 @@
 // thus holds a seed at least as deep as that primary, so any cut d(p) >= seed(p) keeps every
 // primary pixel exposed, whatever the cone slope. Cells opening their cut (inputs.openings) add
 // their box back faces part of the way from the rim (opening_cut.h).
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 #include "cutaway/cut_surface/cut_surface_strategy.h"
 #include "gl/gl_objects.h"
 

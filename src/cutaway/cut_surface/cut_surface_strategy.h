@@ -11,7 +11,7 @@
 
 #include "cutaway/active_cell_rank.h"
 #include "cutaway/camera.h"
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/grid_buffers.h"

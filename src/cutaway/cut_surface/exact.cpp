@@ -1,6 +1,6 @@
 // The exact cone field (max over every seed, with exact pruning, multithreaded) on the CPU: the
 // reference the other strategies are measured against (--exact-check), usable as a strategy.
-#include "cutaway/cone_field/exact_reference.h"
+#include "cone_field/exact_reference.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 
 namespace cutaway::pipeline {

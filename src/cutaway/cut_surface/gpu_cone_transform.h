@@ -8,8 +8,8 @@
 #include <memory>
 #include <string_view>
 
-#include "cutaway/cone_field/chamfer.h"
-#include "cutaway/cone_field/jump_flooding.h"
+#include "cone_field/chamfer.h"
+#include "cone_field/jump_flooding.h"
 #include "cutaway/frame_targets.h"
 #include "gl/compute_dispatch.h"
 #include "gl/shader_library.h"

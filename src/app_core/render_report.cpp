@@ -1,4 +1,4 @@
-#include "app/render_report.h"
+#include "app_core/render_report.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include "app/model_source.h"
-#include "app/option_checks.h"
+#include "app_core/model_source.h"
+#include "app_core/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "metrics/median.h"
 

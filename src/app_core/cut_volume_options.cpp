@@ -1,8 +1,8 @@
-#include "app/cut_volume_options.h"
+#include "app_core/cut_volume_options.h"
 
 #include <stdexcept>
 
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 #include "cutaway/setting_names.h"
 #include "volumes/cut_volume_json.h"
 #include "volumes/cut_volume_spec.h"

@@ -1,4 +1,4 @@
-#include "app/heap_policy.h"
+#include "app_core/heap_policy.h"
 
 #include <malloc.h>
 

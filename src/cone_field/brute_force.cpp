@@ -1,8 +1,8 @@
-#include "cutaway/cone_field/brute_force.h"
+#include "cone_field/brute_force.h"
 
 #include <algorithm>
 
-#include "cutaway/cone_field/cone_slope.h"
+#include "cone_field/cone_slope.h"
 
 namespace cutaway::cone_field {
 

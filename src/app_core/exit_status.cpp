@@ -1,4 +1,4 @@
-#include "app/exit_status.h"
+#include "app_core/exit_status.h"
 
 #include <new>
 #include <stdexcept>

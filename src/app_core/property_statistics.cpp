@@ -1,4 +1,4 @@
-#include "app/property_statistics.h"
+#include "app_core/property_statistics.h"
 
 #include <cstdio>
 

@@ -1,7 +1,7 @@
-#include "app/run_context_json.h"
+#include "app_core/run_context_json.h"
 
-#include "app/heap_policy.h"
-#include "app/run_context.h"
+#include "app_core/heap_policy.h"
+#include "app_core/run_context.h"
 #include "gl/gl_context.h"
 
 namespace cutaway::app {

@@ -1,4 +1,4 @@
-#include "app/step_value_sources.h"
+#include "app_core/step_value_sources.h"
 
 #include "eclipse/report_steps.h"
 

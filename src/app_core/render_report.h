@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render_options.h"
+#include "app_core/render_options.h"
 #include "cutaway/cutaway_renderer.h"
 #include "io/file_identity.h"
 

@@ -13,7 +13,7 @@
 // skipped seed could never have changed the result.
 #include <cstdint>
 
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 
 namespace cutaway::cone_field {
 

@@ -1,4 +1,4 @@
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 
 #include <cmath>
 #include <stdexcept>

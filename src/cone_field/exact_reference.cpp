@@ -1,4 +1,4 @@
-#include "cutaway/cone_field/exact_reference.h"
+#include "cone_field/exact_reference.h"
 
 #include <algorithm>
 #include <atomic>
@@ -6,7 +6,7 @@
 #include <string>
 #include <thread>
 
-#include "cutaway/cone_field/cone_slope.h"
+#include "cone_field/cone_slope.h"
 
 namespace cutaway::cone_field {
 namespace {

@@ -1,4 +1,4 @@
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 
 #include <algorithm>
 #include <chrono>

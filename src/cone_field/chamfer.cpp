@@ -1,10 +1,10 @@
-#include "cutaway/cone_field/chamfer.h"
+#include "cone_field/chamfer.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "cutaway/cone_field/cone_slope.h"
+#include "cone_field/cone_slope.h"
 
 namespace cutaway::cone_field {
 namespace {

@@ -4,7 +4,7 @@
 #include <exception>
 #include <string>
 
-#include "app/exit_codes.h"
+#include "app_core/exit_codes.h"
 
 namespace cutaway::app {
 

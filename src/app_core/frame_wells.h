@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 #include "volumes/volume_mesh.h"
 #include "cutaway/well_tubes.h"
 #include "wells/well.h"

@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "app/model_source.h"
+#include "app_core/model_source.h"
 #include "cutaway/temporal/step_values.h"
 
 namespace cutaway::app {

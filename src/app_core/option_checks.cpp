@@ -1,4 +1,4 @@
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 
 #include <algorithm>
 #include <charconv>

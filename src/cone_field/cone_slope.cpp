@@ -1,4 +1,4 @@
-#include "cutaway/cone_field/cone_slope.h"
+#include "cone_field/cone_slope.h"
 
 #include <numbers>
 #include <stdexcept>

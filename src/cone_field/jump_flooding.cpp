@@ -1,10 +1,10 @@
-#include "cutaway/cone_field/jump_flooding.h"
+#include "cone_field/jump_flooding.h"
 
 #include <bit>
 #include <stdexcept>
 #include <string>
 
-#include "cutaway/cone_field/cone_slope.h"
+#include "cone_field/cone_slope.h"
 
 namespace cutaway::cone_field {
 namespace {

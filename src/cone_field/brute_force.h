@@ -2,7 +2,7 @@
 // Exact cone-field cut by brute force: every pixel against every seed, O(pixels x seeds).
 // Runs on the CPU: it is the definition written as code, the oracle the exact reference is tested
 // against on small images; far too slow for full frames.
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 
 namespace cutaway::cone_field {
 

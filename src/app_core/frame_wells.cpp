@@ -1,8 +1,8 @@
-#include "app/frame_wells.h"
+#include "app_core/frame_wells.h"
 
 #include <stdexcept>
 
-#include "app/option_checks.h"
+#include "app_core/option_checks.h"
 #include "grid/cell_geometry.h"
 #include "wells/deck_wells.h"
 #include "wells/restart_wells.h"

@@ -9,8 +9,8 @@
 #include <CLI/CLI.hpp>
 
 #include "annotation/colour_bar_layout.h"
-#include "app/cut_volume_options.h"
-#include "app/option_checks.h"
+#include "app_core/cut_volume_options.h"
+#include "app_core/option_checks.h"
 #include "cutaway/camera.h"
 #include "cutaway/frame_settings.h"
 #include "gl/gl_context.h"
@@ -67,7 +67,7 @@ struct RenderOptions {
     double memory_limit_gb = default_memory_limit_gib;
     std::string rank_slabs = "k";     ///< under mpirun: the axis the model is cut along into slabs
     CutVolumeOptions cut_volumes;     ///< --cut-volume, --cut-volumes, --primaries
-    std::vector<std::string> wells;   ///< --wells values (app/frame_wells.h)
+    std::vector<std::string> wells;   ///< --wells values (app_core/frame_wells.h)
     double well_radius = 0;           ///< --well-radius, model units (0: automatic)
 
     std::size_t memory_limit_bytes() const;

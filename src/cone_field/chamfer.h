@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "cutaway/cone_field/cone_image.h"
+#include "cone_field/cone_image.h"
 
 namespace cutaway::cone_field {
 

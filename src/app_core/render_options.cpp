@@ -1,13 +1,13 @@
-#include "app/render_options.h"
+#include "app_core/render_options.h"
 
 #include <algorithm>
 #include <cfloat>
 #include <stdexcept>
 
 #include "annotation/property_units.h"
-#include "app/frame_wells.h"
-#include "app/model_source.h"
-#include "app/option_checks.h"
+#include "app_core/frame_wells.h"
+#include "app_core/model_source.h"
+#include "app_core/option_checks.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/setting_names.h"
 #include "generators/generator.h"
