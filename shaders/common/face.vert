@@ -11,10 +11,11 @@
 // STORED_CORNERS (the face's corners read from src/cutaway/exposed_surface.h's buffer, 4 per
 // face in drawing order) with CULL_HIDDEN_BACK (a face both of whose triangles face away, which
 // its own cell hides, is dropped: what visibility/cull_cells.comp keeps behind the cut).
+#include "common/shared_constants.h"
 #include "common/grid.glsl"
 #include "common/face_frame.glsl"
 
-layout(std430, binding = 3) readonly buffer Faces { uint faces[]; };
+layout(std430, binding = ssbo_faces) readonly buffer Faces { uint faces[]; };
 #ifdef STORED_CORNERS
 layout(binding = 14) uniform samplerBuffer stored_corner_texels;  // RGB32F, 4 per face
 #endif

@@ -11,9 +11,10 @@
 // common/face.vert rebuilds all 4 corners per vertex (16 per face) for its edge distances and
 // face-wide facing tests; on llvmpipe, where the vertex stage is serial, that made these two
 // passes vertex-bound (sapphire: 22 and 28 ms at 480x270 against 36 and 37 ms at 1920x1080).
+#include "common/shared_constants.h"
 #include "common/grid.glsl"
 
-layout(std430, binding = 3) readonly buffer Faces { uint faces[]; };
+layout(std430, binding = ssbo_faces) readonly buffer Faces { uint faces[]; };
 
 uniform mat4 view_projection;
 uniform mat4 cut_view;  // the camera whose depth seed_geometry.frag writes

@@ -26,6 +26,33 @@ CUTAWAY_SHARED_CONST uint flag_well = 32u;
 CUTAWAY_SHARED_CONST uint well_index_shift = 8u;
 CUTAWAY_SHARED_CONST uint max_drawn_wells = 65535u;
 
+// Shader storage buffer binding points: C++ binds each buffer at its name, the shader declares
+// its block there (layout(std430, binding = NAME)). Passes that never run together share points
+// (the primary selection's with the culling's), each under its own name.
+CUTAWAY_SHARED_CONST uint ssbo_faces = 3u;               // face records drawn (common/face.vert)
+CUTAWAY_SHARED_CONST uint ssbo_face_corners = 4u;        // exposed surface's stored corners
+CUTAWAY_SHARED_CONST uint ssbo_primary_cells = 5u;       // primary cells (frustums, centroid)
+CUTAWAY_SHARED_CONST uint ssbo_opening_cells = 6u;       // cells opening their cut (frustum.vert OPENING)
+CUTAWAY_SHARED_CONST uint ssbo_brick_begin = 7u;         // culling: first cell of each brick
+CUTAWAY_SHARED_CONST uint ssbo_brick_boxes = 8u;         // culling: bricks' bounds
+CUTAWAY_SHARED_CONST uint ssbo_cell_face_classes = 9u;   // per cell, its faces' classes
+CUTAWAY_SHARED_CONST uint ssbo_primary_bits = 10u;       // one bit per active cell
+CUTAWAY_SHARED_CONST uint ssbo_culling_counters = 11u;   // culling's counts
+CUTAWAY_SHARED_CONST uint ssbo_visible_faces = 12u;      // culling's output faces
+CUTAWAY_SHARED_CONST uint ssbo_cut_pyramid = 13u;        // the cut's depth pyramid
+CUTAWAY_SHARED_CONST uint ssbo_draw_commands = 14u;      // culling's indirect draws
+CUTAWAY_SHARED_CONST uint ssbo_brick_classes = 15u;      // culling: bricks in front of / behind the cut
+CUTAWAY_SHARED_CONST uint ssbo_active_words = 15u;       // selection: active-cell bit words
+CUTAWAY_SHARED_CONST uint ssbo_cell_face_masks = 16u;    // culling: faces kept per cell
+CUTAWAY_SHARED_CONST uint ssbo_word_counts = 16u;        // selection: primaries per word
+CUTAWAY_SHARED_CONST uint ssbo_brick_face_counts = 17u;  // culling: faces kept per brick
+CUTAWAY_SHARED_CONST uint ssbo_selection_totals = 17u;   // selection: primary cell and face totals
+CUTAWAY_SHARED_CONST uint ssbo_brick_offsets = 18u;      // culling: each brick's first output face
+CUTAWAY_SHARED_CONST uint ssbo_primary_cells_out = 18u;  // selection: the primary cells written
+CUTAWAY_SHARED_CONST uint ssbo_block_offsets = 19u;      // culling: each block's first output face
+CUTAWAY_SHARED_CONST uint ssbo_primary_faces_out = 19u;  // selection: the primary faces written
+CUTAWAY_SHARED_CONST uint ssbo_centroid_partial_sums = 20u;  // primary centroid's partial sums
+
 #undef CUTAWAY_SHARED_CONST
 #ifdef __cplusplus
 }  // namespace cutaway::shared

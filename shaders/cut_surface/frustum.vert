@@ -3,6 +3,7 @@
 // camera's eye space; the box is kept in perspective-divided coordinates (u = x/s, v = y/s,
 // s = depth along the view axis), where view rays are lines of constant (u, v), so the box's
 // (u, v) range covers every pixel the cell covers.
+#include "common/shared_constants.h"
 #include "common/grid.glsl"
 
 #ifdef CLUSTERS
@@ -14,13 +15,13 @@ layout(binding = 13) uniform usamplerBuffer cluster_cells;
 // Cells whose cut opens or closes over an animation's frames (cut_surface/opening_cut.h): the
 // compact cell and, as float bits, the share of the depth from the rim to its back face reached.
 // Bit 31 of the cell: it opens beside the cut (its face neighbours' cut reaches over it).
-layout(std430, binding = 6) readonly buffer OpeningCells { uvec2 opening_cells[]; };
+layout(std430, binding = ssbo_opening_cells) readonly buffer OpeningCells { uvec2 opening_cells[]; };
 uniform vec3 model_min;  // render-space bounds of the model
 uniform vec3 model_max;
 uniform vec2 wall_angle;
 #include "cut_surface/wall_slope.glsl"
 #else
-layout(std430, binding = 5) readonly buffer PrimaryCells { uint primary_cells[]; };
+layout(std430, binding = ssbo_primary_cells) readonly buffer PrimaryCells { uint primary_cells[]; };
 #endif
 
 uniform mat4 cut_view;

@@ -2,12 +2,13 @@
 // Sums of the primary cells' centres (mean of the 8 corners, render space), one partial sum per
 // workgroup of 256 primaries; the CPU adds the partial sums in double
 // (src/cutaway/selection/primary_centroid.h). Workgroups spread over Y beyond 65535 along X.
+#include "common/shared_constants.h"
 layout(local_size_x = 256) in;
 
 #include "common/grid.glsl"
 
-layout(std430, binding = 5) readonly buffer PrimaryCells { uint primary_cells[]; };
-layout(std430, binding = 20) writeonly buffer PartialSums { vec4 partial_sums[]; };  // xyz: sum, w: count
+layout(std430, binding = ssbo_primary_cells) readonly buffer PrimaryCells { uint primary_cells[]; };
+layout(std430, binding = ssbo_centroid_partial_sums) writeonly buffer PartialSums { vec4 partial_sums[]; };  // xyz: sum, w: count
 
 uniform uint primary_count;
 

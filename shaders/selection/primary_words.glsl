@@ -1,14 +1,15 @@
 // The primary selection on the GPU (src/cutaway/selection/gpu_primary_selection.h): one
 // invocation per word of 32 active cells, in compact order, so every list comes out in the order
 // the CPU reference builds it (ascending cell, then side).
+#include "common/shared_constants.h"
 #include "common/grid.glsl"
 
-layout(std430, binding = 9) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 16 bits per cell, 2 per side
-layout(std430, binding = 10) buffer PrimaryBits { uint primary_bits[]; };  // 1 bit per compact cell
+layout(std430, binding = ssbo_cell_face_classes) readonly buffer CellFaceClasses { uint cell_face_classes[]; };  // 16 bits per cell, 2 per side
+layout(std430, binding = ssbo_primary_bits) buffer PrimaryBits { uint primary_bits[]; };  // 1 bit per compact cell
 // Per 32 Eclipse cells: their active bits, and the active cells before them (gpu_primary_selection.cpp).
-layout(std430, binding = 15) readonly buffer ActiveWords { uvec2 active_words[]; };
+layout(std430, binding = ssbo_active_words) readonly buffer ActiveWords { uvec2 active_words[]; };
 // Per word: primary cells and primary faces it holds; after the scan, the first index of each.
-layout(std430, binding = 16) buffer WordCounts { uvec2 word_counts[]; };
+layout(std430, binding = ssbo_word_counts) buffer WordCounts { uvec2 word_counts[]; };
 
 uniform uint active_cells;
 uniform uvec3 grid_dims;  // NX, NY, NZ

@@ -2,10 +2,11 @@
 // Exclusive prefix sums of the per-word counts, in place, by one workgroup: each invocation sums
 // a contiguous run of words, the run totals are scanned in shared memory, then each invocation
 // writes its run's offsets. The grand totals go to `totals` (read back to size the lists).
+#include "common/shared_constants.h"
 layout(local_size_x = 256) in;
 
-layout(std430, binding = 16) buffer WordCounts { uvec2 word_counts[]; };
-layout(std430, binding = 17) writeonly buffer Totals { uvec2 totals; };
+layout(std430, binding = ssbo_word_counts) buffer WordCounts { uvec2 word_counts[]; };
+layout(std430, binding = ssbo_selection_totals) writeonly buffer Totals { uvec2 totals; };
 
 uniform uint word_total;
 

@@ -1,12 +1,13 @@
 #version 450 core
 // Per word of 32 cells, from its offsets (scan_primary_counts.comp): the compact indices of its
 // primary cells and the face records of their drawn faces (build_face_lists' order).
+#include "common/shared_constants.h"
 layout(local_size_x = 64) in;
 
 #include "selection/primary_words.glsl"
 
-layout(std430, binding = 18) writeonly buffer PrimaryCells { uint primary_cells[]; };
-layout(std430, binding = 19) writeonly buffer PrimaryFaces { uint primary_faces[]; };
+layout(std430, binding = ssbo_primary_cells_out) writeonly buffer PrimaryCells { uint primary_cells[]; };
+layout(std430, binding = ssbo_primary_faces_out) writeonly buffer PrimaryFaces { uint primary_faces[]; };
 
 void main() {
     uint word = word_index();

@@ -2,14 +2,15 @@
 // First step of the per-frame face selection (SPEC.md section 6): one invocation per IJK brick
 // tests the brick's box against the model camera's frustum and the cut pyramid and stores its
 // class for visibility/cull_cells.comp; bricks that give no face are counted here.
+#include "common/shared_constants.h"
 layout(local_size_x = 64) in;
 
 #include "visibility/classify.glsl"
 
-layout(std430, binding = 7) readonly buffer BrickBegin { uint brick_begin[]; };  // brick_count + 1
-layout(std430, binding = 8) readonly buffer BrickBoxes { vec4 brick_boxes[]; };  // min, max per brick
+layout(std430, binding = ssbo_brick_begin) readonly buffer BrickBegin { uint brick_begin[]; };  // brick_count + 1
+layout(std430, binding = ssbo_brick_boxes) readonly buffer BrickBoxes { vec4 brick_boxes[]; };  // min, max per brick
 #include "visibility/culling_counters.glsl"
-layout(std430, binding = 15) writeonly buffer BrickClasses { uint brick_classes[]; };
+layout(std430, binding = ssbo_brick_classes) writeonly buffer BrickClasses { uint brick_classes[]; };
 
 uniform uint brick_count;
 

@@ -14,6 +14,7 @@
 // the draw order, and with it which of two coincident faces wins the depth test, does not depend
 // on the order the GPU's invocations ran in. The CPU reads nothing back to draw. The bricks'
 // classes come from visibility/classify_bricks.comp.
+#include "common/shared_constants.h"
 layout(local_size_x = 64) in;
 
 #include "common/grid.glsl"
@@ -28,8 +29,8 @@ layout(binding = 14) uniform usamplerBuffer brick_cell_texels;   // compact cell
 layout(binding = 15) uniform usamplerBuffer brick_begin_texels;  // first cell of each brick, brick_count + 1
 layout(binding = 16) uniform usamplerBuffer brick_class_texels;  // classify_bricks.comp
 #include "visibility/culling_counters.glsl"
-layout(std430, binding = 16) buffer CellFaceMasks { uint cell_face_masks[]; };  // 4 slots per uint, cleared per frame
-layout(std430, binding = 17) buffer BrickFaceCounts { uint brick_face_counts[]; };  // cleared per frame
+layout(std430, binding = ssbo_cell_face_masks) buffer CellFaceMasks { uint cell_face_masks[]; };  // 4 slots per uint, cleared per frame
+layout(std430, binding = ssbo_brick_face_counts) buffer BrickFaceCounts { uint brick_face_counts[]; };  // cleared per frame
 
 uniform uint brick_count;
 uniform uint bricks_per_group;  // consecutive bricks a workgroup takes in turn

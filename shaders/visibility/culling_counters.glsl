@@ -1,7 +1,8 @@
 // The culling's counters (src/cutaway/visibility/visible_faces.h CullingCounts), cleared each
 // frame: bricks and cells culled by visibility/classify_bricks.comp and cull_cells.comp, the
 // faces selected in all by visibility/scan_bricks.comp, read by finish_culling.comp.
-layout(std430, binding = 11) buffer Culling {
+#include "common/shared_constants.h"
+layout(std430, binding = ssbo_culling_counters) buffer Culling {
     uint bricks_culled;
     uint cells_culled;
     uint cells_behind;

@@ -8,9 +8,10 @@
 // with 4 fixed loads; only the last row and column loop over the odd leftover (a loop whose
 // bounds vary across SIMD lanes runs as long as its longest lane): the pyramid took 9-11 ms at
 // 1080p before, about 4 ms after (sapphire, alternating runs).
+#include "common/shared_constants.h"
 layout(local_size_x = 64, local_size_y = 4) in;
 
-layout(std430, binding = 13) buffer CutPyramid { vec2 pyramid[]; };
+layout(std430, binding = ssbo_cut_pyramid) buffer CutPyramid { vec2 pyramid[]; };
 
 uniform ivec2 level_size;
 uniform int level_offset;

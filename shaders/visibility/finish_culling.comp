@@ -2,6 +2,7 @@
 // After visibility/cull_cells.comp: one indexed draw command per chunk of quads
 // (src/cutaway/quad_draw.h) from the faces selected, clamped to the capacity of the face buffer
 // (an overflow shows as faces_requested > capacity). Chunks past the last face draw nothing.
+#include "common/shared_constants.h"
 layout(local_size_x = 64) in;
 
 #include "visibility/culling_counters.glsl"
@@ -13,7 +14,7 @@ struct DrawElementsIndirectCommand {
     int base_vertex;
     uint base_instance;
 };
-layout(std430, binding = 14) writeonly buffer DrawCommands { DrawElementsIndirectCommand commands[]; };
+layout(std430, binding = ssbo_draw_commands) writeonly buffer DrawCommands { DrawElementsIndirectCommand commands[]; };
 
 uniform uint face_capacity;
 uniform uint chunk_count;

@@ -5,10 +5,11 @@
 // block's total; BLOCKS, a single invocation turns the block totals into the blocks' offsets and
 // writes the sum of all into faces_requested (the indirect draw's count, finish_culling.comp).
 // visibility/write_visible_faces.comp adds the two offsets.
+#include "common/shared_constants.h"
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 18) buffer BrickOffsets { uint brick_offsets[]; };  // within the block
-layout(std430, binding = 19) buffer BlockOffsets { uint block_offsets[]; };
+layout(std430, binding = ssbo_brick_offsets) buffer BrickOffsets { uint brick_offsets[]; };  // within the block
+layout(std430, binding = ssbo_block_offsets) buffer BlockOffsets { uint block_offsets[]; };
 
 uniform uint scan_block;  // bricks per block
 #ifdef BLOCKS
@@ -26,7 +27,7 @@ void main() {
     faces_requested = sum;
 }
 #else
-layout(std430, binding = 17) readonly buffer BrickFaceCounts { uint brick_face_counts[]; };
+layout(std430, binding = ssbo_brick_face_counts) readonly buffer BrickFaceCounts { uint brick_face_counts[]; };
 uniform uint brick_count;
 
 void main() {

@@ -2,12 +2,13 @@
 // Once per model, for the plain frame (src/cutaway/exposed_surface.h): the 4 corners of each
 // exposed face in face_corners order, so the plain frame's vertices read 4 stored positions
 // instead of rebuilding 4 corners from pillars and depths each (common/face.vert STORED_CORNERS).
+#include "common/shared_constants.h"
 layout(local_size_x = 64) in;
 
 #include "common/grid.glsl"
 
-layout(std430, binding = 3) readonly buffer Faces { uint faces[]; };
-layout(std430, binding = 4) writeonly buffer Corners { float corners[]; };  // 12 floats per face
+layout(std430, binding = ssbo_faces) readonly buffer Faces { uint faces[]; };
+layout(std430, binding = ssbo_face_corners) writeonly buffer Corners { float corners[]; };  // 12 floats per face
 
 uniform uint face_count;
 

@@ -3,6 +3,7 @@
 // brick by brick and, within a brick, cell by cell and side by side (the all-faces list's order
 // for the cells of one IJK column): each brick starts at its offset from visibility/scan_bricks.comp.
 // Records past face_capacity are dropped (the draw clamps its count to it).
+#include "common/shared_constants.h"
 layout(local_size_x = 64) in;
 
 #include "common/grid.glsl"
@@ -10,11 +11,11 @@ layout(local_size_x = 64) in;
 layout(binding = 12) uniform usamplerBuffer face_class_texels;   // per cell: 2 bits per side
 layout(binding = 14) uniform usamplerBuffer brick_cell_texels;   // compact cells, brick by brick
 layout(binding = 15) uniform usamplerBuffer brick_begin_texels;  // first cell of each brick, brick_count + 1
-layout(std430, binding = 12) writeonly buffer VisibleFaces { uint visible_faces[]; };
-layout(std430, binding = 16) readonly buffer CellFaceMasks { uint cell_face_masks[]; };
-layout(std430, binding = 17) readonly buffer BrickFaceCounts { uint brick_face_counts[]; };
-layout(std430, binding = 18) readonly buffer BrickOffsets { uint brick_offsets[]; };
-layout(std430, binding = 19) readonly buffer BlockOffsets { uint block_offsets[]; };
+layout(std430, binding = ssbo_visible_faces) writeonly buffer VisibleFaces { uint visible_faces[]; };
+layout(std430, binding = ssbo_cell_face_masks) readonly buffer CellFaceMasks { uint cell_face_masks[]; };
+layout(std430, binding = ssbo_brick_face_counts) readonly buffer BrickFaceCounts { uint brick_face_counts[]; };
+layout(std430, binding = ssbo_brick_offsets) readonly buffer BrickOffsets { uint brick_offsets[]; };
+layout(std430, binding = ssbo_block_offsets) readonly buffer BlockOffsets { uint block_offsets[]; };
 
 uniform uint brick_count;
 uniform uint scan_block;

@@ -4,13 +4,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/shared_constants.h"
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 namespace {
 
-enum ExposedSurfaceBinding : unsigned { corners_binding = 4 };
+enum ExposedSurfaceBinding : unsigned { corners_binding = shared::ssbo_face_corners };
 /// Texture unit of the stored corners (common/face.vert STORED_CORNERS).
 constexpr unsigned stored_corner_texture_unit = 14;
 constexpr std::size_t bytes_per_face = 12 * sizeof(float);

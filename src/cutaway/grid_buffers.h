@@ -3,6 +3,7 @@
 // bound at the binding points declared in shaders/common/grid.glsl and face.vert).
 #include <glm/glm.hpp>
 
+#include "common/shared_constants.h"
 #include "cutaway/grid_layout.h"
 #include "cutaway/quad_draw.h"
 #include "gl/gl_objects.h"
@@ -11,8 +12,9 @@
 namespace cutaway::pipeline {
 
 /// Binding points shared with the shaders.
-enum BufferBinding : unsigned { faces_binding = 3, primary_cells_binding = 5,
-                                cell_face_classes_binding = 9, primary_bits_binding = 10 };
+enum BufferBinding : unsigned { faces_binding = shared::ssbo_faces, primary_cells_binding = shared::ssbo_primary_cells,
+                                cell_face_classes_binding = shared::ssbo_cell_face_classes,
+                                primary_bits_binding = shared::ssbo_primary_bits };
 /// Texture units of the geometry's buffer textures (common/grid.glsl).
 enum GeometryTextureUnit : unsigned { pillar_texture_unit = 8, corner_depth_texture_unit = 9, cell_texture_unit = 10,
                                       value_texture_unit = 11, face_class_texture_unit = 12, primary_bit_texture_unit = 13 };

@@ -1,11 +1,12 @@
 #include "cutaway/cut_surface/cell_boxes.h"
 
+#include "common/shared_constants.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 namespace {
 constexpr GLuint cluster_range_texture_unit = 12, cluster_cell_texture_unit = 13;  // frustum.vert (CLUSTERS)
-constexpr GLuint opening_cells_binding = 6;                                         // frustum.vert (OPENING)
+constexpr GLuint opening_cells_binding = shared::ssbo_opening_cells;  // frustum.vert (OPENING)
 
 /// The uniforms and depth state every box draw shares; the caller binds its cells and draws.
 void prepare_boxes(const gl::Program& p, const CutSurfaceInputs& in, const gl::Framebuffer& framebuffer) {

@@ -5,14 +5,16 @@
 #include <span>
 #include <stdexcept>
 
+#include "common/shared_constants.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 namespace {
 
-enum SelectionBinding : unsigned { active_words_binding = 15,
-                                   word_counts_binding = 16, totals_binding = 17, primary_cells_out_binding = 18,
-                                   primary_faces_out_binding = 19 };
+enum SelectionBinding : unsigned {
+    active_words_binding = shared::ssbo_active_words, word_counts_binding = shared::ssbo_word_counts,
+    totals_binding = shared::ssbo_selection_totals, primary_cells_out_binding = shared::ssbo_primary_cells_out,
+    primary_faces_out_binding = shared::ssbo_primary_faces_out };
 
 std::size_t word_count(std::size_t cells) { return (cells + 31) / 32; }
 

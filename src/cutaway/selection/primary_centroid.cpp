@@ -3,11 +3,12 @@
 #include <algorithm>
 #include <vector>
 
+#include "common/shared_constants.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 namespace {
-constexpr GLuint partial_sums_binding = 20;  // primary_centroid.comp
+constexpr GLuint partial_sums_binding = shared::ssbo_centroid_partial_sums;  // primary_centroid.comp
 constexpr std::size_t group_size = 256;
 }  // namespace
 

@@ -7,13 +7,14 @@
 #include <glm/glm.hpp>
 #include <vector>
 
+#include "common/shared_constants.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_library.h"
 
 namespace cutaway::pipeline {
 
 /// Storage binding of the pyramid buffer (visibility/cut_pyramid.comp writes it).
-inline constexpr unsigned cut_pyramid_binding = 13;
+inline constexpr unsigned cut_pyramid_binding = shared::ssbo_cut_pyramid;
 /// Texture unit of the pyramid as an RG32F buffer texture (visibility/classify.glsl reads it).
 inline constexpr unsigned cut_pyramid_texture_unit = 17;
 /// Enough levels for a 65536-pixel side.

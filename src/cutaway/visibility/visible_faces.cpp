@@ -4,16 +4,19 @@
 #include <array>
 #include <span>
 
+#include "common/shared_constants.h"
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 namespace {
 
-enum CullingBinding : unsigned { brick_begin_binding = 7, brick_boxes_binding = 8,
-                                 culling_binding = 11, visible_faces_binding = 12, draw_commands_binding = 14,
-                                 brick_classes_binding = 15, cell_masks_binding = 16, brick_counts_binding = 17,
-                                 brick_offsets_binding = 18, block_offsets_binding = 19 };
+enum CullingBinding : unsigned {
+    brick_begin_binding = shared::ssbo_brick_begin, brick_boxes_binding = shared::ssbo_brick_boxes,
+    culling_binding = shared::ssbo_culling_counters, visible_faces_binding = shared::ssbo_visible_faces,
+    draw_commands_binding = shared::ssbo_draw_commands, brick_classes_binding = shared::ssbo_brick_classes,
+    cell_masks_binding = shared::ssbo_cell_face_masks, brick_counts_binding = shared::ssbo_brick_face_counts,
+    brick_offsets_binding = shared::ssbo_brick_offsets, block_offsets_binding = shared::ssbo_block_offsets };
 /// Texture units of cull_cells.comp's buffer textures (the grid's own take 8-13).
 enum CullingTextureUnit : unsigned { brick_cell_texture_unit = 14, brick_begin_texture_unit = 15, brick_class_texture_unit = 16 };
 
