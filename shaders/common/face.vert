@@ -17,7 +17,7 @@
 
 layout(std430, binding = ssbo_faces) readonly buffer Faces { uint faces[]; };
 #ifdef STORED_CORNERS
-layout(binding = 14) uniform samplerBuffer stored_corner_texels;  // RGB32F, 4 per face
+layout(binding = tex_stored_corners) uniform samplerBuffer stored_corner_texels;  // RGB32F, 4 per face
 #endif
 
 uniform mat4 view_projection;

@@ -1,10 +1,11 @@
 // Corner-point geometry on the GPU: corners rebuilt from pillars and per-cell corner depths
 // (src/cutaway/grid_layout.h describes the buffers). Render space: X east, Y north, Z up.
 // Read through buffer textures (src/cutaway/grid_buffers.h says why).
-layout(binding = 8) uniform samplerBuffer pillar_texels;        // top, bottom per pillar
-layout(binding = 9) uniform samplerBuffer corner_depth_texels;  // per depth plane slot and (i, j): 4 corner depths
-layout(binding = 10) uniform usamplerBuffer cell_texels;        // pillar of corner 0 | flip bit, top-face texel
-layout(binding = 11) uniform samplerBuffer cell_value_texels;  // property per active cell
+#include "common/shared_constants.h"
+layout(binding = tex_pillars) uniform samplerBuffer pillar_texels;        // top, bottom per pillar
+layout(binding = tex_corner_depths) uniform samplerBuffer corner_depth_texels;  // per depth plane slot and (i, j): 4 corner depths
+layout(binding = tex_cells) uniform usamplerBuffer cell_texels;        // pillar of corner 0 | flip bit, top-face texel
+layout(binding = tex_cell_values) uniform samplerBuffer cell_value_texels;  // property per active cell
 
 uniform uvec2 grid_size;  // NX, NY
 uniform float up_sign;    // -1 when z is depth

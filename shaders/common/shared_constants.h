@@ -53,6 +53,22 @@ CUTAWAY_SHARED_CONST uint ssbo_block_offsets = 19u;      // culling: each block'
 CUTAWAY_SHARED_CONST uint ssbo_primary_faces_out = 19u;  // selection: the primary faces written
 CUTAWAY_SHARED_CONST uint ssbo_centroid_partial_sums = 20u;  // primary centroid's partial sums
 
+// Texture units of the samplers shaders declare at a fixed binding (layout(binding = NAME));
+// passes that never run together share units, each under its own name.
+CUTAWAY_SHARED_CONST uint tex_nearest_face = 7u;      // stage 2: face index left by nearest_face.frag
+CUTAWAY_SHARED_CONST uint tex_pillars = 8u;           // grid: pillar coordinates
+CUTAWAY_SHARED_CONST uint tex_corner_depths = 9u;     // grid: corner depths
+CUTAWAY_SHARED_CONST uint tex_cells = 10u;            // grid: compact cells
+CUTAWAY_SHARED_CONST uint tex_cell_values = 11u;      // grid: the colouring's values
+CUTAWAY_SHARED_CONST uint tex_face_classes = 12u;     // culling: faces' classes
+CUTAWAY_SHARED_CONST uint tex_cluster_ranges = 12u;   // frustum clusters: each cluster's cells
+CUTAWAY_SHARED_CONST uint tex_primary_bits = 13u;     // culling: one bit per active cell
+CUTAWAY_SHARED_CONST uint tex_cluster_cells = 13u;    // frustum clusters: the cells
+CUTAWAY_SHARED_CONST uint tex_brick_cells = 14u;      // culling: cells by brick
+CUTAWAY_SHARED_CONST uint tex_stored_corners = 14u;   // exposed surface: stored face corners
+CUTAWAY_SHARED_CONST uint tex_brick_begin = 15u;      // culling: first cell of each brick
+CUTAWAY_SHARED_CONST uint tex_brick_classes = 16u;    // culling: bricks' classes
+
 #undef CUTAWAY_SHARED_CONST
 #ifdef __cplusplus
 }  // namespace cutaway::shared

@@ -9,8 +9,8 @@
 #ifdef CLUSTERS
 // One point per cluster of primaries (cut_surface/primary_clusters.h): its cells' compact indices
 // are cluster_cells[first .. first + count), (first, count) = cluster_ranges[point].
-layout(binding = 12) uniform usamplerBuffer cluster_ranges;
-layout(binding = 13) uniform usamplerBuffer cluster_cells;
+layout(binding = tex_cluster_ranges) uniform usamplerBuffer cluster_ranges;
+layout(binding = tex_cluster_cells) uniform usamplerBuffer cluster_cells;
 #elif defined(OPENING)
 // Cells whose cut opens or closes over an animation's frames (cut_surface/opening_cut.h): the
 // compact cell and, as float bits, the share of the depth from the rim to its back face reached.

@@ -9,6 +9,7 @@
 // DEFERRED (the cut test only: the nearest kept fragment leaves its cell, face info, edge line,
 // face normal and linear depth, and secondary/deferred_shading.comp shades each pixel once),
 // CUT_CAMERA_IS_VIEW (common/fragment_cut.glsl).
+#include "common/shared_constants.h"
 #include "common/grid.glsl"
 #include "common/shading.glsl"
 #include "common/cut_lookup.glsl"
@@ -24,7 +25,7 @@ uniform float line_width;       // pixels
 
 #ifdef NEAREST_FACE_TESTED
 layout(early_fragment_tests) in;
-layout(binding = 7) uniform usampler2D nearest_face;  // 1 + face index, 0 = none
+layout(binding = tex_nearest_face) uniform usampler2D nearest_face;  // 1 + face index, 0 = none
 #endif
 #ifdef DEFERRED
 #include "common/deferred_face.glsl"

@@ -23,11 +23,11 @@ layout(local_size_x = 64) in;
 
 // Read as buffer textures: on llvmpipe a storage-buffer load at an index that varies across the
 // SIMD lanes runs lane by lane, a texel fetch is one gather (the selection ran 1.3x faster so).
-layout(binding = 12) uniform usamplerBuffer face_class_texels;   // per cell: 2 bits per side
-layout(binding = 13) uniform usamplerBuffer primary_bit_texels;  // 1 bit per compact cell
-layout(binding = 14) uniform usamplerBuffer brick_cell_texels;   // compact cells, brick by brick
-layout(binding = 15) uniform usamplerBuffer brick_begin_texels;  // first cell of each brick, brick_count + 1
-layout(binding = 16) uniform usamplerBuffer brick_class_texels;  // classify_bricks.comp
+layout(binding = tex_face_classes) uniform usamplerBuffer face_class_texels;   // per cell: 2 bits per side
+layout(binding = tex_primary_bits) uniform usamplerBuffer primary_bit_texels;  // 1 bit per compact cell
+layout(binding = tex_brick_cells) uniform usamplerBuffer brick_cell_texels;   // compact cells, brick by brick
+layout(binding = tex_brick_begin) uniform usamplerBuffer brick_begin_texels;  // first cell of each brick, brick_count + 1
+layout(binding = tex_brick_classes) uniform usamplerBuffer brick_class_texels;  // classify_bricks.comp
 #include "visibility/culling_counters.glsl"
 layout(std430, binding = ssbo_cell_face_masks) buffer CellFaceMasks { uint cell_face_masks[]; };  // 4 slots per uint, cleared per frame
 layout(std430, binding = ssbo_brick_face_counts) buffer BrickFaceCounts { uint brick_face_counts[]; };  // cleared per frame

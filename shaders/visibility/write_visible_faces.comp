@@ -8,9 +8,9 @@ layout(local_size_x = 64) in;
 
 #include "common/grid.glsl"
 
-layout(binding = 12) uniform usamplerBuffer face_class_texels;   // per cell: 2 bits per side
-layout(binding = 14) uniform usamplerBuffer brick_cell_texels;   // compact cells, brick by brick
-layout(binding = 15) uniform usamplerBuffer brick_begin_texels;  // first cell of each brick, brick_count + 1
+layout(binding = tex_face_classes) uniform usamplerBuffer face_class_texels;   // per cell: 2 bits per side
+layout(binding = tex_brick_cells) uniform usamplerBuffer brick_cell_texels;   // compact cells, brick by brick
+layout(binding = tex_brick_begin) uniform usamplerBuffer brick_begin_texels;  // first cell of each brick, brick_count + 1
 layout(std430, binding = ssbo_visible_faces) writeonly buffer VisibleFaces { uint visible_faces[]; };
 layout(std430, binding = ssbo_cell_face_masks) readonly buffer CellFaceMasks { uint cell_face_masks[]; };
 layout(std430, binding = ssbo_brick_face_counts) readonly buffer BrickFaceCounts { uint brick_face_counts[]; };

@@ -13,7 +13,7 @@ namespace {
 
 enum ExposedSurfaceBinding : unsigned { corners_binding = shared::ssbo_face_corners };
 /// Texture unit of the stored corners (common/face.vert STORED_CORNERS).
-constexpr unsigned stored_corner_texture_unit = 14;
+constexpr unsigned stored_corner_texture_unit = shared::tex_stored_corners;
 constexpr std::size_t bytes_per_face = 12 * sizeof(float);
 
 FaceBuffer checked_faces(const GridLayout& layout) {

@@ -16,8 +16,10 @@ enum BufferBinding : unsigned { faces_binding = shared::ssbo_faces, primary_cell
                                 cell_face_classes_binding = shared::ssbo_cell_face_classes,
                                 primary_bits_binding = shared::ssbo_primary_bits };
 /// Texture units of the geometry's buffer textures (common/grid.glsl).
-enum GeometryTextureUnit : unsigned { pillar_texture_unit = 8, corner_depth_texture_unit = 9, cell_texture_unit = 10,
-                                      value_texture_unit = 11, face_class_texture_unit = 12, primary_bit_texture_unit = 13 };
+enum GeometryTextureUnit : unsigned {
+    pillar_texture_unit = shared::tex_pillars, corner_depth_texture_unit = shared::tex_corner_depths,
+    cell_texture_unit = shared::tex_cells, value_texture_unit = shared::tex_cell_values,
+    face_class_texture_unit = shared::tex_face_classes, primary_bit_texture_unit = shared::tex_primary_bits };
 
 struct FaceBuffer {
     gl::Buffer buffer;

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "common/shared_constants.h"
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
@@ -178,7 +179,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
         glDepthFunc(GL_EQUAL);
         glDepthMask(GL_FALSE);
         defines.emplace_back("NEAREST_FACE_TESTED", "");
-        nearest_face.index.bind(7);
+        nearest_face.index.bind(shared::tex_nearest_face);
     }
     scene.framebuffer.bind();
     const gl::Program& p = programs_.get(defines);

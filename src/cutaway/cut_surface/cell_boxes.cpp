@@ -5,7 +5,7 @@
 
 namespace cutaway::pipeline {
 namespace {
-constexpr GLuint cluster_range_texture_unit = 12, cluster_cell_texture_unit = 13;  // frustum.vert (CLUSTERS)
+constexpr GLuint cluster_range_texture_unit = shared::tex_cluster_ranges, cluster_cell_texture_unit = shared::tex_cluster_cells;
 constexpr GLuint opening_cells_binding = shared::ssbo_opening_cells;  // frustum.vert (OPENING)
 
 /// The uniforms and depth state every box draw shares; the caller binds its cells and draws.

@@ -18,7 +18,9 @@ enum CullingBinding : unsigned {
     cell_masks_binding = shared::ssbo_cell_face_masks, brick_counts_binding = shared::ssbo_brick_face_counts,
     brick_offsets_binding = shared::ssbo_brick_offsets, block_offsets_binding = shared::ssbo_block_offsets };
 /// Texture units of cull_cells.comp's buffer textures (the grid's own take 8-13).
-enum CullingTextureUnit : unsigned { brick_cell_texture_unit = 14, brick_begin_texture_unit = 15, brick_class_texture_unit = 16 };
+enum CullingTextureUnit : unsigned { brick_cell_texture_unit = shared::tex_brick_cells,
+                                     brick_begin_texture_unit = shared::tex_brick_begin,
+                                     brick_class_texture_unit = shared::tex_brick_classes };
 
 /// Bricks one workgroup of cull_cells.comp takes in turn: on llvmpipe a workgroup costs about
 /// 10 us before its first instruction (measured: an empty dispatch of sapphire's 3,250 one-brick
