@@ -1,7 +1,9 @@
 #include "volume/orientation_labels.h"
 
 #include <algorithm>
+#include <cmath>
 
+#include "annotation/axis_ticks.h"
 #include "volume/image_drawing.h"
 
 namespace cutaway::volume {
@@ -15,10 +17,63 @@ glm::vec2 to_pixels(const ViewGeometry& view, glm::vec3 p, int width, int height
     return {(0.5f * ndc.x + 0.5f) * float(width), (0.5f - 0.5f * ndc.y) * float(height)};
 }
 
+/// `line` moved so that its ink is centred on `at`.
+annotation::TextLine centred_at(annotation::TextLine line, glm::vec2 at) {
+    const annotation::PixelRect ink = annotation::ink_box(line);
+    line.x = std::round(at.x - 0.5f * (ink.x0 + ink.x1));
+    line.y = std::round(at.y - 0.5f * (ink.y0 + ink.y1));
+    return line;
+}
+
+bool inside(const annotation::PixelRect& r, float right_limit, int height) {
+    return r.x0 >= 0 && r.y0 >= 0 && r.x1 <= right_limit && r.y1 <= float(height);
+}
+
+/// Ticks at round values of `span` (voxel indices 0 .. n - 1 when unknown) along `edge`, whose
+/// voxel-space ends are `origin` and `end` on `axis`; labels clear of `placed` (which they join).
+std::vector<AxisTick> edge_ticks(const ViewGeometry& view, int width, int height, float right_limit, float text_scale,
+                                 int axis, glm::vec3 origin, SurveySpan span, glm::vec2 centre,
+                                 std::vector<annotation::PixelRect>& placed) {
+    const int voxels = int(std::lround(view.box[axis]));
+    if (voxels < 1) return {};
+    if (span.first == span.last) span = {0, double(voxels - 1)};
+    const annotation::AxisTicks values =
+        annotation::nice_ticks(std::min(span.first, span.last), std::max(span.first, span.last), 3);
+    std::vector<AxisTick> ticks;
+    for (std::size_t k = 0; k < values.values.size(); ++k) {
+        // The value's voxel centre along the axis (voxel v spans [v, v + 1]).
+        const double share = voxels > 1 ? (values.values[k] - span.first) / (span.last - span.first) : 0.0;
+        glm::vec3 p = origin;
+        p[axis] = float(share * double(voxels - 1) + 0.5);
+        AxisTick tick;
+        tick.value = values.values[k];
+        tick.from = to_pixels(view, p, width, height);
+        glm::vec3 q = p;
+        q[axis] += 1.0f;
+        glm::vec2 along = to_pixels(view, q, width, height) - tick.from;
+        if (glm::length(along) == 0.0f) continue;
+        glm::vec2 out{-along.y, along.x};
+        out /= glm::length(out);
+        if (glm::dot(out, tick.from - centre) < 0) out = -out;
+        tick.to = tick.from + out * (3 * text_scale);
+        tick.label = {values.labels[k], 0, 0, text_scale};
+        const annotation::PixelRect ink = annotation::ink_box(tick.label);
+        const float reach = 0.5f * std::abs(glm::dot(glm::vec2(ink.width(), ink.height()), glm::abs(out)));
+        tick.label = centred_at(tick.label, tick.to + out * (2 * text_scale + reach));
+        const annotation::PixelRect box = annotation::ink_box(tick.label);
+        if (!inside(box, right_limit, height) ||
+            std::any_of(placed.begin(), placed.end(), [&](const annotation::PixelRect& r) { return r.overlaps(box); }))
+            continue;
+        placed.push_back(box);
+        ticks.push_back(tick);
+    }
+    return ticks;
+}
+
 }  // namespace
 
 std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, int height, float right_limit,
-                                           float text_scale) {
+                                           float text_scale, const SurveyAxes& axes) {
     // The corner lowest on screen: its edges run along the cube's visible bottom.
     glm::vec3 origin(0);
     float lowest = -1e30f;
@@ -30,7 +85,8 @@ std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, 
         }
     }
     const glm::vec2 centre = to_pixels(view, 0.5f * view.box, width, height);
-    static constexpr const char* names[3] = {"time", "crossline", "inline"};  // voxel axes x, y, z
+    const SurveySpan spans[3] = {axes.time_ms, axes.crossline, axes.inline_number};  // voxel axes x, y, z
+    const char* names[3] = {axes.time_ms.first != axes.time_ms.last ? "time (ms)" : "time", "crossline", "inline"};
     std::array<AxisEdge, 3> edges;
     for (int axis = 0; axis < 3; ++axis) {
         glm::vec3 end = origin;
@@ -49,6 +105,11 @@ std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, 
         edge.label.x = std::round(std::clamp(anchor.x - 0.5f * size.x, margin, std::max(margin, right_limit - margin - size.x)));
         edge.label.y = std::round(std::clamp(anchor.y - 0.5f * size.y, margin, float(height) - margin - size.y));
     }
+    std::vector<annotation::PixelRect> placed;
+    for (const AxisEdge& edge : edges) placed.push_back(annotation::ink_box(edge.label));
+    for (int axis = 0; axis < 3; ++axis)
+        edges[std::size_t(axis)].ticks = edge_ticks(view, width, height, right_limit, text_scale, axis, origin,
+                                                    spans[axis], centre, placed);
     return edges;
 }
 
@@ -56,6 +117,10 @@ void draw_orientation(gl::RgbaImage& image, const std::array<AxisEdge, 3>& edges
     for (const AxisEdge& edge : edges) {
         draw_line(image, edge.from, edge.to, line_width, ink);
         draw_text(image, edge.label, ink);
+        for (const AxisTick& tick : edge.ticks) {
+            draw_line(image, tick.from, tick.to, line_width, ink);
+            draw_text(image, tick.label, ink);
+        }
     }
 }
 

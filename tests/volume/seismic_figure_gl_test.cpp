@@ -125,10 +125,27 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
         EXPECT_LT((0.5f * clip.x / clip.w + 0.5f) * float(side), bar.bounds().x0) << "cube corner " << c << " under the bar";
         EXPECT_GT(clip.x / clip.w, -1.0f) << "cube corner " << c << " left of the image";
     }
-    const std::array<AxisEdge, 3> edges = layout_orientation(view, side, side, bar.bounds().x0, bar.text_scale);
-    const char* names[3] = {"time", "crossline", "inline"};
+    const std::array<AxisEdge, 3> edges = layout_orientation(view, side, side, bar.bounds().x0, bar.text_scale, f3_.axes);
+    const char* names[3] = {"time (ms)", "crossline", "inline"};
+    const SurveySpan spans[3] = {f3_.axes.time_ms, f3_.axes.crossline, f3_.axes.inline_number};
+    std::vector<annotation::PixelRect> labels;
+    for (const AxisEdge& edge : edges) {
+        labels.push_back(annotation::ink_box(edge.label));
+        for (const AxisTick& tick : edge.ticks) labels.push_back(annotation::ink_box(tick.label));
+    }
+    for (std::size_t a = 0; a < labels.size(); ++a)
+        for (std::size_t b = a + 1; b < labels.size(); ++b) EXPECT_FALSE(labels[a].overlaps(labels[b])) << a << " " << b;
     for (std::size_t a = 0; a < 3; ++a) {
         EXPECT_EQ(edges[a].label.text, names[a]);
+        // The survey's numbers along each edge: at least two round values a reader can read off.
+        EXPECT_GE(edges[a].ticks.size(), 2u) << names[a];
+        for (const AxisTick& tick : edges[a].ticks) {
+            EXPECT_GE(tick.value, std::min(spans[a].first, spans[a].last)) << names[a];
+            EXPECT_LE(tick.value, std::max(spans[a].first, spans[a].last)) << names[a];
+            const annotation::PixelRect ink = annotation::ink_box(tick.label);
+            EXPECT_GE(ink.x0, 0);
+            EXPECT_LE(ink.x1, bar.bounds().x0) << names[a] << " tick " << tick.label.text << " runs into the colour bar";
+        }
         const annotation::PixelRect ink = annotation::ink_box(edges[a].label);
         EXPECT_GE(ink.x0, 0);
         EXPECT_GE(ink.y0, 0);
