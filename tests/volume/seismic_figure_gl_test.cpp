@@ -110,53 +110,59 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
     tf.window = percentile_window(f3_);
     const VolumeScene scene = make_scene(f3_, build_transfer_table(tf), 8, tf.window);
     const annotation::ColourBarLabel label = colour_bar_label(scene);
-    const annotation::ColourBarLayout bar = annotation::layout_colour_bar(label, side, side);
-    EXPECT_GE(bar.ticks.size(), 3u);
-    EXPECT_LT(label.min, label.max);
-    RayCastSettings settings;
-    settings.width = settings.height = side;
-    settings.camera = {40, 25, 0, settings.camera.fov_deg};
-    settings.reserved_right_px = annotation::colour_bar_reserved_width(label, side, side);  // as `cutaway volume` sets it
-    const ViewGeometry view = make_view(f3_.dims, settings);
-    // The framed cube stays clear of the bar: its 8 corners project left of it.
-    for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner{c & 1 ? view.box.x : 0.0f, c & 2 ? view.box.y : 0.0f, c & 4 ? view.box.z : 0.0f};
-        const glm::vec4 clip = view.voxel_to_clip * glm::vec4(corner, 1.0f);
-        EXPECT_LT((0.5f * clip.x / clip.w + 0.5f) * float(side), bar.bounds().x0) << "cube corner " << c << " under the bar";
-        EXPECT_GT(clip.x / clip.w, -1.0f) << "cube corner " << c << " left of the image";
-    }
-    const std::array<AxisEdge, 3> edges = layout_orientation(view, side, side, bar.bounds().x0, bar.text_scale, f3_.axes);
-    const char* names[3] = {"time (ms)", "crossline", "inline"};
-    const SurveySpan spans[3] = {f3_.axes.time_ms, f3_.axes.crossline, f3_.axes.inline_number};
-    std::vector<annotation::PixelRect> labels;
-    for (const AxisEdge& edge : edges) {
-        labels.push_back(annotation::ink_box(edge.label));
-        for (const AxisTick& tick : edge.ticks) labels.push_back(annotation::ink_box(tick.label));
-    }
-    // Apart by more than a glyph's stroke: two values side by side would read as one number.
-    const float gap = 2 * bar.text_scale;
-    for (std::size_t a = 0; a < labels.size(); ++a)
-        for (std::size_t b = a + 1; b < labels.size(); ++b) {
-            const annotation::PixelRect& r = labels[a];
-            EXPECT_FALSE(annotation::PixelRect({r.x0 - gap, r.y0 - gap, r.x1 + gap, r.y1 + gap}).overlaps(labels[b])) << a << " " << b;
+    // The tests' frame, and a figure's (where every axis has room for two values at least).
+    for (const int size : {side, 640}) {
+        SCOPED_TRACE(size);
+        const std::size_t least_ticks = size >= 640 ? 2 : 1;
+        const annotation::ColourBarLayout bar = annotation::layout_colour_bar(label, size, size);
+        EXPECT_GE(bar.ticks.size(), 3u);
+        EXPECT_LT(label.min, label.max);
+        RayCastSettings settings;
+        settings.width = settings.height = size;
+        settings.camera = {40, 25, 0, settings.camera.fov_deg};
+        settings.reserved_right_px = annotation::colour_bar_reserved_width(label, size, size);  // as `cutaway volume` sets it
+        const ViewGeometry view = make_view(f3_.dims, settings);
+        // The framed cube stays clear of the bar: its 8 corners project left of it.
+        for (int c = 0; c < 8; ++c) {
+            const glm::vec3 corner{c & 1 ? view.box.x : 0.0f, c & 2 ? view.box.y : 0.0f, c & 4 ? view.box.z : 0.0f};
+            const glm::vec4 clip = view.voxel_to_clip * glm::vec4(corner, 1.0f);
+            EXPECT_LT((0.5f * clip.x / clip.w + 0.5f) * float(size), bar.bounds().x0) << "cube corner " << c << " under the bar";
+            EXPECT_GT(clip.x / clip.w, -1.0f) << "cube corner " << c << " left of the image";
         }
-    for (std::size_t a = 0; a < 3; ++a) {
-        EXPECT_EQ(edges[a].label.text, names[a]);
-        // The survey's numbers along each edge: at least two round values a reader can read off.
-        EXPECT_GE(edges[a].ticks.size(), 2u) << names[a];
-        for (const AxisTick& tick : edges[a].ticks) {
-            EXPECT_GE(tick.value, std::min(spans[a].first, spans[a].last)) << names[a];
-            EXPECT_LE(tick.value, std::max(spans[a].first, spans[a].last)) << names[a];
-            const annotation::PixelRect ink = annotation::ink_box(tick.label);
+        const std::array<AxisEdge, 3> edges = layout_orientation(view, size, size, bar.bounds().x0, bar.text_scale, f3_.axes);
+        const char* names[3] = {"time (ms)", "crossline", "inline"};
+        const SurveySpan spans[3] = {f3_.axes.time_ms, f3_.axes.crossline, f3_.axes.inline_number};
+        std::vector<annotation::PixelRect> labels;
+        for (const AxisEdge& edge : edges) {
+            labels.push_back(annotation::ink_box(edge.label));
+            for (const AxisTick& tick : edge.ticks) labels.push_back(annotation::ink_box(tick.label));
+        }
+        // Apart by more than a glyph's stroke: two values side by side would read as one number.
+        const float gap = 2 * bar.text_scale;
+        for (std::size_t a = 0; a < labels.size(); ++a)
+            for (std::size_t b = a + 1; b < labels.size(); ++b) {
+                const annotation::PixelRect& r = labels[a];
+                const annotation::PixelRect padded{r.x0 - gap, r.y0 - gap, r.x1 + gap, r.y1 + gap};
+                EXPECT_FALSE(padded.overlaps(labels[b])) << a << " " << b;
+            }
+        for (std::size_t a = 0; a < 3; ++a) {
+            EXPECT_EQ(edges[a].label.text, names[a]);
+            // The survey's numbers along each edge: round values a reader can read off.
+            EXPECT_GE(edges[a].ticks.size(), least_ticks) << names[a];
+            for (const AxisTick& tick : edges[a].ticks) {
+                EXPECT_GE(tick.value, std::min(spans[a].first, spans[a].last)) << names[a];
+                EXPECT_LE(tick.value, std::max(spans[a].first, spans[a].last)) << names[a];
+                const annotation::PixelRect ink = annotation::ink_box(tick.label);
+                EXPECT_GE(ink.x0, 0);
+                EXPECT_LE(ink.x1, bar.bounds().x0) << names[a] << " tick " << tick.label.text << " runs into the colour bar";
+            }
+            const annotation::PixelRect ink = annotation::ink_box(edges[a].label);
             EXPECT_GE(ink.x0, 0);
-            EXPECT_LE(ink.x1, bar.bounds().x0) << names[a] << " tick " << tick.label.text << " runs into the colour bar";
+            EXPECT_GE(ink.y0, 0);
+            EXPECT_LE(ink.x1, bar.bounds().x0) << names[a] << " runs into the colour bar";
+            EXPECT_LE(ink.y1, float(size));
+            EXPECT_GT(glm::length(edges[a].to - edges[a].from), 10.0f) << names[a];  // the edge is seen
         }
-        const annotation::PixelRect ink = annotation::ink_box(edges[a].label);
-        EXPECT_GE(ink.x0, 0);
-        EXPECT_GE(ink.y0, 0);
-        EXPECT_LE(ink.x1, bar.bounds().x0) << names[a] << " runs into the colour bar";
-        EXPECT_LE(ink.y1, float(side));
-        EXPECT_GT(glm::length(edges[a].to - edges[a].from), 10.0f) << names[a];  // the edge is seen
     }
     // And they are drawn: the annotated frame differs from the plain one.
     const gl::RgbaImage plain = render(TransferFunctionKind::grey, false), annotated = render(TransferFunctionKind::grey, true);
