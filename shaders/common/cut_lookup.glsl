@@ -6,8 +6,9 @@
 // Variant CUT_IMAGES (compute passes): the cut surface and its rear-clamp mask read as images,
 // whose loads cost less than texel fetches on llvmpipe (deferred shading with ray-cast borders,
 // sapphire at 1920x1080: 33-42 ms against 46-56, alternating runs, the same image).
+#include "common/shared_constants.h"
 #ifdef CUT_IMAGES
-layout(r32f, binding = 4) uniform readonly image2D cut_surface_image;
+layout(r32f, binding = img_cut_surface) uniform readonly image2D cut_surface_image;
 float cut_surface_depth(ivec2 texel) { return imageLoad(cut_surface_image, texel).r; }
 #else
 uniform sampler2D cut_surface;   // R32F, cut camera's image
@@ -86,7 +87,7 @@ vec3 cut_normal_at(ivec2 texel) {
 // went past the model there, cut_surface/resolve.frag): the shell behind it shows as cut fill,
 // and no border line is drawn against it.
 #ifdef CUT_IMAGES
-layout(r8, binding = 5) uniform readonly image2D cut_rear_clamp_image;
+layout(r8, binding = img_cut_rear_clamp) uniform readonly image2D cut_rear_clamp_image;
 float cut_rear_clamp_texel(ivec2 texel) { return imageLoad(cut_rear_clamp_image, texel).r; }
 #else
 uniform sampler2D cut_rear_clamp;  // R8: 1 where the cut is clamped at the rear shell, else 0

@@ -69,6 +69,12 @@ CUTAWAY_SHARED_CONST uint tex_stored_corners = 14u;   // exposed surface: stored
 CUTAWAY_SHARED_CONST uint tex_brick_begin = 15u;      // culling: first cell of each brick
 CUTAWAY_SHARED_CONST uint tex_brick_classes = 16u;    // culling: bricks' classes
 
+// Image units of the cut's images that several shaders read (common/cut_lookup.glsl CUT_IMAGES)
+// or cut_surface/cut_normals.comp writes; the other image units are each one pass's own.
+CUTAWAY_SHARED_CONST uint img_cut_surface = 4u;     // the resolved cut's depth (R32F)
+CUTAWAY_SHARED_CONST uint img_cut_rear_clamp = 5u;  // 1 where the cut is clamped at the rear shell (R8)
+CUTAWAY_SHARED_CONST uint img_cut_normals = 6u;     // the cut's world normals (RGBA32F)
+
 #undef CUTAWAY_SHARED_CONST
 #ifdef __cplusplus
 }  // namespace cutaway::shared

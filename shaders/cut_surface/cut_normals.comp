@@ -9,7 +9,7 @@ layout(local_size_x = 64, local_size_y = 4) in;
 #define CUT_IMAGES
 #include "common/cut_lookup.glsl"
 
-layout(rgba32f, binding = 6) uniform writeonly image2D cut_normals;
+layout(rgba32f, binding = img_cut_normals) uniform writeonly image2D cut_normals;
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);

@@ -74,8 +74,8 @@ void set_border_uniforms(const gl::Program& p, const Camera& camera, const Frame
 /// The compute passes read the cut surface and its rear-clamp mask as images (common/cut_lookup.glsl
 /// CUT_IMAGES): image units 4 and 5.
 void bind_cut_images(const CutClip& clip) {
-    glBindImageTexture(4, clip.cut.surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(5, clip.cut.rear_clamp.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
+    glBindImageTexture(shared::img_cut_surface, clip.cut.surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(shared::img_cut_rear_clamp, clip.cut.rear_clamp.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
 }
 
 /// The shading variants of common/secondary_shading.glsl that `settings` asks for.
@@ -116,7 +116,7 @@ void SecondaryPass::store_cut_normals(const CutClip& clip) {
         cut_normals_ = gl::Texture(GL_TEXTURE_2D, GL_RGBA32F, cut_camera.width, cut_camera.height);
     }
     bind_cut_images(clip);  // cut_normals.comp defines CUT_IMAGES itself
-    glBindImageTexture(6, cut_normals_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindImageTexture(shared::img_cut_normals, cut_normals_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gl::set_uniform(cut_normals_program_, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
     set_cut_rays(cut_normals_program_, cut_camera);
     cut_normals_program_.use();
