@@ -10,6 +10,13 @@ layout(binding = tex_cell_values) uniform samplerBuffer cell_value_texels;  // p
 uniform uvec2 grid_size;  // NX, NY
 uniform float up_sign;    // -1 when z is depth
 uniform float z_scale;    // vertical exaggeration
+// A cell's value = x + y x its texel: (0, 1) for float values; a 16-bit code's offset and span
+// (src/cutaway/quantised_values.h) when the values were sent at 16 bits.
+uniform vec2 value_decoding = vec2(0.0, 1.0);
+
+float cell_value(uint compact_cell) {
+    return value_decoding.x + value_decoding.y * texelFetch(cell_value_texels, int(compact_cell)).r;
+}
 
 // Face record (src/cutaway/grid_layout.h pack_face): bits 0-26 compact cell, 27-29 side, 30-31 class.
 uint face_record_cell(uint record) { return record & 0x7ffffffu; }

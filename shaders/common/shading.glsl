@@ -4,7 +4,7 @@ uniform vec2 value_range;       // property values mapped to the ends of the col
 uniform bool log_scale;         // map log10 of the values (value_range above 0; values below it clamp)
 
 vec3 cell_colour(uint compact_cell) {
-    float value = texelFetch(cell_value_texels, int(compact_cell)).r;
+    float value = cell_value(compact_cell);
     vec2 range = value_range;
     if (log_scale) {
         range = log2(value_range);  // log2: the ratio to the range is the same as log10's

@@ -16,7 +16,7 @@ void main() {
     for (uint b = 0u; b < 32u; ++b) {
         uint compact = 32u * word + b;
         if (compact >= active_cells) break;
-        float value = texelFetch(cell_value_texels, int(compact)).r;
+        float value = cell_value(compact);
         bool primary = value >= value_range.x && value <= value_range.y;
         if (primary && use_box) {
             ivec3 c = ivec3(compact_cell_ijk(compact));

@@ -212,7 +212,11 @@ private:
     /// the frame's camera. A step held (none, between report steps) uploads nothing.
     pipeline::Camera upload(std::size_t f, const temporal::CoherentSequence::Frame& frame) {
         const std::size_t uploaded_before = renderer_.status(settings_).uploaded_bytes;
-        if (frame.values_changed) renderer_.set_colouring(*frame.values, label_);
+        // Smooth's blended values change every frame and only colour (its primaries come as
+        // flags): 16 bits each. None selects by range over its values: they stay exact.
+        if (frame.values_changed)
+            renderer_.set_colouring(*frame.values, label_, coherence_ == temporal::Coherence::smooth
+                                                               ? pipeline::ValueStorage::unorm16 : pipeline::ValueStorage::float32);
         if (caption_step_count_ > 0)
             settings_.caption = eclipse::step_caption(label_.property, eclipse::date_at(caption_steps_, frame.time_step),
                                                       frame.time_step, caption_step_count_);

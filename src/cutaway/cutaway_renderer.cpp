@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "cutaway/colour_map.h"
+#include "cutaway/quantised_values.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/cut_surface/cut_seeds.h"
@@ -143,13 +144,18 @@ void CutawayRenderer::resize(int width, int height) {
     freeze(std::nullopt);
 }
 
-void CutawayRenderer::set_colouring(const std::vector<float>& values, const ColourBarLabel& label) {
+void CutawayRenderer::set_colouring(const std::vector<float>& values, const ColourBarLabel& label, ValueStorage storage) {
     if (values.size() != grid_.cell_count())
         throw std::invalid_argument("colour values: " + std::to_string(values.size()) + ", expected one per cell");
     std::vector<float> compact(layout_.cells.size());
     for (std::size_t c = 0; c < compact.size(); ++c) compact[c] = values[layout_.cells[c] & 0x7fffffffu];
-    buffers_.set_values(compact);
-    uploaded_bytes_ += compact.size() * sizeof(float);
+    if (storage == ValueStorage::unorm16) {
+        buffers_.set_values(quantise_unorm16(compact));
+        uploaded_bytes_ += compact.size() * sizeof(std::uint16_t);
+    } else {
+        buffers_.set_values(compact);
+        uploaded_bytes_ += compact.size() * sizeof(float);
+    }
     label_ = label;
 }
 
@@ -170,6 +176,8 @@ void CutawayRenderer::set_primaries(const std::vector<std::uint8_t>& flags) {
 }
 
 void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::optional<grid::IjkBox>& box) {
+    if (buffers_.values_quantised())
+        throw std::logic_error("primaries by range over 16-bit colouring values: set them with ValueStorage::float32");
     selection_.select_range(buffers_, range, box);
     selection_changed();
 }

@@ -115,6 +115,11 @@ struct Primaries {
 /// Whether render() fences each stage (stage times) or only the whole frame.
 enum class Fencing { each_stage, frame_only };
 
+/// How set_colouring sends the values: float32 (4 bytes per active cell, exact: primaries can be
+/// selected by range over them) or unorm16 (2 bytes, quantised over the values' span, for
+/// colouring only: the primaries come as flags; quantised_values.h).
+enum class ValueStorage { float32, unorm16 };
+
 /// The renderer's state as a run reports it (status()).
 struct RendererStatus {
     int width = 0;
@@ -175,9 +180,11 @@ public:
     void resize(int width, int height);
 
     /// Colours cells by `values` (one per Eclipse cell) mapped from the label's range.
-    void set_colouring(const std::vector<float>& values, const ColourBarLabel& label);
+    void set_colouring(const std::vector<float>& values, const ColourBarLabel& label,
+                       ValueStorage storage = ValueStorage::float32);
     /// The primary cells: given as flags (one per Eclipse cell), or chosen on the GPU as the active
     /// cells whose colouring value lies in a range (and inside an IJK box), which uploads nothing.
+    /// A range needs the values at float32: throws std::logic_error after unorm16 values.
     void select(const Primaries& primaries);
 
     /// The user's cut volumes (closed meshes in model coordinates), uploaded once; every frame's

@@ -122,6 +122,7 @@ GridBuffers::GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn
       corner_plane_texels_(corner_planes_, GL_RGBA32F),
       cell_texels_(cells_, GL_RG32UI),
       value_texels_(values_, GL_R32F),
+      value16_texels_(values_, GL_R16, std::max<std::size_t>(layout.cells.size(), 1) * sizeof(std::uint16_t)),
       face_class_texels_(cell_face_classes_, GL_R16UI),
       primary_bit_texels_(primary_bits_, GL_R32UI) {}
 
@@ -134,6 +135,7 @@ void GridBuffers::set_geometry_uniforms(const gl::Program& program) const {
     gl::set_uniform(program, "grid_size", grid_size_);
     gl::set_uniform(program, "up_sign", float(frame_.up_sign));
     gl::set_uniform(program, "z_scale", float(frame_.z_scale));
+    gl::set_uniform(program, "value_decoding", value_decoding_);
 }
 
 std::size_t GridBuffers::memory_bytes() const {
@@ -146,6 +148,15 @@ std::size_t GridBuffers::memory_bytes() const {
 
 void GridBuffers::set_values(const std::vector<float>& compact_values) {
     glNamedBufferSubData(values_.id(), 0, GLsizeiptr(compact_values.size() * sizeof(float)), compact_values.data());
+    value_decoding_ = glm::vec2(0, 1);
+    values_quantised_ = false;
+}
+
+void GridBuffers::set_values(const QuantisedValues& compact_values) {
+    const std::vector<std::uint16_t>& codes = compact_values.codes;
+    glNamedBufferSubData(values_.id(), 0, GLsizeiptr(codes.size() * sizeof(std::uint16_t)), codes.data());
+    value_decoding_ = glm::vec2(compact_values.offset, compact_values.span);  // span 0: every value the offset
+    values_quantised_ = true;
 }
 
 void GridBuffers::upload_primary_bits(const std::vector<std::uint32_t>& bits) {
@@ -176,7 +187,7 @@ void GridBuffers::bind_geometry() const {
     pillar_texels_.bind(pillar_texture_unit);
     corner_plane_texels_.bind(corner_depth_texture_unit);
     cell_texels_.bind(cell_texture_unit);
-    value_texels_.bind(value_texture_unit);
+    (values_quantised() ? value16_texels_ : value_texels_).bind(value_texture_unit);
 }
 
 void GridBuffers::bind_culling_inputs() const {

@@ -5,6 +5,7 @@
 
 #include "common/shared_constants.h"
 #include "cutaway/grid_layout.h"
+#include "cutaway/quantised_values.h"
 #include "cutaway/quad_draw.h"
 #include "gl/gl_objects.h"
 #include "grid/zcorn_store.h"
@@ -45,8 +46,13 @@ public:
     /// Throws std::invalid_argument when the geometry exceeds the GL buffer-texture limit.
     GridBuffers(const GridLayout& layout, const grid::ZcornStore& zcorn, const ModelFrame& frame);
 
-    /// One value per active cell (compact order).
+    /// One value per active cell (compact order), at full precision.
     void set_values(const std::vector<float>& compact_values);
+    /// One value per active cell at 16 bits (quantised_values.h): half the upload, for colouring
+    /// only. The shaders decode it (the value_decoding uniform set_geometry_uniforms sets).
+    void set_values(const QuantisedValues& compact_values);
+    /// Whether the values set last are 16-bit codes (a range selection over them is not exact).
+    bool values_quantised() const { return values_quantised_; }
     /// One primary bit per compact cell (bit c % 32 of word c / 32), read by the culling pass
     /// and by the selection passes (selection/gpu_primary_selection.h) that build the lists.
     void upload_primary_bits(const std::vector<std::uint32_t>& bits);
@@ -58,7 +64,7 @@ public:
     void set_secondary_faces(const std::vector<std::uint32_t>& records) { secondary_ = FaceBuffer::from(records); }
     /// Binds the buffer textures of pillars, corner depths, cells and values.
     void bind_geometry() const;
-    /// Sets the uniforms common/grid.glsl reads (grid_size, up_sign, z_scale) on `program`.
+    /// Sets the uniforms common/grid.glsl reads (grid_size, up_sign, z_scale, value_decoding) on `program`.
     void set_geometry_uniforms(const gl::Program& program) const;
     /// Binds the per-cell face classes and primary bits (visibility/cull_cells.comp).
     void bind_culling_inputs() const;
@@ -97,6 +103,10 @@ private:
     /// The geometry read through the texture path (common/grid.glsl): llvmpipe gathers texels
     /// with vector loads, while each storage-buffer load at a varying index is a per-lane loop.
     gl::BufferTexture pillar_texels_, corner_plane_texels_, cell_texels_, value_texels_;
+    gl::BufferTexture value16_texels_;  ///< values_'s first 2 bytes per cell as 16-bit codes
+    /// value = x + y x texel: (0, 1) for float values, (offset, span) for 16-bit codes.
+    glm::vec2 value_decoding_{0, 1};
+    bool values_quantised_ = false;
     gl::BufferTexture face_class_texels_, primary_bit_texels_;  ///< the culling pass's reads (texel gathers)
     mutable FaceBuffer all_;
     QuadDraw quads_;

@@ -41,6 +41,13 @@ BufferTexture::BufferTexture(const Buffer& buffer, GLenum internal_format) {
     glTextureBuffer(id(), internal_format, buffer.id());
 }
 
+BufferTexture::BufferTexture(const Buffer& buffer, GLenum internal_format, std::size_t bytes) {
+    GLuint name = 0;
+    glCreateTextures(GL_TEXTURE_BUFFER, 1, &name);
+    static_cast<GlObject&>(*this) = GlObject(name);
+    glTextureBufferRange(id(), internal_format, buffer.id(), 0, GLsizeiptr(bytes));
+}
+
 void Texture::set_filter(GLenum filter) const {
     glTextureParameteri(id(), GL_TEXTURE_MIN_FILTER, GLint(filter));
     glTextureParameteri(id(), GL_TEXTURE_MAG_FILTER, GLint(filter));

@@ -85,6 +85,8 @@ class BufferTexture : public GlObject<TextureTraits> {
 public:
     BufferTexture() = default;
     BufferTexture(const Buffer& buffer, GLenum internal_format);
+    /// The buffer's first `bytes` only (a narrower format over part of a buffer).
+    BufferTexture(const Buffer& buffer, GLenum internal_format, std::size_t bytes);
     void bind(GLuint unit) const { glBindTextureUnit(unit, id()); }
 };
 
