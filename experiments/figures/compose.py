@@ -72,10 +72,25 @@ def zoom_window(images):
     return int(x0), int(y0), ww, wh
 
 
-def compose(rows, title, path, zoom=False):
+def difference_image(image, reference, colour_bar_box=None):
+    """`image` faded to grey, with the pixels where it differs from `reference` (the threshold
+    zoom_window uses) in red; and the share of the model's pixels (non-white in either, outside
+    the colour bar's box x0, y0, x1, y1) that differ."""
+    differs = np.abs(image - reference).max(axis=2) > 24 / 255
+    model = (image.min(axis=2) < 250 / 255) | (reference.min(axis=2) < 250 / 255)
+    if colour_bar_box:
+        x0, y0, x1, y1 = (int(round(v)) for v in colour_bar_box)
+        model[y0:y1 + 1, x0:x1 + 1] = False
+    grey = 0.35 + 0.65 * image.mean(axis=2, keepdims=True) * np.ones((1, 1, 3))
+    grey[differs] = (0.85, 0.0, 0.0)
+    return grey, float((differs & model).sum() / max(model.sum(), 1))
+
+
+def compose(rows, title, path, zoom=False, after=()):
     """rows: lists of (caption, image path); every image the same size. Rows longer than
     MAX_COLUMNS wrap. With `zoom`, every panel again inside the window zoom_window finds (outlined
-    on the panels), after the panels. Text is sized for print (min_text_px of the figure's width).
+    on the panels), after the panels; `after`: rows of (caption, RGB float image) last (neither
+    zoomed nor outlined). Text is sized for print (min_text_px of the figure's width).
     Writes `path` (PNG); returns the layout: panel_size, panel_boxes (top-left pixel of each panel,
     in the order given, zoom panels last), width_px and text_px (the smallest text's height)."""
     plt = cx.pyplot()
@@ -89,6 +104,8 @@ def compose(rows, title, path, zoom=False):
         x0, y0, ww, wh = window
         grid += reflow([(f"{caption.splitlines()[0]} (zoom x{ZOOM})", image[y0:y0 + wh, x0:x0 + ww])
                         for caption, image in panels], columns)
+    for row in after:
+        grid += reflow(list(row), columns)
     width_px = figure_width_px(columns, w)
     font_px = max(CAPTION_PT * DPI / 72, min_text_px(width_px))
     caption_pt, title_pt = font_px * 72 / DPI, font_px * 72 / DPI * 1.25

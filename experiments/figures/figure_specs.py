@@ -5,7 +5,8 @@ figure. Every panel shares the figure's camera and size unless its options set t
 asks render for the image metrics (exposure, border width), `caption_number` names the one each
 caption shows; `zoom` adds a row of enlarged windows
 where the panels differ (the figure's point is small: borders, the cut's staircase); `size`
-overrides the figure size (grids of panels stay at least 1000 px wide per panel).
+overrides the figure size (grids of panels stay at least 1000 px wide per panel); `difference_to`
+adds a last row: every other panel against that one (by index), the pixels that differ in red.
 """
 
 CAMERA = ("--camera", 35, 30, 0)
@@ -26,7 +27,7 @@ def figure_specs(model, steps, swat_range):
         # The three kernels at 33x33, where they differ (at the paper's 9x9 the distance-scaled
         # radius drops by one texel at most on a framed model).
         {"name": "fig08_mean_filter", "title": "Fig. 8: mean-filter kernels on the cut surface, 33x33 (cost: primary exposure)",
-         "metrics": True, "zoom": True, "caption_number": "primary_exposure",
+         "metrics": True, "zoom": True, "caption_number": "primary_exposure", "difference_to": 1,
          "panels": [("no mean filter", ["--mean-filter", 0])] +
                    [(f"{kernel} kernel", ["--mean-filter", 33, "--mean-filter-kernel", kernel])
                     for kernel in ("full", "sampled", "distance-scaled")]},

@@ -63,8 +63,27 @@ def render_figure(exp, spec, model, size, scratch, quick_options):
                 caption += f"\nprimary exposure {100 * stats[shown]:.2f}%"  # 33x33 costs 0.02%
             rows[-1].append((caption, image))
             print(f"  {spec['name']}: {caption.splitlines()[0]}: total {stats['stages_ms']['total']:.1f} ms")
-    layout = compose.compose(rows, spec["title"], exp.path(spec["name"] + ".png"), zoom=spec.get("zoom", False))
+    after = difference_row(rows, numbers, spec["difference_to"]) if "difference_to" in spec else ()
+    layout = compose.compose(rows, spec["title"], exp.path(spec["name"] + ".png"), zoom=spec.get("zoom", False), after=after)
     return {"title": spec["title"], "size": list(size), "colour_bar_text_px": text_px, **layout, "panels": numbers}
+
+
+def difference_row(rows, numbers, reference):
+    """One row: every panel but the `reference`-th (in reading order) against it, the differing
+    pixels in red (compose.difference_image); each panel's share of differing model pixels goes
+    into its numbers (`differs_from_reference`)."""
+    panels = [panel for row in rows for panel in row]
+    reference_caption, reference_path = panels[reference]
+    reference_image = compose.load(reference_path)
+    row = []
+    for index, (caption, path) in enumerate(panels):
+        if index == reference:
+            continue
+        image, share = compose.difference_image(compose.load(path), reference_image, numbers[index].get("colour_bar_box"))
+        numbers[index]["differs_from_reference"] = {"reference": reference_caption.splitlines()[0], "model_pixel_share": share}
+        row.append((f"{caption.splitlines()[0]} against {reference_caption.splitlines()[0]}:\n"
+                    f"{100 * share:.2f}% of model pixels differ (red)", image))
+    return [row]
 
 
 def common_colour_range(exp, model, prop, steps):
