@@ -1,15 +1,13 @@
 // The paper's ray-cast border test: the plane of the face seen at a pixel, followed to the 4
 // pixels at distance w (up, down, left, right); if the cut would clip the plane at any of them,
 // the pixel lies within w of the border. Needs cut_lookup.glsl.
-uniform mat4 inverse_view_projection;  // model camera
-uniform vec2 viewport_size;
+// The model camera: ViewCamera (inverse_view_projection, viewport_size, inverse_view, projection_scale).
+#include "common/cameras.glsl"
 uniform float border_width;            // w, pixels
 // Variant CUT_CAMERA_IS_VIEW (the view is not frozen, so the cut was made from the model camera
 // itself): the ray through a neighbour meets the cut image at that neighbour's own pixel, and the
 // plane's depth along the ray is all the test needs (no projection into another camera). A
 // compile-time variant, not a uniform branch: llvmpipe runs both sides of a branch.
-uniform mat4 inverse_view;              // model camera
-uniform vec2 projection_scale;          // model camera P[0][0], P[1][1]
 
 // Point where the model camera's ray through window position `window` meets the plane.
 vec3 ray_plane_hit(vec2 window, vec3 plane_point, vec3 plane_normal, out bool hit) {

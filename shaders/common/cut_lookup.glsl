@@ -14,9 +14,7 @@ float cut_surface_depth(ivec2 texel) { return imageLoad(cut_surface_image, texel
 uniform sampler2D cut_surface;   // R32F, cut camera's image
 float cut_surface_depth(ivec2 texel) { return texelFetch(cut_surface, texel, 0).r; }
 #endif
-uniform mat4 cut_view;
-uniform mat4 cut_projection;
-uniform vec2 cut_size;           // pixels
+#include "common/cameras.glsl"  // CutCamera: cut_view, cut_projection, cut_size, cut rays
 
 struct CutSample {
     ivec2 texel;            // cut image pixel (may be outside the image)
@@ -50,12 +48,8 @@ CutSample cut_at(vec3 world) {
 uniform sampler2D cut_normals;  // RGBA32F: world normal at each cut pixel
 vec3 cut_normal_at(ivec2 texel) { return texelFetch(cut_normals, texel, 0).rgb; }
 #else
-// The cut camera's ray through window position w, scaled to unit depth along its axis, in world
-// space: cut_ray_origin + w.x * cut_ray_per_px[0] + w.y * cut_ray_per_px[1] (affine in w); a point at
-// depth s on it lies at the camera's position + s * ray (src/cutaway/secondary_pass.cpp sets them).
-uniform vec3 cut_ray_origin;
-uniform vec3 cut_ray_per_px[2];
-
+// The cut camera's ray through window position w (common/cameras.glsl cut_ray_origin,
+// cut_ray_per_px): a point at depth s on it lies at the camera's position + s * ray.
 float cut_depth_or_none(ivec2 texel) {
     return all(greaterThanEqual(texel, ivec2(0))) && all(lessThan(texel, ivec2(cut_size))) ? cut_surface_depth(texel) : 0.0;
 }

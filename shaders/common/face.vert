@@ -13,6 +13,7 @@
 // its own cell hides, is dropped: what visibility/cull_cells.comp keeps behind the cut).
 #include "common/shared_constants.h"
 #include "common/grid.glsl"
+#include "common/cameras.glsl"
 #include "common/face_frame.glsl"
 
 layout(std430, binding = ssbo_faces) readonly buffer Faces { uint faces[]; };
@@ -20,11 +21,6 @@ layout(std430, binding = ssbo_faces) readonly buffer Faces { uint faces[]; };
 layout(binding = tex_stored_corners) uniform samplerBuffer stored_corner_texels;  // RGB32F, 4 per face
 #endif
 
-uniform mat4 view_projection;
-uniform vec3 eye_position;  // render space
-uniform vec2 viewport_size; // pixels
-uniform mat4 cut_view;             // the cut camera (stage 2 clips against its image)
-uniform mat4 cut_view_projection;
 
 // The same face rasterises to the same depths in every program that draws it: stage 2's shaded
 // pass tests GL_EQUAL against the depths secondary/nearest_face.frag left.

@@ -13,11 +13,10 @@
 // passes vertex-bound (sapphire: 22 and 28 ms at 480x270 against 36 and 37 ms at 1920x1080).
 #include "common/shared_constants.h"
 #include "common/grid.glsl"
+#include "common/cameras.glsl"
 
 layout(std430, binding = ssbo_faces) readonly buffer Faces { uint faces[]; };
 
-uniform mat4 view_projection;
-uniform mat4 cut_view;  // the camera whose depth seed_geometry.frag writes
 
 // The same corner, projected by the same product, as common/face.vert.
 invariant gl_Position;
@@ -31,5 +30,5 @@ void main() {
     uint cell = face_record_cell(record);
     vec3 q = corner_position(cell, face_corners[face_record_side(record) * 4u + uint(gl_VertexID) % 4u]);
     gl_Position = view_projection * vec4(q, 1.0);
-    v_out.cut_eye_depth = -(cut_view * vec4(q, 1.0)).z;
+    v_out.cut_eye_depth = -(model_view * vec4(q, 1.0)).z;  // the depth seed_geometry.frag writes
 }

@@ -7,7 +7,7 @@ layout(location = 3) out uvec2 out_face_plane;    // world face normal, 1 + face
 #include "common/shared_constants.h"
 #include "common/packed_normal.glsl"
 
-uniform mat4 model_view;  // the model camera's view matrix
+#include "common/cameras.glsl"  // model_view: the model camera's view matrix
 
 // `linear_depth`: along the model camera's axis.
 void write_frame_at_depth(vec3 colour, vec3 normal, float linear_depth, uint compact_cell, uint flags) {

@@ -7,7 +7,7 @@
 #include "common/border_test.glsl"
 
 uniform vec3 shell_cut_colour;
-uniform float focal_px;  // model camera focal length, pixels
+// focal_px: the model camera's focal length, pixels (common/cameras.glsl).
 
 struct SecondaryShade {
     vec3 colour;

@@ -75,6 +75,11 @@ CUTAWAY_SHARED_CONST uint img_cut_surface = 4u;     // the resolved cut's depth 
 CUTAWAY_SHARED_CONST uint img_cut_rear_clamp = 5u;  // 1 where the cut is clamped at the rear shell (R8)
 CUTAWAY_SHARED_CONST uint img_cut_normals = 6u;     // the cut's world normals (RGBA32F)
 
+// Uniform block binding points of the per-frame cameras (common/cameras.glsl,
+// src/cutaway/camera_blocks.h).
+CUTAWAY_SHARED_CONST uint ubo_view_camera = 0u;  // the camera a pass rasterises with
+CUTAWAY_SHARED_CONST uint ubo_cut_camera = 1u;   // the camera whose cut image a pass reads
+
 #undef CUTAWAY_SHARED_CONST
 #ifdef __cplusplus
 }  // namespace cutaway::shared

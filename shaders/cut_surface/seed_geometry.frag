@@ -6,7 +6,8 @@ in FaceVaryings {
 #include "common/face_varyings.glsl"
 } v_in;
 
-uniform float cut_near;
-uniform float cut_far;
+// The drawing (cut) camera's planes as plain uniforms, read per fragment (cutaway/face_drawing.h
+// set_depth_encoding says why they are not the view block's).
+uniform float depth_near, depth_far;
 
-void main() { gl_FragDepth = clamp((v_in.cut_eye_depth - cut_near) / (cut_far - cut_near), 0.0, 1.0); }
+void main() { gl_FragDepth = clamp((v_in.cut_eye_depth - depth_near) / (depth_far - depth_near), 0.0, 1.0); }

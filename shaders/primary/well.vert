@@ -5,7 +5,7 @@ layout(location = 1) in vec3 normal;
 layout(location = 2) in uint well;    // index in the renderer's well set
 layout(location = 3) in vec4 colour;  // the well's colour (kind, status)
 
-uniform mat4 view_projection;
+#include "common/cameras.glsl"
 
 out vec3 v_world;
 out vec3 v_normal;

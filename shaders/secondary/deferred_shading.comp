@@ -21,7 +21,6 @@ layout(rgba8, binding = 0) uniform writeonly image2D scene_colour;
 layout(rg32ui, binding = 1) uniform uimage2D scene_id;                 // compact cell + 1 (0: background), deferred face
 layout(rg32ui, binding = 2) uniform readonly uimage2D face_plane;      // world face normal, linear depth (DEFERRED; packed_normal.glsl)
 layout(rg32ui, binding = 3) uniform writeonly uimage2D normal_depth;  // eye normal, linear depth (packed_normal.glsl)
-uniform mat4 model_view;
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);

@@ -7,11 +7,8 @@
 // culling's cell pass took 34 ms at 1080p on sapphire before, 27-28 ms after).
 uniform samplerBuffer pyramid_texels;
 
-uniform mat4 view_projection;   // model camera
-uniform vec3 eye_position;      // model camera, render space
-uniform mat4 cut_view;          // cut camera (the model camera unless the view is frozen)
-uniform mat4 cut_view_projection;
-uniform vec2 cut_size;          // cut image, pixels
+// ViewCamera: the model camera; CutCamera: the cut camera (the model camera unless the view is frozen).
+#include "common/cameras.glsl"
 uniform bool has_cut;           // false: nothing is cut anywhere (plain frame)
 const int max_pyramid_levels = 16;
 uniform int pyramid_levels;     // levels of the pyramid (its level 0 is half the cut image)

@@ -101,7 +101,7 @@ CutawayRenderer::CutawayRenderer(const gl::ShaderLibrary& shaders, const grid::C
       colour_map_(make_colour_map_texture()),
       auto_sweep_from_(auto_sweep_from_primaries(gl::gl_renderer())),
       cut_(width, height),
-      rear_shell_(shaders, width, height),
+      rear_shell_(shaders, cameras_, width, height),
       scene_(width, height),
       post_(width, height),
       secondary_(shaders),
@@ -309,7 +309,7 @@ CutSurfaceStrategy& CutawayRenderer::strategy(const std::string& name) {
 
 CutSurfaceInputs CutawayRenderer::cut_inputs(const FrameSettings& s, const Camera& cut_camera) const {
     // Each wall leans out by half the full opening angle.
-    return {buffers_, cut_camera, glm::radians(0.5f * std::clamp(s.aperture_h_deg, 0.0f, 180.0f)),
+    return {buffers_, cut_camera, cameras_, glm::radians(0.5f * std::clamp(s.aperture_h_deg, 0.0f, 180.0f)),
             glm::radians(0.5f * std::clamp(s.aperture_v_deg, 0.0f, 180.0f)), s.back_margin * frame_.radius(),
             nearest_model_depth(frame_, cut_camera),
             std::max(-(cut_camera.view * glm::vec4(cone_reference_.value_or(primary_centroid_), 1.0f)).z, cut_camera.near_plane),
@@ -431,7 +431,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
                     f.settings, f.cut_camera);
         return;
     case FramePass::culling:
-        visible_.select(buffers_, f.camera, f.plan.cut_drawn ? &cut_ : nullptr, f.cut_camera, f.plan.clip_view_rear_shell);
+        visible_.select(buffers_, cameras_, f.camera, f.plan.cut_drawn ? &cut_ : nullptr, f.cut_camera, f.plan.clip_view_rear_shell);
         return;
     case FramePass::secondary_list: secondary_face_list(); return;
     case FramePass::view_rear_shell: render_view_rear_shell(f.camera, f.plan.draw_primaries); return;
@@ -445,7 +445,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     case FramePass::bind_scene: scene_.framebuffer.bind(); return;
     case FramePass::primaries: primary_.draw_primaries(draw_context(f.camera), buffers_.primary_faces(), f.settings); return;
     case FramePass::hidden_primary_walls: primary_.draw_hidden_walls(draw_context(f.camera), buffers_.primary_faces()); return;
-    case FramePass::wells: wells_.draw(f.camera); return;
+    case FramePass::wells: wells_.draw(f.camera, cameras_); return;
     case FramePass::shell_contours: primary_.draw_shell_depth(draw_context(f.camera), scene_); return;
     case FramePass::reset_depth_test: glDepthFunc(GL_LESS); return;
     case FramePass::combine_scene: hooks_.combine_scene(scene_); return;
@@ -472,7 +472,7 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
 }
 
 FaceDrawContext CutawayRenderer::draw_context(const Camera& camera) const {
-    return {buffers_, camera, &colour_map_, {label_.min, label_.max}, label_.log_scale};
+    return {buffers_, camera, cameras_, &colour_map_, {label_.min, label_.max}, label_.log_scale};
 }
 
 void CutawayRenderer::draw_strategy_cut(const FrameStep& f) {
@@ -485,7 +485,7 @@ void CutawayRenderer::draw_strategy_cut(const FrameStep& f) {
 
 void CutawayRenderer::draw_secondaries(const FrameStep& f) {
     // The view's rear shell was drawn by view_rear_shell earlier in this stage (freeze view).
-    const CutClip clip{cut_, f.cut_camera, f.plan.clip_view_rear_shell ? &rear_shell_.depth() : nullptr,
+    const CutClip clip{cut_, f.cut_camera, cameras_, f.plan.clip_view_rear_shell ? &rear_shell_.depth() : nullptr,
                        rear_margin(f.camera)};
     secondary_.draw(draw_context(f.camera), [&] { draw_secondary_faces(f.settings.draw); }, f.settings, clip, scene_,
                     f.settings.draw);

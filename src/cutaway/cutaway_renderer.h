@@ -11,6 +11,7 @@
 #include "common/shared_constants.h"
 #include "cutaway/active_cell_rank.h"
 #include "cutaway/camera.h"
+#include "cutaway/camera_blocks.h"
 #include "cutaway/colour_bar.h"
 #include "cone_field/cone_image.h"
 #include "cutaway/cut_surface/cone_field_strategy.h"
@@ -288,6 +289,7 @@ private:
     const grid::CornerPointGrid& grid_;
     ActiveCellRank compact_of_cell_;  ///< Eclipse -> compact, once the layout's table is released
     GridBuffers buffers_;
+    CameraBlocks cameras_;  ///< the per-frame camera blocks every pass binds (common/cameras.glsl)
     VisibleFaces visible_;
     std::optional<ExposedSurface> exposed_;  ///< the plain frame's faces, built on its first use
     GpuPrimarySelection selection_;

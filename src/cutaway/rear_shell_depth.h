@@ -8,6 +8,7 @@
 // the clamp's margin of the rear shell) in front of its edge-on side faces, hiding primary pixels.
 // With the primaries hidden (--only secondaries) nothing would hide it: the clamp holds there too.
 #include "cutaway/camera.h"
+#include "cutaway/camera_blocks.h"
 #include "cutaway/grid_buffers.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_library.h"
@@ -16,7 +17,8 @@ namespace cutaway::pipeline {
 
 class RearShellDepth {
 public:
-    RearShellDepth(const gl::ShaderLibrary& shaders, int width, int height);
+    /// `cameras` (kept by reference) binds the cut camera render draws from.
+    RearShellDepth(const gl::ShaderLibrary& shaders, const CameraBlocks& cameras, int width, int height);
     /// A depth image of the new size (the programs stay).
     void resize(int width, int height);
     /// Draws the shell and fault faces (a fault face may be partly uncovered, so the model may end
@@ -29,6 +31,7 @@ public:
 private:
     void allocate(int width, int height);
 
+    const CameraBlocks& cameras_;
     gl::Program program_;
     gl::Program primaries_program_;  ///< primary faces at the far plane: no clamp there
     gl::Texture depth_;

@@ -1,7 +1,5 @@
 #include "cutaway/secondary_pass.h"
 
-#include <array>
-
 #include "common/shared_constants.h"
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
@@ -17,30 +15,13 @@ SecondaryPass::SecondaryPass(const gl::ShaderLibrary& shaders)
       cut_normals_program_(shaders.build({{GL_COMPUTE_SHADER, "cut_surface/cut_normals.comp"}})) {}
 
 namespace {
-/// cut_lookup.glsl's cut_ray_origin and cut_ray_per_px: the eye-space ray (ndc / projection scale,
-/// -1) through window position w, ndc = 2 w / size - 1, turned into world space (affine in w).
-void set_cut_rays(const gl::Program& p, const Camera& cut_camera) {
-    const glm::mat3 to_world(glm::inverse(cut_camera.view));
-    const glm::vec2 projection_scale(cut_camera.projection[0][0], cut_camera.projection[1][1]);
-    const glm::vec2 ndc_per_px = 2.0f / (glm::vec2(float(cut_camera.width), float(cut_camera.height)) * projection_scale);
-    gl::set_uniform(p, "cut_ray_origin", to_world * glm::vec3(-1.0f / projection_scale, -1.0f));
-    const std::array<glm::vec3, 2> ray_per_px{to_world * glm::vec3(ndc_per_px.x, 0.0f, 0.0f),
-                                              to_world * glm::vec3(0.0f, ndc_per_px.y, 0.0f)};
-    glProgramUniform3fv(p.id(), p.uniform("cut_ray_per_px"), 2, &ray_per_px[0].x);
-}
-
-/// The uniforms of shaders/common/cut_lookup.glsl; `camera`: the model camera.
+/// The cut camera's block and the uniforms of shaders/common/cut_lookup.glsl; `camera`: the model camera.
 void set_cut_lookup(const gl::Program& p, const CutClip& clip, const Camera& camera) {
-    const Camera& cut_camera = clip.cut_camera;
+    clip.cameras.bind_cut(clip.cut_camera);
     gl::set_uniform(p, "cut_surface", 1);
     clip.cut.surface.bind(1);
     gl::set_uniform(p, "cut_rear_clamp", 5);
     clip.cut.rear_clamp.bind(5);
-    gl::set_uniform(p, "cut_view", cut_camera.view);
-    gl::set_uniform(p, "cut_projection", cut_camera.projection);
-    gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
-    gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
-    set_cut_rays(p, cut_camera);
     if (!clip.view_rear_shell) return;  // the programs are built without VIEW_REAR_SHELL then
     gl::set_uniform(p, "view_rear_shell", 6);
     clip.view_rear_shell->bind(6);
@@ -61,12 +42,9 @@ gl::ShaderDefines cut_view_defines(const Camera& camera, const CutClip& clip) {
     return defines;
 }
 
-/// The uniforms of shaders/common/secondary_shading.glsl's ray-cast border test.
-void set_border_uniforms(const gl::Program& p, const Camera& camera, const FrameSettings& settings) {
-    gl::set_uniform(p, "inverse_view_projection", glm::inverse(camera.view_projection()));
-    gl::set_uniform(p, "inverse_view", glm::inverse(camera.view));
-    gl::set_uniform(p, "projection_scale", glm::vec2(camera.projection[0][0], camera.projection[1][1]));
-    gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
+/// The uniforms of shaders/common/secondary_shading.glsl's ray-cast border test (its camera: the
+/// bound view block, common/cameras.glsl).
+void set_border_uniforms(const gl::Program& p, const FrameSettings& settings) {
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);
 }
@@ -97,8 +75,9 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     defines.emplace_back("CUT_IMAGES", "");
     bind_cut_images(clip);
     const gl::Program& p = borders_.get(defines);
+    clip.cameras.bind_view(camera);
     set_cut_lookup(p, clip, camera);
-    set_border_uniforms(p, camera, settings);
+    set_border_uniforms(p, settings);
     gl::set_uniform(p, "hide_internal_lines", settings.hide_internal_lines);
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
@@ -117,8 +96,7 @@ void SecondaryPass::store_cut_normals(const CutClip& clip) {
     }
     bind_cut_images(clip);  // cut_normals.comp defines CUT_IMAGES itself
     glBindImageTexture(shared::img_cut_normals, cut_normals_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
-    gl::set_uniform(cut_normals_program_, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
-    set_cut_rays(cut_normals_program_, cut_camera);
+    clip.cameras.bind_cut(cut_camera);
     cut_normals_program_.use();
     gl::dispatch_over(cut_normals_program_, cut_camera.width, cut_camera.height);
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
@@ -135,8 +113,7 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
     const gl::Program& p = deferred_.get(defines);
     prepare_face_program(p, context);
     set_cut_lookup(p, clip, camera);
-    set_border_uniforms(p, camera, settings);
-    gl::set_uniform(p, "focal_px", camera.focal_px());
+    set_border_uniforms(p, settings);
     glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
     glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
     glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
@@ -185,7 +162,6 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
     const gl::Program& p = programs_.get(defines);
     prepare_face_program(p, context);
     set_cut_lookup(p, clip, context.camera);
-    gl::set_uniform(p, "focal_px", context.camera.focal_px());
     gl::set_uniform(p, "line_width", settings.line_width_px);
     gl::set_uniform(p, "border_width", settings.border_width_px);
     gl::set_uniform(p, "shell_cut_colour", shell_cut_colour);

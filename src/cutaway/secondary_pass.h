@@ -15,6 +15,7 @@ namespace cutaway::pipeline {
 struct CutClip {
     const CutTargets& cut;
     const Camera& cut_camera;
+    const CameraBlocks& cameras;  ///< binds cut_camera for the passes that read the cut (common/cameras.glsl)
     const gl::Texture* view_rear_shell = nullptr;  ///< RearShellDepth::depth() from the model camera; null: none
     float rear_margin = 0;
 };

@@ -5,7 +5,6 @@
 
 #include "common/shared_constants.h"
 #include "gl/face_culling.h"
-#include "gl/uniforms.h"
 #include "shapes/tube_mesh.h"
 
 namespace cutaway::pipeline {
@@ -77,11 +76,9 @@ void WellTubes::set(const WellSet& set, const ModelFrame& frame) {
 
 std::size_t WellTubes::memory_bytes() const { return vertices_.size_bytes() + indices_.size_bytes(); }
 
-void WellTubes::draw(const Camera& camera) const {
+void WellTubes::draw(const Camera& camera, const CameraBlocks& cameras) const {
     if (empty()) return;
-    gl::set_uniform(program_, "view_projection", camera.view_projection());
-    gl::set_uniform(program_, "model_view", camera.view);
-    gl::set_uniform(program_, "light_eye", camera.eye);
+    cameras.bind_view(camera);
     glViewport(0, 0, camera.width, camera.height);
     // Tubes are closed and wound outward: their back faces are never seen.
     const gl::FaceCulling culling(GL_BACK);

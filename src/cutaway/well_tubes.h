@@ -10,6 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "cutaway/camera.h"
+#include "cutaway/camera_blocks.h"
 #include "cutaway/model_frame.h"
 #include "gl/gl_objects.h"
 #include "gl/shader_library.h"
@@ -49,8 +50,8 @@ public:
     std::size_t triangle_count() const { return std::size_t(index_count_) / 3; }
     std::size_t memory_bytes() const;
     const std::vector<WellHead>& heads() const { return heads_; }
-    /// Draws into the bound scene framebuffer with its depth test.
-    void draw(const Camera& camera) const;
+    /// Draws into the bound scene framebuffer with its depth test, seen from `camera` (bound by `cameras`).
+    void draw(const Camera& camera, const CameraBlocks& cameras) const;
 
 private:
     gl::Program program_;

@@ -24,7 +24,6 @@
 #include "app_core/model_source.h"
 #include "cutaway/face_drawing.h"
 #include "cutaway/rear_shell_depth.h"
-#include "gl/uniforms.h"
 #include "gl_test_support.h"
 
 namespace cutaway::test {
@@ -41,7 +40,8 @@ std::vector<float> read_depth(const gl::Texture& depth) {
 /// Farthest depth of every triangle of the shell and uncovered fault faces, pocket walls included,
 /// none culled, in the rear shell's depth encoding.
 std::vector<float> unculled_rear_depth(const gl::Program& program, const pipeline::GridBuffers& buffers,
-                                       const pipeline::FaceBuffer& faces, const pipeline::Camera& camera) {
+                                       const pipeline::FaceBuffer& faces, const pipeline::Camera& camera,
+                                       const pipeline::CameraBlocks& cameras) {
     gl::Texture depth(GL_TEXTURE_2D, GL_DEPTH_COMPONENT32F, width, height);
     gl::Framebuffer framebuffer;
     framebuffer.attach(GL_DEPTH_ATTACHMENT, depth);
@@ -50,9 +50,8 @@ std::vector<float> unculled_rear_depth(const gl::Program& program, const pipelin
     const float zero = 0.0f;
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &zero);
     framebuffer.bind();
-    pipeline::prepare_face_program(program, pipeline::FaceDrawContext{buffers, camera});
-    gl::set_uniform(program, "cut_near", camera.near_plane);
-    gl::set_uniform(program, "cut_far", camera.far_plane);
+    pipeline::prepare_face_program(program, pipeline::FaceDrawContext{buffers, camera, cameras});
+    pipeline::set_depth_encoding(program, camera);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_GREATER);
     glDepthMask(GL_TRUE);
@@ -73,7 +72,8 @@ WindingParts check_model(const grid::CornerPointGrid& grid, unsigned seed, const
     const pipeline::GridBuffers buffers(layout, grid.zcorn(), frame);
     const pipeline::FaceBuffer with_walls = pipeline::FaceBuffer::from(pipeline::outer_faces(
         layout, grid.zcorn(), pipeline::active_cells(layout, grid.dims()), std::vector<bool>(grid.cell_count(), false)));
-    pipeline::RearShellDepth rear(GlEnvironment::shaders(), width, height);
+    const pipeline::CameraBlocks cameras;
+    pipeline::RearShellDepth rear(GlEnvironment::shaders(), cameras, width, height);
     const gl::Program unculled = GlEnvironment::shaders().build(
         {{GL_VERTEX_SHADER, "common/face_corner.vert"}, {GL_FRAGMENT_SHADER, "cut_surface/seed_geometry.frag"}});
     std::mt19937 random(seed);
@@ -81,7 +81,7 @@ WindingParts check_model(const grid::CornerPointGrid& grid, unsigned seed, const
         const pipeline::Camera camera = pipeline::make_orbit_camera(frame, random_pose(random), width, height);
         rear.render(buffers, camera, true);  // no primaries in these buffers
         const std::vector<float> culled = read_depth(rear.depth());
-        const std::vector<float> reference = unculled_rear_depth(unculled, buffers, with_walls, camera);
+        const std::vector<float> reference = unculled_rear_depth(unculled, buffers, with_walls, camera, cameras);
         std::size_t covered = 0, farther = 0, differing = 0, far_apart = 0;
         for (std::size_t p = 0; p < culled.size(); ++p) {
             covered += reference[p] > 0.0f;

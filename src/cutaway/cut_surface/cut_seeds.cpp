@@ -7,7 +7,6 @@
 #include "cutaway/cut_surface/cut_depth_image.h"
 #include "cutaway/cut_surface/opening_cut.h"
 #include "cutaway/face_drawing.h"
-#include "gl/uniforms.h"
 
 namespace cutaway::pipeline {
 
@@ -54,9 +53,8 @@ const gl::Texture& CutSeedPass::render_on_gpu(const CutSurfaceInputs& inputs) {
         draw_cell_boxes(program_, inputs, framebuffer_);
     } else {
         framebuffer_.bind();
-        prepare_face_program(geometry_program_, FaceDrawContext{inputs.grid, camera});
-        gl::set_uniform(geometry_program_, "cut_near", camera.near_plane);
-        gl::set_uniform(geometry_program_, "cut_far", camera.far_plane);
+        prepare_face_program(geometry_program_, FaceDrawContext{inputs.grid, camera, inputs.cameras});
+        set_depth_encoding(geometry_program_, camera);
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_GREATER);
         glDepthMask(GL_TRUE);

@@ -11,6 +11,7 @@
 
 #include "cutaway/active_cell_rank.h"
 #include "cutaway/camera.h"
+#include "cutaway/camera_blocks.h"
 #include "cone_field/cone_image.h"
 #include "cutaway/frame_settings.h"
 #include "cutaway/frame_targets.h"
@@ -33,6 +34,7 @@ struct PrimarySelection {
 struct CutSurfaceInputs {
     const GridBuffers& grid;
     const Camera& cut_camera;
+    const CameraBlocks& cameras;  ///< binds the cut camera for passes that draw faces from it
     /// Half the full apertures (FrameSettings): each wall's lean from the view ray through the
     /// primary's edge, radians 0..pi/2, measured in the eye's horizontal (x, depth) and vertical
     /// (y, depth) planes; pi/2: flat walls.

@@ -29,13 +29,8 @@ enum CullingTextureUnit : unsigned { brick_cell_texture_unit = shared::tex_brick
 constexpr unsigned bricks_per_group = 16;
 
 /// The uniforms of visibility/classify.glsl.
-void set_classification_uniforms(const gl::Program& p, const Camera& camera, const CutTargets* cut,
-                                 const Camera& cut_camera, bool keep_rear_faces) {
-    gl::set_uniform(p, "view_projection", camera.view_projection());
-    gl::set_uniform(p, "eye_position", camera.eye);
-    gl::set_uniform(p, "cut_view", cut_camera.view);
-    gl::set_uniform(p, "cut_view_projection", cut_camera.view_projection());
-    gl::set_uniform(p, "cut_size", glm::vec2(float(cut_camera.width), float(cut_camera.height)));
+/// The classification's own uniforms (its cameras are the bound blocks, common/cameras.glsl).
+void set_classification_uniforms(const gl::Program& p, const CutTargets* cut, bool keep_rear_faces) {
     gl::set_uniform(p, "has_cut", cut != nullptr);
     gl::set_uniform(p, "keep_rear_faces", keep_rear_faces);
     gl::set_uniform(p, "cut_surface", 0);
@@ -105,8 +100,10 @@ bool VisibleFaces::grow_to_fit() {
     return true;
 }
 
-void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera,
-                          bool keep_rear_faces) {
+void VisibleFaces::select(const GridBuffers& grid, const CameraBlocks& cameras, const Camera& camera, const CutTargets* cut,
+                          const Camera& cut_camera, bool keep_rear_faces) {
+    cameras.bind_view(camera);
+    cameras.bind_cut(cut_camera);
     if (cut) pyramid_.build(cut->surface);
     glNamedBufferSubData(counters_.id(), 0, sizeof(cleared_counters), cleared_counters.data());
     for (const gl::Buffer* cleared : {&cell_masks_, &brick_counts_})
@@ -120,13 +117,13 @@ void VisibleFaces::select(const GridBuffers& grid, const Camera& camera, const C
     const gl::ShaderDefines defines =
         same_view(camera, cut_camera) ? gl::ShaderDefines{{"CUT_CAMERA_IS_VIEW", ""}} : gl::ShaderDefines{};
     const gl::Program& classify = classify_.get(defines);
-    set_classification_uniforms(classify, camera, cut, cut_camera, keep_rear_faces);
+    set_classification_uniforms(classify, cut, keep_rear_faces);
     gl::set_uniform(classify, "brick_count", unsigned(brick_count_));
     pyramid_.bind_for(classify);
     dispatch_invocations(classify, brick_count_, GL_TEXTURE_FETCH_BARRIER_BIT);
 
     const gl::Program& p = cull_.get(defines);
-    set_classification_uniforms(p, camera, cut, cut_camera, keep_rear_faces);
+    set_classification_uniforms(p, cut, keep_rear_faces);
     gl::set_uniform(p, "grid_size", grid.grid_size());
     gl::set_uniform(p, "up_sign", float(grid.frame().up_sign));
     gl::set_uniform(p, "z_scale", float(grid.frame().z_scale));

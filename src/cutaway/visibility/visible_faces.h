@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cutaway/camera.h"
+#include "cutaway/camera_blocks.h"
 #include "cutaway/frame_targets.h"
 #include "cutaway/grid_buffers.h"
 #include "cutaway/visibility/cell_bricks.h"
@@ -41,8 +42,9 @@ public:
     /// selects the faces of secondary cells for the model `camera`. `keep_rear_faces` (freeze
     /// view, stage 2 keeping the model camera's rear shell): cells in front of the cut still give
     /// their exposed faces seen from inside.
-    void select(const GridBuffers& grid, const Camera& camera, const CutTargets* cut, const Camera& cut_camera,
-                bool keep_rear_faces = false);
+    /// `cameras` binds `camera` and `cut_camera` (common/cameras.glsl) for the classification.
+    void select(const GridBuffers& grid, const CameraBlocks& cameras, const Camera& camera, const CutTargets* cut,
+                const Camera& cut_camera, bool keep_rear_faces = false);
     /// Draws the selected faces with the bound face program, as `grid`'s indexed quads.
     void draw(const GridBuffers& grid) const;
     /// Reads the counters of the last selection back (a GPU->CPU sync: not in timed frames).
