@@ -69,11 +69,22 @@ CUTAWAY_SHARED_CONST uint tex_stored_corners = 14u;   // exposed surface: stored
 CUTAWAY_SHARED_CONST uint tex_brick_begin = 15u;      // culling: first cell of each brick
 CUTAWAY_SHARED_CONST uint tex_brick_classes = 16u;    // culling: bricks' classes
 
-// Image units of the cut's images that several shaders read (common/cut_lookup.glsl CUT_IMAGES)
-// or cut_surface/cut_normals.comp writes; the other image units are each one pass's own.
+// Image units (at most 8: GL_MAX_IMAGE_UNITS on NVIDIA). The scene targets (src/cutaway/frame_targets.h)
+// as stage 2's compute passes (secondary/raycast_borders.comp, deferred_shading.comp) and the
+// post passes (post/ssao.comp, composite.comp) read and write them:
+CUTAWAY_SHARED_CONST uint img_scene_colour = 0u;        // lit colour (RGBA8)
+CUTAWAY_SHARED_CONST uint img_scene_id = 1u;            // compact cell + 1, pixel flags (RG32UI)
+CUTAWAY_SHARED_CONST uint img_scene_face_plane = 2u;    // world face normal and depth or face class (RG32UI)
+CUTAWAY_SHARED_CONST uint img_scene_normal_depth = 3u;  // eye normal, linear depth (RG32UI)
+// The cut's images that several shaders read (common/cut_lookup.glsl CUT_IMAGES) or
+// cut_surface/cut_normals.comp writes:
 CUTAWAY_SHARED_CONST uint img_cut_surface = 4u;     // the resolved cut's depth (R32F)
 CUTAWAY_SHARED_CONST uint img_cut_rear_clamp = 5u;  // 1 where the cut is clamped at the rear shell (R8)
 CUTAWAY_SHARED_CONST uint img_cut_normals = 6u;     // the cut's world normals (RGBA32F)
+// The post passes' own, which never run with the cut's images bound (they share its units):
+CUTAWAY_SHARED_CONST uint img_post_ambient = 4u;       // SSAO factor, linear depth (RG32F)
+CUTAWAY_SHARED_CONST uint img_post_shell_depth = 5u;   // the uncut shell's linear depth (R32F)
+CUTAWAY_SHARED_CONST uint img_post_final_colour = 6u;  // the composited frame (RGBA8)
 
 // Uniform block binding points of the per-frame cameras (common/cameras.glsl,
 // src/cutaway/camera_blocks.h).

@@ -6,13 +6,14 @@
 // runs, the same image); the mean filter, resolve, deferred shading and border passes gained
 // nothing so and stay 64 x 4.
 layout(local_size_x = 128, local_size_y = 1) in;
+#include "common/shared_constants.h"
 
-layout(rgba8, binding = 0) uniform readonly image2D scene_colour;
-layout(rg32f, binding = 1) uniform readonly image2D ambient;      // factor, linear depth (post/ssao.comp)
-layout(rg32ui, binding = 2) uniform readonly uimage2D scene_id;  // compact cell + 1, flags
-layout(r32f, binding = 3) uniform readonly image2D shell_depth;  // linear depth of the uncut shell (0 = background)
-layout(rgba8, binding = 4) uniform writeonly image2D final_colour;
-layout(rg32ui, binding = 5) uniform readonly uimage2D normal_depth;  // eye normal, linear depth (0 = background; common/packed_normal.glsl)
+layout(rgba8, binding = img_scene_colour) uniform readonly image2D scene_colour;
+layout(rg32f, binding = img_post_ambient) uniform readonly image2D ambient;      // factor, linear depth (post/ssao.comp)
+layout(rg32ui, binding = img_scene_id) uniform readonly uimage2D scene_id;  // compact cell + 1, flags
+layout(r32f, binding = img_post_shell_depth) uniform readonly image2D shell_depth;  // linear depth of the uncut shell (0 = background)
+layout(rgba8, binding = img_post_final_colour) uniform writeonly image2D final_colour;
+layout(rg32ui, binding = img_scene_normal_depth) uniform readonly uimage2D normal_depth;  // eye normal, linear depth (0 = background; common/packed_normal.glsl)
 uniform vec2 viewport_size;
 uniform float saturation_primary;    // factor on primaries' saturation
 uniform float saturation_secondary;  // factor on secondaries' saturation
@@ -22,7 +23,6 @@ uniform vec3 contour_colour;
 uniform float contour_jump;          // relative depth jump that makes a fold contour
 uniform vec3 background;
 
-#include "common/shared_constants.h"
 #include "common/packed_normal.glsl"
 
 vec3 rgb_to_hsv(vec3 c) {

@@ -11,11 +11,12 @@
 // full-resolution samples, and storing that pixel's depth beside the factor for the composite's
 // depth-aware upsampling (post/composite.comp, ambient_at): a quarter of the work.
 layout(local_size_x = 64, local_size_y = 16) in;  // gl::dispatch_over says why
+#include "common/shared_constants.h"
 
 #include "common/packed_normal.glsl"
 
-layout(rg32ui, binding = 0) uniform readonly uimage2D normal_depth;  // eye-space normal, linear depth (0 = background; packed_normal.glsl)
-layout(rg32f, binding = 1) uniform writeonly image2D ambient;        // factor, linear depth of its pixel
+layout(rg32ui, binding = img_scene_normal_depth) uniform readonly uimage2D normal_depth;  // eye-space normal, linear depth (0 = background; packed_normal.glsl)
+layout(rg32f, binding = img_post_ambient) uniform writeonly image2D ambient;        // factor, linear depth of its pixel
 uniform vec2 projection_scale;   // P[0][0], P[1][1]
 uniform vec2 viewport_size;
 uniform float radius;            // render units

@@ -17,10 +17,10 @@ layout(local_size_x = 64, local_size_y = 4) in;
 #include "common/deferred_face.glsl"
 #include "common/packed_normal.glsl"
 
-layout(rgba8, binding = 0) uniform writeonly image2D scene_colour;
-layout(rg32ui, binding = 1) uniform uimage2D scene_id;                 // compact cell + 1 (0: background), deferred face
-layout(rg32ui, binding = 2) uniform readonly uimage2D face_plane;      // world face normal, linear depth (DEFERRED; packed_normal.glsl)
-layout(rg32ui, binding = 3) uniform writeonly uimage2D normal_depth;  // eye normal, linear depth (packed_normal.glsl)
+layout(rgba8, binding = img_scene_colour) uniform writeonly image2D scene_colour;
+layout(rg32ui, binding = img_scene_id) uniform uimage2D scene_id;                 // compact cell + 1 (0: background), deferred face
+layout(rg32ui, binding = img_scene_face_plane) uniform readonly uimage2D face_plane;      // world face normal, linear depth (DEFERRED; packed_normal.glsl)
+layout(rg32ui, binding = img_scene_normal_depth) uniform writeonly uimage2D normal_depth;  // eye normal, linear depth (packed_normal.glsl)
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);

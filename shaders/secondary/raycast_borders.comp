@@ -12,11 +12,11 @@ layout(local_size_x = 64, local_size_y = 4) in;
 #include "common/secondary_shading.glsl"
 #include "common/packed_normal.glsl"
 
-layout(rg32ui, binding = 2) uniform readonly uimage2D face_plane;    // world face normal, 1 + face class (0: a primary; not cleared where id is 0)
-layout(rg32ui, binding = 3) uniform readonly uimage2D normal_depth;  // eye normal, linear depth in the model camera
+layout(rg32ui, binding = img_scene_face_plane) uniform readonly uimage2D face_plane;    // world face normal, 1 + face class (0: a primary; not cleared where id is 0)
+layout(rg32ui, binding = img_scene_normal_depth) uniform readonly uimage2D normal_depth;  // eye normal, linear depth in the model camera
 uniform bool hide_internal_lines;  // no border lines on the cut fill (shell-cut lines stay)
-layout(rgba8, binding = 0) uniform image2D scene_colour;
-layout(rg32ui, binding = 1) uniform uimage2D scene_id;
+layout(rgba8, binding = img_scene_colour) uniform image2D scene_colour;
+layout(rg32ui, binding = img_scene_id) uniform uimage2D scene_id;
 
 void main() {
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);

@@ -50,7 +50,7 @@ void set_border_uniforms(const gl::Program& p, const FrameSettings& settings) {
 }
 
 /// The compute passes read the cut surface and its rear-clamp mask as images (common/cut_lookup.glsl
-/// CUT_IMAGES): image units 4 and 5.
+/// CUT_IMAGES) at shared::img_cut_surface and img_cut_rear_clamp.
 void bind_cut_images(const CutClip& clip) {
     glBindImageTexture(shared::img_cut_surface, clip.cut.surface.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     glBindImageTexture(shared::img_cut_rear_clamp, clip.cut.rear_clamp.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R8);
@@ -79,10 +79,10 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     set_cut_lookup(p, clip, camera);
     set_border_uniforms(p, settings);
     gl::set_uniform(p, "hide_internal_lines", settings.hide_internal_lines);
-    glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
-    glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
-    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);  // image loads: cheaper than texelFetch on llvmpipe
-    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindImageTexture(shared::img_scene_colour, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
+    glBindImageTexture(shared::img_scene_id, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
+    glBindImageTexture(shared::img_scene_face_plane, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);  // image loads: cheaper than texelFetch on llvmpipe
+    glBindImageTexture(shared::img_scene_normal_depth, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     gl::wait_for_draws_before_image_loads();
     p.use();
     dispatch_per_pixel(p, camera);
@@ -114,10 +114,10 @@ void SecondaryPass::shade_deferred(const FaceDrawContext& context, const FrameSe
     prepare_face_program(p, context);
     set_cut_lookup(p, clip, camera);
     set_border_uniforms(p, settings);
-    glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-    glBindImageTexture(1, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
-    glBindImageTexture(2, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
-    glBindImageTexture(3, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
+    glBindImageTexture(shared::img_scene_colour, scene.colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(shared::img_scene_id, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
+    glBindImageTexture(shared::img_scene_face_plane, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindImageTexture(shared::img_scene_normal_depth, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32UI);
     gl::wait_for_draws_before_image_loads();
     dispatch_per_pixel(p, camera);
 }

@@ -1,5 +1,6 @@
 #include "cutaway/post/composite.h"
 
+#include "common/shared_constants.h"
 #include "gl/compute_dispatch.h"
 #include "gl/uniforms.h"
 
@@ -23,12 +24,12 @@ void Composite::apply(const SceneTargets& scene, const PostTargets& post, const 
     if (settings.silhouette) defines.emplace_back("SILHOUETTE", "");
     if (settings.contours) defines.emplace_back("CONTOURS", "");
     const gl::Program& p = programs_.get(defines);
-    glBindImageTexture(0, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
-    glBindImageTexture(1, post.ambient.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
-    glBindImageTexture(2, scene.id.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
-    glBindImageTexture(3, scene.shell_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
-    glBindImageTexture(4, post.final_colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-    glBindImageTexture(5, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindImageTexture(shared::img_scene_colour, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RGBA8);
+    glBindImageTexture(shared::img_post_ambient, post.ambient.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32F);
+    glBindImageTexture(shared::img_scene_id, scene.id.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
+    glBindImageTexture(shared::img_post_shell_depth, scene.shell_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
+    glBindImageTexture(shared::img_post_final_colour, post.final_colour.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+    glBindImageTexture(shared::img_scene_normal_depth, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     gl::set_uniform(p, "viewport_size", glm::vec2(float(width), float(height)));
     gl::set_uniform(p, "saturation_primary", settings.saturation_primary);
     gl::set_uniform(p, "saturation_secondary", settings.saturation_secondary);
