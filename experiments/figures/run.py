@@ -13,8 +13,9 @@ exposure; the sweeps; machine context) with its README.md (figures_report.py). S
 Protocol: preset:petra (32,760 cells), 1280x720, camera azimuth 35 / elevation 30, 1% primaries of
 PORO, the paper's defaults otherwise; one warm-up and three timed frames per panel (median).
 Figures 14 (the four presets from two views, then two properties in one frame) and 15 (opharine, two PORO ranges; rows: full
-cutaway, only primaries, only secondaries) are grids of 1000x600 panels. Figures 7, 8 and 12
-add a zoom row: the window where their panels differ, enlarged 3 times.
+cutaway, only primaries, only secondaries) are grids of 1000x600 panels. Figures 7 and 12
+add a zoom row: the window where their panels differ, enlarged 3 times; figure 8 a row of each
+kernel against the full kernel, the pixels that differ in red.
 Sweeps on preset:opharine: full apertures 0..180 degrees at 1% primaries; fractions 0.1%..10% at 60 degrees.
 """
 import os

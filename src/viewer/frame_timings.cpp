@@ -24,7 +24,6 @@ void FrameTimings::add_render(const pipeline::FrameTimes& times) {
 
 void FrameTimings::add_loop(const LoopPass& pass) {
     (pass.rendered ? loop_rendering_ : loop_idle_).add(pass.loop_ms);
-    last_loop_ms_ = pass.loop_ms;
     records_.push_back({pass, pass.rendered ? std::move(pending_) : std::map<std::string, double>{}});
     pending_.clear();
 }

@@ -42,7 +42,6 @@ public:
     /// Rolling medians of whole loop passes, with and without a cutaway frame in them.
     double loop_ms_rendering() const { return loop_rendering_.median(); }
     double loop_ms_idle() const { return loop_idle_.median(); }
-    double last_loop_ms() const { return last_loop_ms_; }
     std::size_t frames() const { return records_.size(); }
     std::size_t window() const { return window_; }
 
@@ -61,7 +60,6 @@ private:
     std::size_t window_;
     std::map<std::string, StageTrack> stages_;
     RollingMedian loop_rendering_, loop_idle_;
-    double last_loop_ms_ = 0;
     std::map<std::string, double> pending_;  ///< stage times of the frame being assembled
     std::vector<Record> records_;
 };
