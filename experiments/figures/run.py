@@ -100,7 +100,8 @@ def common_colour_range(exp, model, prop, steps):
 def models_options(exp, presets):
     """Fig. 14's rows fitted to their data (`cutaway inspect --json`): NTG's primaries are its
     lowest-NTG cells, min to 2nd percentile (the shale; its top 1% is a tie at NTG 1.0 that holds a
-    fifth of the cells, which hid the primaries among look-alike secondaries); SWAT at its last
+    fifth of the cells, which hid the primaries among look-alike secondaries), coloured from its
+    minimum to its 98th percentile so the primaries keep their own colours; SWAT at its last
     report step (at step 0 the water is connate nearly everywhere: one colour over 85% of the
     model); the two-property row's PERMX coloured over its whole range (the high-porosity channels
     are its most permeable cells: a 2-98% range put every primary at the bar's top)."""
@@ -109,7 +110,10 @@ def models_options(exp, presets):
     ntg = ranges(presets[2], "--property", "NTG")["NTG"]
     swat_steps = exp.inspect(f"preset:{presets[3]}", "--property", "SWAT")["dynamic_properties"]["SWAT"]
     permx = ranges(presets[0], "--property", "PERMX")["PERMX"]
-    return {"NTG": (f", primaries NTG {ntg['min']:.2f}-{ntg['p2']:.2f}", ["--range", ntg["min"], ntg["p2"]]),
+    # NTG's colours from its minimum (not its 2nd percentile): the primaries lie below that and
+    # would all take the bar's lowest colour.
+    return {"NTG": (f", primaries NTG {ntg['min']:.2f}-{ntg['p2']:.2f}",
+                    ["--range", ntg["min"], ntg["p2"], "--colour-range", ntg["min"], ntg["p98"]]),
             "SWAT": (f" step {swat_steps - 1}", ["--step", swat_steps - 1]),
             "two_properties": ("", ["--colour-range", permx["min"], permx["max"]])}
 
