@@ -8,6 +8,7 @@ and results/volume_renders/renders.json (each render's stats and the machine con
 README.md. Skips when all exist unless --force. --quick: 256x256 pixels and a 40x40x80 synthetic
 cube instead of 640x640 and "paper-250". Reads segy/f3.sgy from the shared data (--data).
 """
+import math
 import os
 import statistics
 import sys
@@ -32,15 +33,23 @@ def images(exp):
     return {(cube, tf): exp.path(image_name(cube, tf)) for cube in CUBES for tf in TRANSFER_FUNCTIONS}
 
 
+# Renders printed two side by side at a journal's 182 mm width (90 mm each) carry 7 pt text:
+# capitals 2.47 mm tall (18 px at 640 px; at three across, 28 px, the crossline axis kept no
+# tick value beside the colour bar).
+PRINTED_WIDTH_MM, CAPITALS_MM = 90.0, 2.47
+
+
 def measure(exp):
     size = "256" if exp.quick else "640"
+    text_px = str(math.ceil(CAPITALS_MM / PRINTED_WIDTH_MM * int(size)))
     renders, last_stats = [], None
     with vx.Workspace(exp) as work:
         cubes = {"f3": os.path.join(exp.data, "segy", "f3.sgy"),
                  "synthetic": work.generate("synthetic", *(["--dims", "40", "40", "80"] if exp.quick else ["--preset", "paper-250"]),
                                             "--seed", "1")}
         for (cube, tf), image in images(exp).items():
-            stats = work.volume(cubes[cube], "--tf", tf, "--size", size, size, "--camera", "40", "25", "0", image=image)
+            stats = work.volume(cubes[cube], "--tf", tf, "--size", size, size, "--camera", "40", "25", "0",
+                                "--text-height", text_px, image=image)
             stats["input"]["path"] = os.path.basename(stats["input"]["path"])
             renders.append({"cube": cube, "transfer_function": tf, "image": os.path.relpath(image, exp.out), "stats": stats})
             last_stats = stats

@@ -146,6 +146,7 @@ nlohmann::json configuration_json(const VolumeOptions& o, const volume::Transfer
             {"block_size", s.block_size},
             {"colour_bar", s.colour_bar},
             {"reserved_right_px", s.reserved_right_px},
+            {"text_height_px", s.text_height_px},
             {"cpu_threads", threads},
             {"warmup", o.warmup},
             {"repeat", o.repeat},
@@ -303,8 +304,9 @@ int run_volume(VolumeOptions& o) {
     // The cube is framed left of the colour bar it will carry (never more than half the width).
     if (o.settings.colour_bar)
         o.settings.reserved_right_px =
-            std::min(0.5f * float(o.settings.width), annotation::colour_bar_reserved_width(volume::colour_bar_label(scene),
-                                                                                        o.settings.width, o.settings.height));
+            std::min(0.5f * float(o.settings.width),
+                     annotation::colour_bar_reserved_width(volume::colour_bar_label(scene, o.settings.text_height_px),
+                                                           o.settings.width, o.settings.height));
     const double prepare_ms = elapsed_ms(start);
 
     FrameRuns runs = o.caster == "gpu" ? run_gpu(scene, o) : run_cpu(scene, o);
@@ -351,6 +353,10 @@ CommandAction add_volume_command(CLI::App& app) {
              ->expected(3),
         1e6);
     cmd->add_option("--size", o->size, "Image width and height (pixels)")->expected(2)->check(finite_in(16, 8192, "pixels"));
+    cmd->add_option("--text-height", o->settings.text_height_px,
+                    "capitals of the colour bar's and axes' text at least this tall, pixels (default: 2% of the image "
+                    "height); 7 pt at a printed width W mm is 2.47 / W of the image width")
+        ->check(finite_in(0, 200, "pixels"));
     cmd->add_option("--caster", o->caster, "gpu (fragment shader) or cpu (reference, std::thread)")
         ->check(one_of({"gpu", "cpu"}));
     // More threads than this only adds scheduling (100000 ran out of process resources).

@@ -8,14 +8,17 @@
 
 namespace cutaway::volume {
 
-annotation::ColourBarLabel colour_bar_label(const VolumeScene& scene) {
+annotation::ColourBarLabel colour_bar_label(const VolumeScene& scene, float min_text_px) {
     // SEG-Y amplitudes carry no unit we can trust (trace header units are rarely filled in).
-    return {"amplitude", float(level_value(scene.window.lo, scene.volume->range)),
-            float(level_value(scene.window.hi, scene.volume->range)), ""};
+    annotation::ColourBarLabel label{"amplitude", float(level_value(scene.window.lo, scene.volume->range)),
+                                     float(level_value(scene.window.hi, scene.volume->range)), ""};
+    label.min_text_px = min_text_px;
+    return label;
 }
 
-void draw_colour_bar(gl::RgbaImage& image, const VolumeScene& scene, Rgba background) {
-    const annotation::ColourBarLayout layout = annotation::layout_colour_bar(colour_bar_label(scene), image.width, image.height);
+void draw_colour_bar(gl::RgbaImage& image, const VolumeScene& scene, Rgba background, float min_text_px) {
+    const annotation::ColourBarLayout layout =
+        annotation::layout_colour_bar(colour_bar_label(scene, min_text_px), image.width, image.height);
     const Rgba ink = ink_on(background);
     float max_alpha = 0;
     for (const Rgba& entry : scene.table) max_alpha = std::max(max_alpha, entry.a);

@@ -10,9 +10,10 @@
 
 namespace cutaway::volume {
 
-/// The bar's label: the title and the amplitudes at the window's ends.
-annotation::ColourBarLabel colour_bar_label(const VolumeScene& scene);
+/// The bar's label: the title and the amplitudes at the window's ends; its capitals at least
+/// `min_text_px` tall (RayCastSettings::text_height_px).
+annotation::ColourBarLabel colour_bar_label(const VolumeScene& scene, float min_text_px = 0);
 
-void draw_colour_bar(gl::RgbaImage& image, const VolumeScene& scene, Rgba background);
+void draw_colour_bar(gl::RgbaImage& image, const VolumeScene& scene, Rgba background, float min_text_px = 0);
 
 }  // namespace cutaway::volume

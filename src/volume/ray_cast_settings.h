@@ -33,6 +33,9 @@ struct RayCastSettings {
     /// Image columns at the right kept for the colour bar: a framed cube (distance 0) is fitted and
     /// centred left of them (0..width/2).
     float reserved_right_px = 0;
+    /// Capitals of the annotations' text (colour bar, axis labels) at least this tall, pixels
+    /// (0: 2% of the image height; 0..200).
+    float text_height_px = 0;
 };
 
 /// Throws std::invalid_argument naming the first field out of range.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "annotation/colour_bar_layout.h"
+#include "annotation/text_glyphs.h"
 #include "gl/gl_context.h"
 #include "gl/shader_library.h"
 #include "volume/colour_bar.h"
@@ -109,12 +110,21 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
     TransferFunctionSettings tf;
     tf.window = percentile_window(f3_);
     const VolumeScene scene = make_scene(f3_, build_transfer_table(tf), 8, tf.window);
-    const annotation::ColourBarLabel label = colour_bar_label(scene);
-    // The tests' frame, and a figure's (where every axis has room for two values at least).
-    for (const int size : {side, 640}) {
-        SCOPED_TRACE(size);
-        const std::size_t least_ticks = size >= 640 ? 2 : 1;
+    // The tests' frame, a figure's (where every axis has room for two values at least), and the
+    // figure with text printing at 7 pt two across a page (experiments/volume_renders: 18 px
+    // capitals at 640 px; one value per axis at least).
+    const struct {
+        int size;
+        float text_px;
+    } frames[] = {{side, 0}, {640, 0}, {640, 18}};
+    for (const auto [size, text_px] : frames) {
+        SCOPED_TRACE(std::to_string(size) + " px, text " + std::to_string(text_px));
+        const annotation::ColourBarLabel label = colour_bar_label(scene, text_px);
+        const std::size_t least_ticks = size >= 640 && text_px == 0 ? 2 : 1;
         const annotation::ColourBarLayout bar = annotation::layout_colour_bar(label, size, size);
+        if (text_px > 0) {
+            EXPECT_GE(bar.text_scale * annotation::cap_height_px, text_px);
+        }
         EXPECT_GE(bar.ticks.size(), 3u);
         EXPECT_LT(label.min, label.max);
         RayCastSettings settings;
