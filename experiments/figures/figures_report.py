@@ -17,7 +17,8 @@ def metric_cells(panel):
 
 def sweep_section(result, title, sweep, label):
     result.section(title, f"{sweep['model']}, {sweep['size'][0]}x{sweep['size'][1]}, median of {sweep['repeat']} "
-                          "timed frames per value.")
+                          f"timed frames per value in each of {sweep.get('rounds', 1)} rounds over the values (interleaved), "
+                          "then the median over the rounds.")
     result.table([label, "primary cells", *(cx.STAGE_LABELS[s] + " ms" for s in SWEEP_STAGES)],
                  [[f"{r['value']:g}", f"{r['primary_cells']:,}", *(md.ms(r["stages_ms"].get(s)) for s in SWEEP_STAGES)]
                   for r in sweep["rows"]])

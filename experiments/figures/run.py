@@ -16,7 +16,8 @@ Figures 14 (the four presets from two views, then two properties in one frame) a
 cutaway, only primaries, only secondaries) are grids of 1000x600 panels. Figures 7 and 12
 add a zoom row: the window where their panels differ, enlarged 3 times; figure 8 a row of each
 kernel against the full kernel, the pixels that differ in red.
-Sweeps on preset:opharine: full apertures 0..180 degrees at 1% primaries; fractions 0.1%..10% at 60 degrees.
+Sweeps on preset:opharine: full apertures 0..180 degrees at 1% primaries; fractions 0.1%..10% at 60 degrees;
+three rounds over each sweep's values, interleaved, each value's median over the rounds.
 """
 import os
 import sys
@@ -141,17 +142,17 @@ def measure(exp):
 
     apertures = (0, 60, 120, 180) if quick else (0, 30, 60, 90, 120, 150, 180)
     fractions = (0.003, 0.03) if quick else (0.001, 0.003, 0.01, 0.03, 0.1)
-    repeat = 1 if quick else 3
+    repeat, rounds = (1, 1) if quick else (3, 3)
     sweep_size = (320, 180) if quick else size
     aperture_rows, stats = sweeps.sweep(exp, sweep_model, sweep_size, [(a, ["--aperture", a, a]) for a in apertures],
-                                        figure_specs.CAMERA, repeat)
+                                        figure_specs.CAMERA, repeat, rounds)
     fraction_rows, _ = sweeps.sweep(exp, sweep_model, sweep_size, [(f, ["--primary-fraction", f]) for f in fractions],
-                                    figure_specs.CAMERA, repeat)
+                                    figure_specs.CAMERA, repeat, rounds)
     return {
         "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),
         "context": exp.context(stats), "configuration": stats["configuration"], "figures": numbers,
-        "time_vs_aperture": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": aperture_rows},
-        "time_vs_primary_fraction": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rows": fraction_rows}}
+        "time_vs_aperture": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rounds": rounds, "rows": aperture_rows},
+        "time_vs_primary_fraction": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rounds": rounds, "rows": fraction_rows}}
 
 
 def plot(exp, document):
