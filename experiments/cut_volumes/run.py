@@ -17,8 +17,9 @@ one well, in one process: 3 repetitions per case in random order, 5 timed frames
 the frame without volumes, 32 boxes <= 1.50 x.
 Volume panels: preset:petra at 1280x720, `--primaries none` and one volume each (box, cylinder,
 well around the generated deck's INJ2 with the deck's wells drawn, an icosahedron OBJ).
-Waterflood: `cutaway generate --preset petra --deck`, `flow` on it, then SWAT at an early, middle
-and late report step with every well drawn and a cut around INJ2, one colour range over the three.
+Waterflood: `cutaway generate --preset petra --deck`, `flow` on it, then SWAT at four report steps
+(a tenth, a third, two thirds of the way and the last) with every well drawn and a cut around INJ2,
+one colour range over the four.
 --quick: zaphirus everywhere, the benchmark at 480x270 with 1 frame, panels at 640x360
 (results/quick/cut_volumes/, paper_figures/quick/).
 """
@@ -96,38 +97,41 @@ def volume_panels(exp, config, scratch):
     model = "preset:" + config["panel_preset"]
     bounds = exp.inspect(model)["bounds"]
     deck = generate_deck(exp, config["panel_preset"], os.path.join(scratch, "panel_deck"))
-    panels = [("box", [scenes.box_spec(bounds)], []),
-              ("cylinder", [scenes.cylinder_spec(bounds)], []),
-              ("well", [scenes.well_spec(INJECTOR, bounds, 0.07)], ["--wells", deck]),
-              ("mesh", [scenes.write_mesh_obj(bounds, scratch)], [])]
+    well = scenes.well_spec(INJECTOR, bounds, 0.07)
+    panels = [("box", "box: a shaft through the middle third, down to 60% of the depth", [scenes.box_spec(bounds)], []),
+              ("cylinder", "cylinder: a slanted core from a corner to the middle", [scenes.cylinder_spec(bounds)], []),
+              ("well", f"well: a {float(well.split(',')[1]):.0f} m tube around {INJECTOR}, the deck's wells drawn",
+               [well], ["--wells", deck]),
+              ("mesh", "mesh: a closed icosahedron read from an OBJ file", [scenes.write_mesh_obj(bounds, scratch)], [])]
     return render_panels(exp, model, config["panel_size"], panels, scratch)
 
 
 def render_panels(exp, model, size, panels, scratch):
+    """Each panel titled in words; its --cut-volume specs are in the JSON and the report."""
     text_px = compose.min_text_px(compose.figure_width_px(2, size[0]))
     rows, numbers = [], []
-    for kind, specs, extra in panels:
+    for kind, caption, specs, extra in panels:
         image = os.path.join(scratch, f"volume_{kind}.png")
         options = [*VIEW, "--primaries", "none", *(a for s in specs for a in ("--cut-volume", s)), *extra]
         stats = exp.render(model, *options, "--size", *size, "--text-height", text_px, image=image)
         shown = [s if not s.startswith("mesh:") else "mesh:" + os.path.basename(s[5:]) for s in specs]
-        caption = f"{kind}: --cut-volume {' '.join(shown)}" + ("\n(the deck's wells drawn)" if extra else "")
         rows.append((caption, image))
-        numbers.append({"kind": kind, "specs": shown, "options": [str(o) for o in options if o not in specs],
+        numbers.append({"kind": kind, "caption": caption, "specs": shown, "options": [str(o) for o in options if o not in specs],
                         "stages_ms": stats["stages_ms"]})
         print(f"  {kind}: {stats['stages_ms']['total']:.0f} ms")
     return rows, numbers, stats
 
 
 def flood_steps(report_steps):
-    """Early, middle and late report steps (indices into the file's steps): a tenth of the way,
-    while the front is still near the injector (but after the initial state), a third, and the last."""
+    """Four report steps (indices into the file's steps) for a 2 x 2 figure: a tenth of the way,
+    while the front is still near the injector (but after the initial state), a third, two thirds
+    and the last."""
     last = len(report_steps) - 1
-    return sorted({max(1, last // 10), max(2, last // 3), last})
+    return sorted({max(1, last // 10), max(2, last // 3), max(3, 2 * last // 3), last})
 
 
 def waterflood(exp, config, scratch):
-    """The generated deck run by flow, SWAT at three steps inside a cut around the injector;
+    """The generated deck run by flow, SWAT at four steps inside a cut around the injector;
     returns (rows for compose, numbers)."""
     deck = generate_deck(exp, config["flood_preset"], os.path.join(scratch, "flood"))
     out = os.path.join(os.path.dirname(deck), "out")
@@ -147,7 +151,8 @@ def waterflood(exp, config, scratch):
                    "--primaries", "none", "--cut-volume", cut]
         stats = exp.render(case, *options, "--size", *size, "--text-height", text_px, image=image)
         date = report_steps[k]["date"]
-        rows.append((f"step {k}: {date} (day {report_steps[k]['elapsed_days']:.0f})", image))
+        # The date and step are in the frame's own caption; the title gives the time since the start.
+        rows.append((f"after {report_steps[k]['elapsed_days'] / 365.25:.1f} years of injection", image))
         numbers.append({"step": k, "date": date, "elapsed_days": report_steps[k]["elapsed_days"],
                         "options": [str(o) for o in options], "stages_ms": stats["stages_ms"]})
         print(f"  waterflood step {k} ({date}): {stats['stages_ms']['total']:.0f} ms")
@@ -228,12 +233,13 @@ def report(exp, document):
                    f"`cut_volumes.png`: preset:{config['panel_preset']} at {config['panel_size'][0]}x{config['panel_size'][1]}, "
                    "camera azimuth 215, elevation 40, `--aperture 0 0` (the cut is each volume's own footprint), "
                    "`--primaries none` and one volume per panel; the well panel draws the generated deck's wells "
-                   f"(`--wells DECK.DATA`) and cuts around {INJECTOR}.",
+                   f"(`--wells DECK.DATA`) and cuts around {INJECTOR}. The volumes: " +
+                   "; ".join(f"`--cut-volume {' '.join(p['specs'])}`" for p in document["panels"]) + ".",
                    f"`wells_waterflood.png`: `cutaway generate --preset {flood['preset']} --deck`, run by `flow`; SWAT of "
                    f"{flood['case']} at report steps {', '.join(str(s['step']) for s in flood['steps'])} of "
                    f"{flood['report_steps']} ({', '.join(s['date'] for s in flood['steps'])}), every well drawn "
                    f"(`--wells all`), `--primaries none --cut-volume {flood['cut']}`, one colour range "
-                   f"{flood['colour_range'][0]:.3f}..{flood['colour_range'][1]:.3f} (the three steps' min..max from "
+                   f"{flood['colour_range'][0]:.3f}..{flood['colour_range'][1]:.3f} (the steps' min..max from "
                    "`cutaway inspect --json`).")
     return result.figure(exp.path("cut_volumes.png"), exp.path("wells_waterflood.png"))
 

@@ -25,6 +25,14 @@ MIN_FIG11_MODEL_SHARE = 0.33
 # Fig. 12's two panels (internal lines shown / hidden) differ visibly: at least 2% of the pixels
 # change by more than 24/255 in some channel (the same picture gives 0).
 MIN_FIG12_CHANGED = 0.02
+# Fig. 7's ray-cast border lines are continuous, the threshold ones erratic (the paper's point):
+# of the ray-cast panel's red line pixels at least 75% lie in pieces of 20 px or more, and at
+# least 1.5 times the threshold panel's share (at elevation 30, where the cut grazes petra's top,
+# 65% against 51%; the quick zaphirus figure 78% against 42%). Red: the red channel 50/255 above
+# both others (viridis has no red).
+MIN_RAYCAST_LINE_SHARE = 0.75
+MIN_RAYCAST_OVER_THRESHOLD = 1.5
+MIN_LINE_PIECE_PX = 20
 # Fig. 13's silhouette has its own colour: cyan pixels (blue and green high, red low) appear only
 # with --silhouette, at least 500 of them.
 MIN_SILHOUETTE_PIXELS = 500
@@ -48,6 +56,9 @@ MAX_SEE_THROUGH_SHARE = 0.005
 # details too small), and every text, captions and the colour bars' capitals, at least 7 pt when
 # the figure is printed 182 mm wide (compose.min_text_px of the figure's width).
 MAX_COLUMNS = 2
+# ... and the figure fits a page: at most 247 mm tall at that width (an A4 page's text height with
+# 25 mm margins; fig. 14's five rows of two printed 301 mm tall).
+MAX_PRINTED_HEIGHT_MM = 247
 BACKGROUND_MIN_CHANNEL = 0.94  # as fig. 11's model share: a pixel whose every channel is this bright is background
 
 
@@ -112,8 +123,32 @@ def check_kernel_differences(figure, failures):
                            f"no filter on {100 * unfiltered:.2f}%: the approximation is no closer than no filter")
 
 
-def check_print_size(name, figure, failures):
-    """Columns and text heights of one composed figure against the print-size targets."""
+def line_share_in_pieces(panel, np):
+    """Share of a panel's red line pixels in 8-connected pieces of MIN_LINE_PIECE_PX or more."""
+    import scipy.ndimage
+    rgb = panel * 255
+    red = rgb[..., 0] - np.maximum(rgb[..., 1], rgb[..., 2]) > 50
+    labels, count = scipy.ndimage.label(red, structure=np.ones((3, 3)))
+    if count == 0:
+        return 0.0
+    sizes = np.bincount(labels.ravel())[1:]
+    return float(sizes[sizes >= MIN_LINE_PIECE_PX].sum() / red.sum())
+
+
+def check_border_continuity(panels, failures, np):
+    """Fig. 7: the ray-cast lines continuous, and more so than the threshold ones."""
+    threshold, raycast = (line_share_in_pieces(p, np) for p in panels)
+    print(f"fig07: line pixels in pieces of {MIN_LINE_PIECE_PX}+ px: threshold {100 * threshold:.1f}%, "
+          f"ray-cast {100 * raycast:.1f}%")
+    if raycast < MIN_RAYCAST_LINE_SHARE or raycast < MIN_RAYCAST_OVER_THRESHOLD * threshold:
+        fail(failures, f"fig07: ray-cast lines {100 * raycast:.1f}% in pieces of {MIN_LINE_PIECE_PX}+ px (expected at least "
+                       f"{100 * MIN_RAYCAST_LINE_SHARE:.0f}% and {MIN_RAYCAST_OVER_THRESHOLD:g} times the threshold lines' "
+                       f"{100 * threshold:.1f}%)")
+
+
+def check_print_size(name, figure, image_height, failures):
+    """Columns, printed height and text heights of one composed figure (its PNG `image_height`
+    pixels tall) against the print-size targets."""
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
     sys.path.insert(0, os.path.join(REPO, "experiments", "common"))
     import compose
@@ -123,6 +158,10 @@ def check_print_size(name, figure, failures):
           f"{figure.get('colour_bar_text_px')} px (7 pt at 182 mm: {needed} px)")
     if width > compose.figure_width_px(MAX_COLUMNS, panel_width):
         fail(failures, f"{name}: {width} px wide, more than {MAX_COLUMNS} panels of {panel_width} px side by side")
+    printed_height = compose.PRINT_WIDTH_MM * image_height / max(width, 1)
+    if printed_height > MAX_PRINTED_HEIGHT_MM:
+        fail(failures, f"{name}: {printed_height:.0f} mm tall at {compose.PRINT_WIDTH_MM:g} mm wide, more than a page's "
+                       f"{MAX_PRINTED_HEIGHT_MM} mm")
     for what in ("text_px", "colour_bar_text_px"):
         if figure.get(what, 0) < needed:
             fail(failures, f"{name}: {what} {figure.get(what)} px, below 7 pt at 182 mm ({needed} px)")
@@ -157,7 +196,7 @@ def main():
         image = plt.imread(os.path.join(figures, name + ".png"))[..., :3]
         panels_of[name] = image
     for name, figure in sorted(numbers.items()):
-        check_print_size(name, figure, failures)
+        check_print_size(name, figure, panels_of[name].shape[0], failures)
     # The composed figure holds panels at native size: cut them back out by the recorded layout.
     def panels(name):
         image, figure = panels_of[name], numbers[name]
@@ -178,6 +217,8 @@ def main():
         print(f"fig12: {100 * changed:.2f}% of the pixels change when internal lines are hidden")
         if changed < MIN_FIG12_CHANGED:
             fail(failures, f"fig12: hiding internal lines changes {100 * changed:.2f}% of the pixels (< {100 * MIN_FIG12_CHANGED:.0f}%)")
+    if "fig07_borders" in numbers:
+        check_border_continuity(panels("fig07_borders")[:2], failures, np)
     if "fig08_mean_filter" in numbers:
         check_kernel_differences(numbers["fig08_mean_filter"], failures)
     if "fig13_silhouette" in numbers:

@@ -1,7 +1,7 @@
 """The paper's figures 7-15 as panels of `cutaway render` options (one PNG per figure).
 
 A figure: name, title, rows of panels (caption, extra options[, model]); `panels` is a one-row
-figure. Every panel shares the figure's camera and size unless its options set them; `metrics`
+figure. Every panel shares the figure's camera (`camera`, else CAMERA) and size unless its options set them; `metrics`
 asks render for the image metrics (exposure, border width), `caption_number` names the one each
 caption shows; `zoom` adds a row of enlarged windows
 where the panels differ (the figure's point is small: borders, the cut's staircase); `size`
@@ -10,6 +10,12 @@ adds a last row: every other panel against that one (by index), the pixels that 
 """
 
 CAMERA = ("--camera", 35, 30, 0)
+# Figures about lines on the cut's walls (7, 12) look down at 45 degrees: at elevation 30 the
+# lower walls of the default 60-degree aperture lean 30 degrees below the view rays, parallel to
+# a level top, so the cut grazes the top layer over wide areas and every border method draws that
+# grazing intersection in scattered pieces (fig. 7's ray-cast panel: 77% of its line pixels in
+# pieces of 20 px or more at 30 degrees, 83% at 45 where the walls cut the layers steeply).
+LINES_VIEW = ("--camera", 35, 45, 0)
 SECOND_VIEW = ("--camera", 215, 45, 0)  # the far side, higher: the paper's second view of each model
 # Fig. 14's two-property row: primaries in the high-porosity channels (a spatially coherent
 # cluster in the generated models, as fig. 15's first window), shown among cells coloured by PERMX.
@@ -22,6 +28,7 @@ def figure_specs(model, steps, swat_range):
     over `swat_range` (LO, HI) so one colour means one saturation in every panel."""
     return [
         {"name": "fig07_borders", "title": "Fig. 7: threshold vs ray-cast border lines", "metrics": True, "zoom": True,
+         "camera": LINES_VIEW,
          "caption_number": "border_line_width",
          "panels": [("threshold borders", ["--border", "threshold"]), ("ray-cast borders", ["--border", "raycast"])]},
         # The three kernels at 33x33, where they differ (at the paper's 9x9 the distance-scaled
@@ -46,6 +53,7 @@ def figure_specs(model, steps, swat_range):
                                         "--colour-range", *swat_range])
                     for s in steps]},
         {"name": "fig12_hidden_lines", "title": "Fig. 12: internal lines of secondaries shown / hidden", "zoom": True,
+         "camera": LINES_VIEW,
          "panels": [("internal lines", []), ("hidden internal lines", ["--hide-internal-lines"])]},
         {"name": "fig13_silhouette", "title": "Fig. 13: silhouette of the primary cluster (cyan, doubled)",
          "panels": [("no silhouette", []), ("silhouette", ["--silhouette"])]},
@@ -56,23 +64,28 @@ MODEL_PROPERTIES = ("PORO", "PERMX", "NTG", "SWAT")  # fig. 14's rows (sapphire 
 
 
 def models_figure(presets, size, row_options):
-    """Fig. 14: the four models, each coloured by a different property, from two views each; a last
-    row shows two properties in one frame (the paper's ZMap row; shared/data has no ZMap model, so
-    the first preset stands in): cells coloured by PERMX, primaries picked by PORO's high-porosity
-    window (`render --select-by PORO`). `row_options`: per property of MODEL_PROPERTIES (and
-    "two_properties"), (caption suffix, options) fitting it to its model's data (models_options)."""
-    rows = []
-    for p, prop in zip(presets, MODEL_PROPERTIES):
+    """Fig. 14: the four models, each coloured by a different property, two per row, the first of
+    each row from CAMERA and the second from SECOND_VIEW (so both sides of the fields are seen);
+    a last row shows two properties in one frame from both views (the paper's ZMap row;
+    shared/data has no ZMap model, so the first preset stands in): cells coloured by PERMX,
+    primaries picked by PORO's high-porosity window (`render --select-by PORO`). Three rows of two
+    print 190 mm tall at 182 mm wide, within a page. `row_options`: per property of
+    MODEL_PROPERTIES (and "two_properties"), (caption suffix, options) fitting it to its model's
+    data (models_options)."""
+    panels = []
+    for index, (p, prop) in enumerate(zip(presets, MODEL_PROPERTIES)):
         suffix, options = row_options.get(prop, ("", []))
-        rows.append([(f"{p} ({prop}{suffix}), azimuth {view[1]}", ["--property", prop, *options, *view], f"preset:{p}")
-                     for view in (CAMERA, SECOND_VIEW)])
+        view = (CAMERA, SECOND_VIEW)[index % 2]
+        panels.append((f"{p} ({prop}{suffix}), azimuth {view[1]}", ["--property", prop, *options, *view], f"preset:{p}"))
+    rows = [panels[:2], panels[2:]]
     lo, hi = TWO_PROPERTIES_PORO
     _, colour = row_options.get("two_properties", ("", []))
     rows.append([(f"{presets[0]}: PERMX colours, primaries PORO {lo:.2f}-{hi:.2f}, azimuth {view[1]}",
                   ["--property", "PERMX", "--select-by", "PORO", "--range", lo, hi, *colour, *view], f"preset:{presets[0]}")
                  for view in (CAMERA, SECOND_VIEW)])
+    models = sorted(set(presets), key=presets.index)
     return {"name": "fig14_models",
-            "title": "Fig. 14: the four synthetic models with properties, two views each; last row: two properties",
+            "title": f"Fig. 14: the {len(models)} synthetic models ({', '.join(models)}) with properties; last row: two properties",
             "rows": rows, "size": size}
 
 

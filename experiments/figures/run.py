@@ -10,9 +10,9 @@ exposure; the sweeps; machine context) with its README.md (figures_report.py). S
 (and petra in fig. 14) at 1000x562, one frame per panel, sweeps at 320x180 with fewer points
 (results/quick/figures/, paper_figures/quick/).
 
-Protocol: preset:petra (32,760 cells), 1280x720, camera azimuth 35 / elevation 30, 1% primaries of
-PORO, the paper's defaults otherwise; one warm-up and three timed frames per panel (median).
-Figures 14 (the four presets from two views, then two properties in one frame) and 15 (opharine, two PORO ranges; rows: full
+Protocol: preset:petra (32,760 cells), 1280x720, camera azimuth 35 / elevation 30 (45 for figures 7
+and 12: figure_specs.LINES_VIEW), 1% primaries of PORO, the paper's defaults otherwise; one warm-up and three timed frames per panel (median).
+Figures 14 (the four presets, two per row from two views, then two properties in one frame) and 15 (opharine, two PORO ranges; rows: full
 cutaway, only primaries, only secondaries) are grids of 1000x600 panels. Figures 7 and 12
 add a zoom row: the window where their panels differ, enlarged 3 times; figure 8 a row of each
 kernel against the full kernel, the pixels that differ in red.
@@ -53,7 +53,7 @@ def render_figure(exp, spec, model, size, scratch, quick_options):
             caption, options = panel[0], panel[1]
             panel_model = panel[2] if len(panel) > 2 else model
             image = os.path.join(scratch, f"{spec['name']}_{r}_{index}.png")
-            camera = () if "--camera" in options else figure_specs.CAMERA  # fig. 10 and 14 set their own
+            camera = () if "--camera" in options else spec.get("camera", figure_specs.CAMERA)  # fig. 10 and 14 set their own
             stats = exp.render(panel_model, *camera, *options, "--size", *size, "--text-height", text_px, *quick_options, image=image,
                                metrics=spec.get("metrics", False))
             numbers.append({"caption": caption, "model": panel_model, "options": [str(o) for o in options],

@@ -41,6 +41,15 @@ class Workspace:
             return json.load(f)
 
 
+def gl_caster_name(context):
+    """The fragment-shader caster's legend name, by what ran it: "GPU caster" only on a GPU; on
+    llvmpipe the same shader runs on the CPU, so a plot must not call it a GPU."""
+    renderer = str((context or {}).get("gl_renderer", ""))
+    if "llvmpipe" in renderer:
+        return "GL caster (fragment shader on llvmpipe, a CPU)"
+    return "GPU caster (fragment shader" + (f", {renderer.split('/')[0]})" if renderer else ")")
+
+
 def frame_times_ms(stats, stages=("exit_points", "ray_cast")):
     """Per-trial render time (sum of the given fenced stages; the CPU caster has only ray_cast)."""
     series = [stats["stages_ms_all"][s] for s in stages if s in stats["stages_ms_all"]]

@@ -80,7 +80,7 @@ def plot(exp, document):
     threads = document["protocol"]["configuration"].get("cpu_threads")
     azimuths = [e["azimuth_deg"] for e in eyes]
     fig, ax = plt.subplots(figsize=(cx.PLOT_WIDTH_IN, 4.6))
-    casters = (("gpu", "o", "C0", "--", "GPU caster (fragment shader)"),
+    casters = (("gpu", "o", "C0", "--", vx.gl_caster_name(document["context"])),
                ("cpu", "s", "C1", ":", "CPU caster" + (f", {threads} threads" if threads else "")))
     for caster, marker, colour, paper_style, name in casters:
         ax.plot(azimuths, [e[caster]["trimmed_mean_ms"] for e in eyes], marker=marker, color=colour,

@@ -29,7 +29,7 @@ import report_markdown as md  # noqa: E402
 import volume_experiment as vx  # noqa: E402
 
 
-CASTERS = (("gpu", "o", "C0", "GPU caster (fragment shader)"), ("cpu", "s", "C1", "CPU caster"))
+CASTERS = (("gpu", "o", "C0", None), ("cpu", "s", "C1", "CPU caster"))  # None: vx.gl_caster_name
 
 
 def caster_rows(rows, caster):
@@ -46,6 +46,7 @@ def plot(exp, result):
     fig, ax = plt.subplots(figsize=(cx.PLOT_WIDTH_IN, 4.4))
     shown_ms = []
     for caster, marker, colour, name in CASTERS:
+        name = name or vx.gl_caster_name(result["context"])
         records = caster_rows(rows, caster)
         if any(c is None for c in records):
             continue

@@ -6,7 +6,7 @@ Interface (for experiments/run_all):
 Writes paper_figures/volume_render_{f3,synthetic}_{grey,pseudo,layer}.png (colour bar included)
 and results/volume_renders/renders.json (each render's stats and the machine context) with its
 README.md. Skips when all exist unless --force. --quick: 256x256 pixels and a 40x40x80 synthetic
-cube instead of 640x640 and "paper-250". Reads segy/f3.sgy from the shared data (--data).
+cube instead of 1024x1024 and "paper-250". Reads segy/f3.sgy from the shared data (--data).
 """
 import math
 import os
@@ -34,13 +34,13 @@ def images(exp):
 
 
 # Renders printed two side by side at a journal's 182 mm width (90 mm each) carry 7 pt text:
-# capitals 2.47 mm tall (18 px at 640 px; at three across, 28 px, the crossline axis kept no
-# tick value beside the colour bar).
+# capitals 2.47 mm tall (29 px at 1024 px). 1024 px: every figure at least 1000 px wide, the print
+# resolution of the gallery's panels (issue 46).
 PRINTED_WIDTH_MM, CAPITALS_MM = 90.0, 2.47
 
 
 def measure(exp):
-    size = "256" if exp.quick else "640"
+    size = "256" if exp.quick else "1024"
     text_px = str(math.ceil(CAPITALS_MM / PRINTED_WIDTH_MM * int(size)))
     renders, last_stats = [], None
     with vx.Workspace(exp) as work:

@@ -1,7 +1,9 @@
 #include "annotation/label_placement.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace cutaway::annotation {
@@ -31,6 +33,54 @@ std::vector<std::pair<float, float>> candidate_offsets(float w, float h, float g
     return offsets;
 }
 
+bool contains(const PixelRect& r, float x, float y) { return x >= r.x0 && x <= r.x1 && y >= r.y0 && y <= r.y1; }
+
+/// Whether the segment from (ax, ay) to (bx, by) passes through `r` (Liang-Barsky clipping).
+bool segment_crosses(const PixelRect& r, float ax, float ay, float bx, float by) {
+    float t0 = 0, t1 = 1;
+    const float dx = bx - ax, dy = by - ay;
+    const float p[4] = {-dx, dx, -dy, dy}, q[4] = {ax - r.x0, r.x1 - ax, ay - r.y0, r.y1 - ay};
+    for (int e = 0; e < 4; ++e) {
+        if (p[e] == 0) {
+            if (q[e] < 0) return false;
+            continue;
+        }
+        const float t = q[e] / p[e];
+        if (p[e] < 0) t0 = std::max(t0, t);
+        else t1 = std::min(t1, t);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::array<float, 2> leader_end(const PixelRect& box, float x, float y) {
+    return {std::clamp(x, box.x0, box.x1), std::clamp(y, box.y0, box.y1)};
+}
+
+namespace {
+
+/// How badly `box` for request `r` sits among the labels `placed` before: 100 for each label it
+/// overlaps (text over text is unreadable), 1 for each leader line crossing it or crossed by its
+/// own leader and each other request's anchor it covers (a reader may pair name and well wrongly);
+/// 100 for each of the `obstacles` it overlaps.
+int conflicts(const PixelRect& box, std::size_t r, const std::vector<LabelRequest>& requests,
+              const std::vector<PlacedLabel>& placed, const std::vector<PixelRect>& obstacles) {
+    const LabelRequest& request = requests[r];
+    const auto [ex, ey] = leader_end(box, request.anchor_x, request.anchor_y);
+    int count = 0;
+    for (const PlacedLabel& p : placed) {
+        const auto [px, py] = leader_end(p.box, p.anchor_x, p.anchor_y);
+        count += 100 * int(p.box.overlaps(box)) + int(segment_crosses(box, p.anchor_x, p.anchor_y, px, py)) +
+                 int(segment_crosses(p.box, request.anchor_x, request.anchor_y, ex, ey));
+    }
+    for (std::size_t o = 0; o < requests.size(); ++o)
+        count += int(o != r && contains(box, requests[o].anchor_x, requests[o].anchor_y));
+    for (const PixelRect& obstacle : obstacles) count += 100 * int(obstacle.overlaps(box));
+    return count;
+}
+
 }  // namespace
 
 float label_text_scale(int height, float min_text_px) {
@@ -38,7 +88,7 @@ float label_text_scale(int height, float min_text_px) {
 }
 
 std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests, int width, int height, float reserved_right,
-                                      float min_text_px) {
+                                      float min_text_px, const std::vector<PixelRect>& obstacles) {
     const float s = label_text_scale(height, min_text_px);
     const float pad = 2 * s, gap = 3 * s;
     const float x1 = std::max(1.0f, float(width) - reserved_right), y1 = float(height);
@@ -51,17 +101,19 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
         const PixelRect ink = ink_box(at_origin);
         if (ink.x0 > ink.x1) continue;  // blank text
         const PixelRect box0{ink.x0 - pad, ink.y0 - pad, ink.x1 + pad, ink.y1 + pad};
-        std::optional<PixelRect> chosen, fallback;
+        // The first candidate with the fewest conflicts, none if it can.
+        std::optional<PixelRect> chosen;
+        int fewest = std::numeric_limits<int>::max();
         for (const auto& [dx, dy] : candidate_offsets(box0.width(), box0.height(), gap)) {
             const PixelRect box = moved(box0, request.anchor_x + dx - box0.x0, request.anchor_y + dy - box0.y0);
             if (!inside(box, x1, y1)) continue;
-            if (!fallback) fallback = box;
-            if (std::none_of(placed.begin(), placed.end(), [&](const PlacedLabel& p) { return p.box.overlaps(box); })) {
+            if (const int c = conflicts(box, r, requests, placed, obstacles); c < fewest) {
+                fewest = c;
                 chosen = box;
-                break;
+                if (c == 0) break;
             }
         }
-        if (!chosen) chosen = fallback ? *fallback : clamped(moved(box0, request.anchor_x + gap, request.anchor_y + gap), float(width), y1);
+        if (!chosen) chosen = clamped(moved(box0, request.anchor_x + gap, request.anchor_y + gap), float(width), y1);
         PlacedLabel label;
         label.box = *chosen;
         label.line = {request.text, chosen->x0 - box0.x0, chosen->y0 - box0.y0, s};

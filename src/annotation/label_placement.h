@@ -1,6 +1,7 @@
 #pragma once
 // Name labels next to points of an image (a well's name beside its wellhead): each label a box
 // of text placed near its anchor, inside the image, clear of the labels placed before it.
+#include <array>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -22,16 +23,24 @@ struct PlacedLabel {
     std::size_t request = 0;  ///< the request's index
 };
 
+/// The point of `box` nearest to (x, y): where a leader line from the anchor (x, y) meets the label.
+std::array<float, 2> leader_end(const PixelRect& box, float x, float y);
+
 /// Text scale of labels on an image `height` pixels tall: capitals 2% of the height (as the colour
 /// bar's) or `min_text_px` if larger (the colour bar's --text-height), never below stb's 7 px.
 float label_text_scale(int height, float min_text_px = 0);
 
 /// Places each request whose anchor lies inside the `width` x `height` image (others get no
 /// label): the first of a ring of positions around the anchor, at growing distances, whose box
-/// lies inside the image (left of its `reserved_right` columns) and overlaps no label placed
-/// before; if none does, the nearest one inside the image. Every box returned lies inside the image.
+/// lies inside the image (left of its `reserved_right` columns), overlaps no label or leader line
+/// placed before, covers no other request's anchor and whose own leader (anchor to the box's
+/// nearest point) crosses no label placed before; where none is clear (crowded wells), the one
+/// with the fewest such conflicts, overlapping labels last. `obstacles`: boxes already drawn on the
+/// image (the frame's caption) that labels keep clear of as of each other. Every box returned lies
+/// inside the image.
 std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests, int width, int height,
-                                      float reserved_right = 0, float min_text_px = 0);
+                                      float reserved_right = 0, float min_text_px = 0,
+                                      const std::vector<PixelRect>& obstacles = {});
 
 /// A caption of the whole image (an animation frame's date and step): one line at its top-left
 /// corner with a margin, at label_text_scale, shrunk to fit left of `reserved_right` columns if it

@@ -154,6 +154,7 @@ struct RankScene {
                 model.load_seconds += first_load_s;
             }
             property = choose_property(model.grid, options, source.k0);
+            caption = step_caption(model, property.name, options.step);
             own_range = property.colour_range;
             if (options.range.empty()) own_values = own_active_values(model.grid, source, property.values(), slab);
             if (!own_values.empty()) {
@@ -221,6 +222,7 @@ struct RankScene {
     LoadedModel model;  ///< this rank's block with its halo: the cells `source`
     grid::IjkBox source;
     PropertyChoice property;
+    std::string caption;  ///< the frame's report step (step_caption), empty for a static property
     std::optional<grid::IjkBox> ijk_box;
     pipeline::ModelFrame frame;
     CutVolumeSet cut_volumes;
@@ -346,7 +348,8 @@ int render_frames(const RenderOptions& options, const distributed::MpiSession& m
     on_all_ranks(mpi, [&] {
         refuse_nothing_to_draw(options, primary_count, scene.property.name, scene.property.primary_range);
     });
-    const pipeline::FrameSettings settings = options.frame_settings();
+    pipeline::FrameSettings settings = options.frame_settings();
+    settings.caption = scene.caption;
     for (int i = 0; i < options.warmup; ++i) rank.render(settings, scene.camera);
     std::vector<pipeline::FrameTimes> runs;
     ExchangeTimes exchange;

@@ -206,15 +206,16 @@ int run_render(const RenderOptions& options) {
     PropertyChoice property = choose_property(model.grid, colouring_options(model.grid, options));
     const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
     const std::optional<SecondPropertySelection> selected_by = select_by_second_property(model.grid, options);
+    pipeline::FrameSettings settings = options.frame_settings();
+    settings.caption = step_caption(model, property.name, options.step);
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
     if (property.external) property.owned = *std::exchange(property.external, nullptr);
     model.grid.clear_properties();
     std::unique_ptr<gl::GlContext> context = gl::create_context(options.context_options());
     const gl::ShaderLibrary shaders(gl::ShaderLibrary::default_root());
     const auto setup_started = std::chrono::steady_clock::now();
-    // The corner depths live on the GPU once the geometry is built and nothing reads them on the
-    // CPU again: released there, before the selection, the render targets and the colouring are
-    // allocated, so the set-up's peak does not hold both.
+    // The corner depths live on the GPU once the geometry is built: released there, before the
+    // selection, the render targets and the colouring are allocated (the set-up's peak holds one).
     pipeline::CutawayRenderer renderer(shaders, model.grid, options.z_scale, options.width, options.height,
                                        [&model] { model.grid.release_corner_depths(); });
     check_view(renderer.frame(), options);
@@ -222,7 +223,7 @@ int run_render(const RenderOptions& options) {
     const CutVolumeSet cut_volumes =
         load_cut_volumes(options.cut_volumes, renderer.frame(), volume_wells, options.model_memory_limit_bytes());
     renderer.set_cut_volumes(cut_volumes.meshes);
-    const bool primaries = options.frame_settings().primaries;
+    const bool primaries = settings.primaries;
     const annotation::ColourBarLabel label = property.colour_bar_label(!selected_by && primaries);
     renderer.set_colouring(property.values(), label);
     select_primaries(renderer, primaries, property, selected_by, box);
@@ -236,7 +237,6 @@ int run_render(const RenderOptions& options) {
     const grid::PrimaryRange selected_range = selected_by ? selected_by->range : property.primary_range;
     refuse_nothing_to_draw(options, primary_count, selected_name, selected_range);
     if (primaries) warn_without_primaries(primary_count, selected_name, selected_range);
-    const pipeline::FrameSettings settings = options.frame_settings();
     const pipeline::Camera camera = frame_camera(renderer, settings, options);
     const std::vector<pipeline::FrameTimes> runs = timed_frames(renderer, settings, camera, options);
     const std::vector<std::string> frame_plan = renderer.status().last_plan.describe();  // before the metrics' frames
@@ -258,7 +258,8 @@ int run_render(const RenderOptions& options) {
     stats["gpu_memory_bytes"] = renderer.status().gpu_memory_bytes();
     stats["renderer_setup_s"] = setup_seconds;  // geometry built and uploaded, colouring and selection set
     stats["property"] = {{"name", property.label}, {"colour_range", {property.colour_range.min, property.colour_range.max}},
-                         {"colour_scale", property.log_scale ? "log" : "linear"}, {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}}};
+                         {"colour_scale", property.log_scale ? "log" : "linear"}, {"selected_by", selected_name}, {"primary_range", {selected_range.min, selected_range.max}},
+                         {"caption", settings.caption}};  // the report step drawn over the frame (empty: none)
     if (settings.colour_bar) stats["colour_bar_box"] = colour_bar_box(label, options);
     stats["configuration"] = options.describe();
     stats["configuration"]["cut_volumes"] = cut_volumes.describe();

@@ -8,6 +8,7 @@
 #include "eclipse/egrid_reader.h"
 #include "eclipse/init_reader.h"
 #include "eclipse/simulator_case.h"
+#include "eclipse/step_clock.h"
 #include "generators/generator.h"
 #include "generators/presets.h"
 #include "grid/grdecl_reader.h"
@@ -157,6 +158,14 @@ void hold_property(LoadedModel& model, const std::string& property, int time_ste
                                     std::to_string(steps.step_count() - 1) + " of " + steps.file().string() + " (" +
                                     std::to_string(steps.step_count()) + " steps)");
     eclipse::hold_report_step(model.grid, steps, restart_array(model, property), step);
+}
+
+std::string step_caption(const LoadedModel& model, const std::string& property, int time_step) {
+    const std::size_t steps = model.grid.step_count(property);
+    if (time_step < 0 || steps == 0) return {};
+    const auto& restart = model.report_steps ? model.report_steps : model.block_wells_restart;
+    const std::string date = restart ? eclipse::date_at(restart->steps(), time_step) : std::string();
+    return eclipse::step_caption(property, date, time_step, steps);
 }
 
 grid::GridDims model_dims(const std::vector<std::string>& model, std::size_t memory_limit_bytes) {

@@ -64,6 +64,10 @@ bool holds_time_step(const LoadedModel& model, const std::string& property, int 
 /// for a file that cannot be read.
 void hold_property(LoadedModel& model, const std::string& property, int time_step, std::size_t memory_limit_bytes);
 
+/// What a frame showing `property` at report step `time_step` writes over itself, as animate does:
+/// property, date (a simulator case's) and step; empty for a static property or no step (-1).
+std::string step_caption(const LoadedModel& model, const std::string& property, int time_step);
+
 /// The whole model's dimensions without loading it: a preset's, the files' SPECGRID/DIMENS
 /// (read no further), or a simulator case's GRIDHEAD.
 grid::GridDims model_dims(const std::vector<std::string>& model, std::size_t memory_limit_bytes);

@@ -257,7 +257,7 @@ void add_render_options(CLI::App& c, RenderOptions& o) {
 }
 
 annotation::ColourBarLabel PropertyChoice::colour_bar_label(bool mark_primary_range) const {
-    annotation::ColourBarLabel bar{label, colour_range.min, colour_range.max, annotation::property_unit(name, unit_system), log_scale};
+    annotation::ColourBarLabel bar{name, colour_range.min, colour_range.max, annotation::property_unit(name, unit_system), log_scale};
     bar.min_text_px = text_height_px;
     if (mark_primary_range) bar.primary_range = annotation::ColourBarLabel::Span{primary_range.min, primary_range.max};
     return bar;

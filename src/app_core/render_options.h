@@ -110,7 +110,7 @@ struct PropertyChoice {
     grid::PrimaryRange primary_range;
     std::string unit_system;          ///< the grid's (GridMetadata::unit_system), for the unit
     const std::vector<float>& values() const { return external ? *external : owned; }
-    /// The colour bar's title (the label), unit (by the property's keyword and unit system), colour
+    /// The colour bar's title (the name: a frame shows its step in its caption), unit (by the property's keyword and unit system), colour
     /// range and scale; `mark_primary_range`: with primary_range marked (when the primaries are chosen by it).
     annotation::ColourBarLabel colour_bar_label(bool mark_primary_range = false) const;
 };

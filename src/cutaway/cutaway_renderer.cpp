@@ -180,12 +180,16 @@ void CutawayRenderer::select_range(const grid::PrimaryRange& range, const std::o
         throw std::logic_error("primaries by range over 16-bit colouring values: set them with ValueStorage::float32");
     selection_.select_range(buffers_, range, box);
     selection_changed();
+    // At selection time, not in a frame: the centroid (the cone slope's reference) and the count
+    // (auto's choice) are sums the GPU reduces; the flags stay on the GPU unless a strategy reads them.
+    set_primary_centroid();
 }
 
 void CutawayRenderer::sync_selection_to_cpu() {
     if (selection_on_cpu_) return;
-    primary_flags_ = pipeline::primary_flags(layout_, buffers_.read_primary_bits(), grid_.cell_count());
-    set_primary_centroid();
+    const std::vector<std::uint32_t> bits = buffers_.read_primary_bits();
+    selection_readback_bytes_ += bits.size() * sizeof(std::uint32_t);
+    primary_flags_ = pipeline::primary_flags(layout_, bits, grid_.cell_count());
     selection_on_cpu_ = true;
 }
 
@@ -257,6 +261,7 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
     status.frozen = frozen_camera_.has_value();
     status.frames_redrawn = frames_redrawn_;
     status.cut_readback_bytes = cut_readback_bytes_;
+    status.selection_readback_bytes = selection_readback_bytes_;
     status.gpu_memory_by_part = {{"grid", buffers_.memory_bytes()},
                                  {"culling", visible_.memory_bytes()},
                                  {"selection", selection_.memory_bytes()},
@@ -373,7 +378,8 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
 FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& camera) {
     if (camera.width != width_ || camera.height != height_)
         throw std::invalid_argument("camera image size differs from the renderer's");
-    sync_selection_to_cpu();  // untimed: only after a new GPU selection
+    // Untimed, once per GPU selection, and only for a strategy that builds from the flags.
+    if (find_cut_surface(cut_strategy(s)).selection_on_cpu) sync_selection_to_cpu();
     last_plan_ = plan_frame(s, state_for(s));
     timer_.clear();
     cut_readback_bytes_ = 0;
@@ -460,12 +466,12 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
         return;
     case FramePass::well_labels:
         well_labels_.draw(post_.final_framebuffer, wells_.heads(), f.camera, colour_bar_reserved_width(f.settings),
-                          label_.min_text_px);
+                          label_.min_text_px, f.settings.caption);
         empty_vertex_array_.bind();
         return;
     case FramePass::caption:
-        frame_caption_.draw(post_.final_framebuffer, width_, height_, f.settings.caption,
-                            f.settings.colour_bar ? colour_bar_reserved_width(f.settings) : 0.0f, label_.min_text_px);
+        frame_caption_.draw(post_.final_framebuffer, width_, height_, f.settings.caption, colour_bar_reserved_width(f.settings),
+                            label_.min_text_px);
         empty_vertex_array_.bind();
         return;
     }

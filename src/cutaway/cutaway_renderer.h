@@ -136,6 +136,9 @@ struct RendererStatus {
     bool frozen = false;
     std::size_t frames_redrawn = 0;      ///< frames drawn twice because the culling's face buffer grew
     std::size_t cut_readback_bytes = 0;  ///< what the last frame's strategy read back (stats.json readback_bytes)
+    /// Bytes of GPU selections read back so far: only for a strategy that builds from the flags
+    /// (CutSurfaceEntry::selection_on_cpu) or the full secondary list (DrawMode::all), once per selection.
+    std::size_t selection_readback_bytes = 0;
     /// Bytes of GL buffers and textures by part: the grid (geometry, values, face lists), the visible
     /// path's culling, the primary selection, the plain frame's exposed surface (0 until drawn).
     std::vector<std::pair<std::string, std::size_t>> gpu_memory_by_part;
@@ -277,7 +280,7 @@ private:
     void draw_secondary_faces(DrawMode draw);
     const FaceBuffer& secondary_face_list();
     void selection_changed();
-    /// Reads the selection back to primary_flags_ and primary_centroid_ if a GPU selection changed it.
+    /// Reads the selection back to primary_flags_ if a GPU selection changed it.
     void sync_selection_to_cpu();
     /// primary_centroid_ from primary_flags_ (summed over renderers by the hooks, if set).
     void set_primary_centroid();
@@ -300,8 +303,8 @@ private:
     std::size_t frames_redrawn_ = 0;
     gl::Texture colour_map_;
     ColourBarLabel label_;
-    /// The selection on the CPU (frustum-clusters groups the flags; the walls' angle is exact at
-    /// the primaries' centroid), read back from the GPU at the first frame after select_range.
+    /// The selection on the CPU for frustum-clusters (it groups the flags) and the full secondary
+    /// list, read back from the GPU at the first frame that needs it after select_range.
     std::vector<std::uint8_t> primary_flags_;
     glm::vec3 primary_centroid_{0};                 ///< render space, mean of the primary cells' centres
     std::optional<glm::vec3> cone_reference_;       ///< set_cone_reference
@@ -309,6 +312,7 @@ private:
     const std::uint64_t auto_sweep_from_;            ///< auto_sweep_from_primaries of this context's GL_RENDERER
     bool selection_on_cpu_ = false;
     std::size_t cut_readback_bytes_ = 0;
+    std::size_t selection_readback_bytes_ = 0;  ///< RendererStatus::selection_readback_bytes
     std::uint64_t selection_generation_ = 0;  ///< counts selection changes
     std::size_t uploaded_bytes_ = 0;          ///< RendererStatus::uploaded_bytes
     CutTargets cut_;  ///< the strategy's depth; the surface stage 2 reads, resolved from it or from its mean-filtered copy

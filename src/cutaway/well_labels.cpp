@@ -9,15 +9,10 @@ namespace {
 
 std::uint8_t channel(float value) { return std::uint8_t(glm::clamp(value, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
-/// The point of `box` nearest to (x, y): where the leader line meets the label.
-glm::vec2 nearest_on(const annotation::PixelRect& box, float x, float y) {
-    return {std::clamp(x, box.x0, box.x1), std::clamp(y, box.y0, box.y1)};
-}
-
 }  // namespace
 
 std::vector<annotation::PlacedLabel> well_label_layout(const std::vector<WellHead>& heads, const Camera& camera,
-                                                       float reserved_right, float min_text_px) {
+                                                       float reserved_right, float min_text_px, const std::string& caption) {
     std::vector<annotation::LabelRequest> requests;
     for (const WellHead& head : heads) {
         const glm::vec4 clip = camera.view_projection() * glm::vec4(head.position, 1.0f);
@@ -25,19 +20,23 @@ std::vector<annotation::PlacedLabel> well_label_layout(const std::vector<WellHea
         const glm::vec2 ndc = clip.w > 0 ? glm::vec2(clip) / clip.w : glm::vec2(-2.0f);
         requests.push_back({head.name, (0.5f * ndc.x + 0.5f) * float(camera.width), (0.5f - 0.5f * ndc.y) * float(camera.height)});
     }
-    return annotation::place_labels(requests, camera.width, camera.height, reserved_right, min_text_px);
+    // The caption is placed as FrameCaption places it (the same reserved columns and text height).
+    std::vector<annotation::PixelRect> obstacles;
+    if (const auto box = annotation::place_caption(caption, camera.width, camera.height, reserved_right, min_text_px))
+        obstacles.push_back(box->box);
+    return annotation::place_labels(requests, camera.width, camera.height, reserved_right, min_text_px, obstacles);
 }
 
 void WellLabels::draw(const gl::Framebuffer& target, const std::vector<WellHead>& heads, const Camera& camera,
-                      float reserved_right, float min_text_px) {
+                      float reserved_right, float min_text_px, const std::string& caption) {
     const float scale = annotation::label_text_scale(camera.height, min_text_px);
-    for (const annotation::PlacedLabel& label : well_label_layout(heads, camera, reserved_right, min_text_px)) {
+    for (const annotation::PlacedLabel& label : well_label_layout(heads, camera, reserved_right, min_text_px, caption)) {
         // Text in the well's colour, darkened to read on the light box.
         const glm::vec3 ink = 0.75f * heads[label.request].colour;
         const Rgba8 text = {channel(ink.r), channel(ink.g), channel(ink.b), 255};
         const Rgba8 paper = {255, 255, 255, 210};
-        const glm::vec2 end = nearest_on(label.box, label.anchor_x, label.anchor_y);
-        batch_.add_segment(label.anchor_x, label.anchor_y, end.x, end.y, std::max(1.0f, 0.5f * scale), text);
+        const auto [end_x, end_y] = annotation::leader_end(label.box, label.anchor_x, label.anchor_y);
+        batch_.add_segment(label.anchor_x, label.anchor_y, end_x, end_y, std::max(1.0f, 0.5f * scale), text);
         batch_.add_rectangle(label.box, paper);
         batch_.add_text(label.line, text);
     }

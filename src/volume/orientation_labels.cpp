@@ -73,15 +73,40 @@ std::vector<AxisTick> edge_ticks(const ViewGeometry& view, int width, int height
     return ticks;
 }
 
+glm::vec3 box_corner(const ViewGeometry& view, int c) {
+    return {c & 1 ? view.box.x : 0.0f, c & 2 ? view.box.y : 0.0f, c & 4 ? view.box.z : 0.0f};
+}
+
+/// The end, lower on screen, of the left-most of the cube's four edges along `axis`: an edge of
+/// the cube's outline, so that its ticks and labels lie beside the data, not over it (the edge at
+/// the lowest corner, the other axes' choice, runs down the cube's front for the vertical axis).
+glm::vec3 left_edge_origin(const ViewGeometry& view, int axis, int width, int height) {
+    glm::vec3 best(0);
+    float best_x = 1e30f;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec3 a = box_corner(view, c);
+        if (a[axis] != 0.0f) continue;
+        glm::vec3 b = a;
+        b[axis] = view.box[axis];
+        const glm::vec2 pa = to_pixels(view, a, width, height), pb = to_pixels(view, b, width, height);
+        if (const float x = 0.5f * (pa.x + pb.x); x < best_x) {
+            best_x = x;
+            best = pa.y >= pb.y ? a : b;
+        }
+    }
+    return best;
+}
+
 }  // namespace
 
 std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, int height, float right_limit,
                                            float text_scale, const SurveyAxes& axes) {
-    // The corner lowest on screen: its edges run along the cube's visible bottom.
+    // The corner lowest on screen: its edges run along the cube's visible bottom (inline and
+    // crossline); time runs up the cube's left outline.
     glm::vec3 origin(0);
     float lowest = -1e30f;
     for (int c = 0; c < 8; ++c) {
-        const glm::vec3 corner{c & 1 ? view.box.x : 0.0f, c & 2 ? view.box.y : 0.0f, c & 4 ? view.box.z : 0.0f};
+        const glm::vec3 corner = box_corner(view, c);
         if (const float y = to_pixels(view, corner, width, height).y; y > lowest) {
             lowest = y;
             origin = corner;
@@ -90,12 +115,14 @@ std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, 
     const glm::vec2 centre = to_pixels(view, 0.5f * view.box, width, height);
     const SurveySpan spans[3] = {axes.time_ms, axes.crossline, axes.inline_number};  // voxel axes x, y, z
     const char* names[3] = {axes.time_ms.first != axes.time_ms.last ? "time (ms)" : "time", "crossline", "inline"};
+    const std::array<glm::vec3, 3> origins{left_edge_origin(view, 0, width, height), origin, origin};
     std::array<AxisEdge, 3> edges;
     for (int axis = 0; axis < 3; ++axis) {
-        glm::vec3 end = origin;
-        end[axis] = origin[axis] > 0 ? 0.0f : view.box[axis];
+        const glm::vec3 start = origins[std::size_t(axis)];
+        glm::vec3 end = start;
+        end[axis] = start[axis] > 0 ? 0.0f : view.box[axis];
         AxisEdge& edge = edges[std::size_t(axis)];
-        edge.from = to_pixels(view, origin, width, height);
+        edge.from = to_pixels(view, start, width, height);
         edge.to = to_pixels(view, end, width, height);
         // The label sits beyond the edge's far end, away from the cube's centre.
         glm::vec2 away = edge.to - centre;
@@ -111,8 +138,8 @@ std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, 
     std::vector<annotation::PixelRect> placed;
     for (const AxisEdge& edge : edges) placed.push_back(annotation::ink_box(edge.label));
     for (int axis = 0; axis < 3; ++axis)
-        edges[std::size_t(axis)].ticks = edge_ticks(view, width, height, right_limit, text_scale, axis, origin,
-                                                    spans[axis], centre, placed);
+        edges[std::size_t(axis)].ticks = edge_ticks(view, width, height, right_limit, text_scale, axis,
+                                                    origins[std::size_t(axis)], spans[axis], centre, placed);
     return edges;
 }
 

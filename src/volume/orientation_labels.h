@@ -1,5 +1,6 @@
 #pragma once
-// Which way the cube lies: its three edges from the corner lowest on screen, drawn as lines,
+// Which way the cube lies: inline and crossline along the edges from the corner lowest on screen,
+// time up the cube's left outline, drawn as lines,
 // labelled "inline", "crossline" and "time (ms)" at their far ends, with tick marks at round values
 // of the survey's numbers along them.
 #include <array>

@@ -18,6 +18,11 @@ string(JSON label GET "${stats}" property name)
 if(NOT label STREQUAL "SWAT step 5")
   message(FATAL_ERROR "render SPE1: property '${label}', expected 'SWAT step 5'")
 endif()
+# The frame says which step it shows, with the case's date, as animate's frames do.
+string(JSON caption GET "${stats}" property caption)
+if(NOT caption MATCHES "^SWAT  [0-9][0-9][0-9][0-9]-[0-9][0-9]-[0-9][0-9]  \\(step 5 of [0-9]+\\)$")
+  message(FATAL_ERROR "render SPE1: caption '${caption}', expected 'SWAT  YYYY-MM-DD  (step 5 of N)'")
+endif()
 
 # --step is the older name of --time-step.
 execute_process(COMMAND ${CUTAWAY} render ${spe9} --property SWAT --step 80 --range 0.5 1 --size 320 240

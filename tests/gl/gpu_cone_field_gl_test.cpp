@@ -18,6 +18,7 @@
 #include "cutaway/cut_surface/cut_surface_registry.h"
 #include "cutaway/cut_surface/gpu_cone_transform.h"
 #include "cutaway/renderer_readback.h"
+#include "grid/primary_selection.h"
 #include "gl_test_support.h"
 #include "metrics/cut_error.h"
 
@@ -98,6 +99,29 @@ TEST(GpuConeField, GpuStrategiesReadNothingBack) {
         // A CPU strategy reads the seed image back: one float per pixel.
         EXPECT_EQ(renderer->status().cut_readback_bytes, entry.device == "gpu" ? 0u : std::size_t(width) * height * sizeof(float));
     }
+}
+
+TEST(GpuConeField, AGpuSelectionIsReadBackOnlyForAStrategyThatBuildsFromItsFlags) {
+    // Issue 43: no read-back inside a frame unless the strategy needs the CPU. A range selection
+    // lives on the GPU; frames with a GPU strategy read none of it, frustum-clusters reads its
+    // bits once (one bit per active cell, in words), and a second frame reads nothing more.
+    auto renderer = make_renderer(petra(), width, height);
+    renderer->select({grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01)});
+    std::mt19937 random(5);
+    const Camera camera = pipeline::make_orbit_camera(renderer->frame(), random_pose(random), width, height);
+    pipeline::FrameSettings settings;
+    settings.ssao = false;
+    for (const char* gpu_only : {"frustum", "frustum-sweep", "jfa"}) {
+        settings.strategy = gpu_only;
+        renderer->render(settings, camera);
+        EXPECT_EQ(renderer->status().selection_readback_bytes, 0u) << gpu_only;
+    }
+    settings.strategy = "frustum-clusters";
+    renderer->render(settings, camera);
+    const std::size_t words = (std::size_t(petra().active_count()) + 31) / 32;
+    EXPECT_EQ(renderer->status().selection_readback_bytes, words * sizeof(std::uint32_t));
+    renderer->render(settings, camera);
+    EXPECT_EQ(renderer->status().selection_readback_bytes, words * sizeof(std::uint32_t)) << "read again for the same selection";
 }
 
 TEST(GpuConeField, ConeSlopeFallsAsTheApertureOpens) {

@@ -132,14 +132,21 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
         settings.camera = {40, 25, 0, settings.camera.fov_deg};
         settings.reserved_right_px = annotation::colour_bar_reserved_width(label, size, size);  // as `cutaway volume` sets it
         const ViewGeometry view = make_view(f3_.dims, settings);
-        // The framed cube stays clear of the bar: its 8 corners project left of it.
-        for (int c = 0; c < 8; ++c) {
+        const auto corner_x = [&](int c) {  // image column of the cube's corner c
             const glm::vec3 corner{c & 1 ? view.box.x : 0.0f, c & 2 ? view.box.y : 0.0f, c & 4 ? view.box.z : 0.0f};
             const glm::vec4 clip = view.voxel_to_clip * glm::vec4(corner, 1.0f);
-            EXPECT_LT((0.5f * clip.x / clip.w + 0.5f) * float(size), bar.bounds().x0) << "cube corner " << c << " under the bar";
-            EXPECT_GT(clip.x / clip.w, -1.0f) << "cube corner " << c << " left of the image";
+            return (0.5f * clip.x / clip.w + 0.5f) * float(size);
+        };
+        // The framed cube stays clear of the bar: its 8 corners project left of it.
+        for (int c = 0; c < 8; ++c) {
+            EXPECT_LT(corner_x(c), bar.bounds().x0) << "cube corner " << c << " under the bar";
+            EXPECT_GT(corner_x(c), 0.0f) << "cube corner " << c << " left of the image";
         }
         const std::array<AxisEdge, 3> edges = layout_orientation(view, size, size, bar.bounds().x0, bar.text_scale, f3_.axes);
+        // Time runs up the cube's left outline, its values beside the data, not over it: no corner
+        // of the cube projects left of that edge (half a pixel for rounding).
+        for (int c = 0; c < 8; ++c)
+            EXPECT_GE(corner_x(c), std::min(edges[0].from.x, edges[0].to.x) - 0.5f) << "cube corner " << c << " left of the time axis";
         const char* names[3] = {"time (ms)", "crossline", "inline"};
         const SurveySpan spans[3] = {f3_.axes.time_ms, f3_.axes.crossline, f3_.axes.inline_number};
         std::vector<annotation::PixelRect> labels;

@@ -81,6 +81,9 @@ struct CutSurfaceEntry {
     /// For a cone-field strategy: the CPU function computing the same cut from the same seeds and
     /// slope (itself, for one on the CPU), the reference tests compare with. Empty otherwise.
     ConeFieldCut cpu_reference = {};
+    /// Builds its cut from the primary flags on the CPU (frustum-clusters groups them into boxes):
+    /// the renderer reads a GPU selection back for it, once per selection. The others read nothing.
+    bool selection_on_cpu = false;
 };
 
 }  // namespace cutaway::pipeline

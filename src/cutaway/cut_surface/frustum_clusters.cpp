@@ -73,7 +73,9 @@ CutSurfaceEntry frustum_clusters_entry() {
     return {"frustum-clusters", "gpu",
             "one frustum per IJK box of adjacent primaries, drawn like the frustum union; the boxes are built on the "
             "CPU once per selection, nothing per frame",
-            [](const gl::ShaderLibrary& shaders) { return std::make_unique<FrustumClusters>(shaders); }};
+            [](const gl::ShaderLibrary& shaders) { return std::make_unique<FrustumClusters>(shaders); },
+            {},
+            true};
 }
 
 }  // namespace cutaway::pipeline
