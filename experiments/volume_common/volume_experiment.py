@@ -46,8 +46,8 @@ def gl_caster_name(context):
     llvmpipe the same shader runs on the CPU, so a plot must not call it a GPU."""
     renderer = str((context or {}).get("gl_renderer", ""))
     if "llvmpipe" in renderer:
-        return "GL caster (fragment shader on llvmpipe, a CPU)"
-    return "GPU caster (fragment shader" + (f", {renderer.split('/')[0]})" if renderer else ")")
+        return "GL caster on llvmpipe (a CPU)"
+    return "GPU caster" + (f" ({renderer.split('/')[0]})" if renderer else "")
 
 
 def frame_times_ms(stats, stages=("exit_points", "ray_cast")):

@@ -139,8 +139,11 @@ def report(exp, document):
         f"{proto['transfer_function']} transfer function, as Duan & Li's figure 8: {proto['trials']} timed trials of the "
         f"GPU caster{cpu_part} per cube after "
         f"{proto['warmup']} warm-up; a trial is the {proto['time']}.",
-        headline=f"{steps[0]['voxels']:,} to {steps[-1]['voxels']:,} voxels: GPU caster "
+        headline=f"{steps[0]['voxels']:,} to {steps[-1]['voxels']:,} voxels: {vx.gl_caster_name(document['context'])} "
                  f"{md.ms(medians[0])} to {md.ms(medians[-1])} ms (medians){ratios}")
+    if "llvmpipe" in str(document["context"].get("gl_renderer", "")):
+        result.text("Here the fragment-shader (\"GPU\") caster ran on llvmpipe, a software rasteriser on the CPU: the "
+                    "columns named GPU below are that GL caster (scripts/device-benchmarks.sh measures it on a lent GPU).")
     result.section("Per cube")
     header = ["step", "dims", "voxels", "GPU median ms", "GPU min-max ms", "GPU trimmed mean ms", "GPU samples / s (millions)"]
     if both:

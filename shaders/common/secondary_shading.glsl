@@ -25,8 +25,12 @@ SecondaryShade shade_secondary(CutSample here, vec3 world, ivec2 pixel, uint com
     bool inside_view = (face_info & 4u) != 0u;
     SecondaryShade s;
     s.normal = face_normal;
-    if (inside_view) s.normal = cut_normal_at(here.texel);  // a branch: only cut fill rebuilds it
-    if (inside_view && here.cut_depth == 0.0) s.normal = -face_normal;
+    if (inside_view) {  // a branch: only cut fill rebuilds the cut's normal
+        // Where the cut is clamped to the rear shell, a shell face seen from inside takes its own
+        // plane: the cut's normal there follows the shell's triangles, a shade per triangle.
+        bool rear_shell_face = here.cut_depth == 0.0 || ((face_info & 3u) == face_class_shell && cut_is_rear_shell(here.texel));
+        s.normal = rear_shell_face ? -face_normal : cut_normal_at(here.texel);
+    }
     s.colour = lit(cell_colour(compact_cell), s.normal, world);
     s.flags = inside_view ? flag_cut_fill : 0u;
     bool hide_lines = false;  // on the cut fill, with --hide-internal-lines

@@ -23,6 +23,7 @@
 #include "io/output_batch.h"
 #include "io/path_text.h"
 #include "annotation/colour_bar_layout.h"
+#include "volume/annotations.h"
 #include "volume/colour_bar.h"
 #include "volume/cpu_ray_caster.h"
 #include "volume/gpu_ray_caster.h"
@@ -146,6 +147,7 @@ nlohmann::json configuration_json(const VolumeOptions& o, const volume::Transfer
             {"block_size", s.block_size},
             {"colour_bar", s.colour_bar},
             {"reserved_right_px", s.reserved_right_px},
+            {"reserved_left_px", s.reserved_left_px},
             {"text_height_px", s.text_height_px},
             {"cpu_threads", threads},
             {"warmup", o.warmup},
@@ -301,12 +303,8 @@ int run_volume(VolumeOptions& o) {
     if (o.layer.empty()) tf.layer = volume::fitted_layer(tf.window);
     const volume::VolumeScene scene =
         volume::make_scene(levels, volume::build_transfer_table(tf), o.settings.block_size, tf.window);
-    // The cube is framed left of the colour bar it will carry (never more than half the width).
-    if (o.settings.colour_bar)
-        o.settings.reserved_right_px =
-            std::min(0.5f * float(o.settings.width),
-                     annotation::colour_bar_reserved_width(volume::colour_bar_label(scene, o.settings.text_height_px),
-                                                           o.settings.width, o.settings.height));
+    // The cube is framed between the colour bar it will carry and its time axis's values.
+    volume::reserve_annotation_room(o.settings, scene);
     const double prepare_ms = elapsed_ms(start);
 
     FrameRuns runs = o.caster == "gpu" ? run_gpu(scene, o) : run_cpu(scene, o);

@@ -11,4 +11,9 @@ namespace cutaway::volume {
 /// (orientation_labels.h), drawn into `image` (settings.width x settings.height).
 void draw_annotations(gl::RgbaImage& image, const VolumeScene& scene, const ViewGeometry& view, const RayCastSettings& settings);
 
+/// With settings.colour_bar, the columns the annotations take beside a framed cube: the colour
+/// bar's at the right (at most half the width) and the time axis's tick values at the left (at
+/// most a quarter), as `cutaway volume` sets them before casting.
+void reserve_annotation_room(RayCastSettings& settings, const VolumeScene& scene);
+
 }  // namespace cutaway::volume

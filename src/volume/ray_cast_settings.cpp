@@ -25,6 +25,8 @@ void validate(const RayCastSettings& s) {
     require(s.block_size >= 2 && s.block_size <= 64, "block_size", "2..64 voxels", s.block_size);
     require(s.reserved_right_px >= 0 && s.reserved_right_px <= 0.5f * float(s.width), "reserved_right_px",
             "0..width/2 pixels", s.reserved_right_px);
+    require(s.reserved_left_px >= 0 && s.reserved_left_px <= 0.25f * float(s.width), "reserved_left_px",
+            "0..width/4 pixels", s.reserved_left_px);
     require(s.text_height_px >= 0 && s.text_height_px <= 200, "text_height_px", "0..200 pixels", s.text_height_px);
 }
 

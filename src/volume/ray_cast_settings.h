@@ -33,6 +33,8 @@ struct RayCastSettings {
     /// Image columns at the right kept for the colour bar: a framed cube (distance 0) is fitted and
     /// centred left of them (0..width/2).
     float reserved_right_px = 0;
+    /// Image columns at the left kept for the time axis's values (0..width/4), as the right ones.
+    float reserved_left_px = 0;
     /// Capitals of the annotations' text (colour bar, axis labels) at least this tall, pixels
     /// (0: 2% of the image height; 0..200).
     float text_height_px = 0;

@@ -27,8 +27,8 @@ ViewGeometry make_view(const CubeDims& dims, const RayCastSettings& settings) {
     const double radius = glm::length(half_world);
     const double fov = glm::radians(settings.camera.fov_deg);
     const double aspect = double(settings.width) / settings.height;
-    // The cube's bounding sphere fits the image left of the reserved columns (the colour bar).
-    const double free_share = 1.0 - double(settings.reserved_right_px) / settings.width;
+    // The cube's bounding sphere fits the columns between the reserved ones (colour bar, time axis).
+    const double free_share = 1.0 - double(settings.reserved_right_px + settings.reserved_left_px) / settings.width;
     const double fit_fov = 2 * std::atan(std::tan(fov / 2) * std::min(1.0, aspect * free_share));
     view.distance = settings.camera.distance > 0 ? settings.camera.distance : 1.05 * radius / std::sin(fit_fov / 2);
     const double az = glm::radians(settings.camera.azimuth_deg), el = glm::radians(settings.camera.elevation_deg);
@@ -37,8 +37,9 @@ ViewGeometry make_view(const CubeDims& dims, const RayCastSettings& settings) {
     const float near_plane = float(std::max(0.01 * view.distance, view.distance - radius * 1.01));
     const float far_plane = float(view.distance + radius * 1.01);
     const glm::mat4 world_to_view = glm::lookAt(eye, glm::vec3(0), glm::vec3(0, 0, 1));
-    // Shifted so the cube's centre lands in the middle of the free columns (NDC x -reserved/width).
-    const glm::mat4 shift = glm::translate(glm::mat4(1.0f), glm::vec3(-float(1.0 - free_share), 0, 0));
+    // Shifted so the cube's centre lands in the middle of the free columns (NDC x (left - right) / width).
+    const glm::mat4 shift = glm::translate(
+        glm::mat4(1.0f), glm::vec3((settings.reserved_left_px - settings.reserved_right_px) / float(settings.width), 0, 0));
     const glm::mat4 projection = shift * glm::perspective(float(fov), float(aspect), near_plane, far_plane);
     view.voxel_to_clip = projection * world_to_view * view.voxel_to_world;
     view.clip_to_voxel = glm::inverse(view.voxel_to_clip);

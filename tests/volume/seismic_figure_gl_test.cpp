@@ -14,6 +14,7 @@
 #include "annotation/text_glyphs.h"
 #include "gl/gl_context.h"
 #include "gl/shader_library.h"
+#include "volume/annotations.h"
 #include "volume/colour_bar.h"
 #include "volume/gpu_ray_caster.h"
 #include "volume/level_window.h"
@@ -111,12 +112,12 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
     tf.window = percentile_window(f3_);
     const VolumeScene scene = make_scene(f3_, build_transfer_table(tf), 8, tf.window);
     // The tests' frame, a figure's (where every axis has room for two values at least), and the
-    // figure with text printing at 7 pt two across a page (experiments/volume_renders: 18 px
-    // capitals at 640 px; one value per axis at least).
+    // figure with text printing at 7 pt two across a page (experiments/volume_renders: 29 px
+    // capitals at 1024 px, 18 at 640; one value per axis at least).
     const struct {
         int size;
         float text_px;
-    } frames[] = {{side, 0}, {640, 0}, {640, 18}};
+    } frames[] = {{side, 0}, {640, 0}, {640, 18}, {1024, 29}};
     for (const auto [size, text_px] : frames) {
         SCOPED_TRACE(std::to_string(size) + " px, text " + std::to_string(text_px));
         const annotation::ColourBarLabel label = colour_bar_label(scene, text_px);
@@ -130,7 +131,8 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
         RayCastSettings settings;
         settings.width = settings.height = size;
         settings.camera = {40, 25, 0, settings.camera.fov_deg};
-        settings.reserved_right_px = annotation::colour_bar_reserved_width(label, size, size);  // as `cutaway volume` sets it
+        reserve_annotation_room(settings, scene);  // as `cutaway volume` does
+        EXPECT_GT(settings.reserved_left_px, 0.0f);
         const ViewGeometry view = make_view(f3_.dims, settings);
         const auto corner_x = [&](int c) {  // image column of the cube's corner c
             const glm::vec3 corner{c & 1 ? view.box.x : 0.0f, c & 2 ? view.box.y : 0.0f, c & 4 ? view.box.z : 0.0f};
@@ -147,6 +149,11 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
         // of the cube projects left of that edge (half a pixel for rounding).
         for (int c = 0; c < 8; ++c)
             EXPECT_GE(corner_x(c), std::min(edges[0].from.x, edges[0].to.x) - 0.5f) << "cube corner " << c << " left of the time axis";
+        // ... with room for its values beside it: none falls off the image's left edge (a
+        // 1024 px synthetic render lost "250" there before the left columns were reserved).
+        if (size >= 640) {
+            EXPECT_GE(edges[0].ticks.size(), 3u) << "time values beside the cube";
+        }
         const char* names[3] = {"time (ms)", "crossline", "inline"};
         const SurveySpan spans[3] = {f3_.axes.time_ms, f3_.axes.crossline, f3_.axes.inline_number};
         std::vector<annotation::PixelRect> labels;
