@@ -147,12 +147,12 @@ def waterflood(exp, config, scratch):
     rows, numbers = [], []
     for k in steps:
         image = os.path.join(scratch, f"flood_{k}.png")
+        # The step and date in the panel's title, not over the frame, where the producers' labels go.
         options = [*VIEW, "--property", "SWAT", "--time-step", k, "--colour-range", *colour_range, "--wells", "all",
-                   "--primaries", "none", "--cut-volume", cut]
+                   "--primaries", "none", "--cut-volume", cut, "--no-caption"]
         stats = exp.render(case, *options, "--size", *size, "--text-height", text_px, image=image)
         date = report_steps[k]["date"]
-        # The date and step are in the frame's own caption; the title gives the time since the start.
-        rows.append((f"after {report_steps[k]['elapsed_days'] / 365.25:.1f} years of injection", image))
+        rows.append((f"step {k}, {date}: {report_steps[k]['elapsed_days'] / 365.25:.1f} years of injection", image))
         numbers.append({"step": k, "date": date, "elapsed_days": report_steps[k]["elapsed_days"],
                         "options": [str(o) for o in options], "stages_ms": stats["stages_ms"]})
         print(f"  waterflood step {k} ({date}): {stats['stages_ms']['total']:.0f} ms")

@@ -393,7 +393,7 @@ int animate(const AnimateOptions& options) {
     const std::size_t frame_count = timeline.frame_count();
     ProgressBar progress("cutaway animate", frame_count, "frames");
     FrameLoop loop(options, renderer, settings, label, step_wells, encoder, frame_count, timeline.first_step, coherence, ranges);
-    if (options.caption) loop.caption_with(model.report_steps ? model.report_steps->steps() : std::vector<eclipse::ReportStep>(),
+    if (options.scene.caption) loop.caption_with(model.report_steps ? model.report_steps->steps() : std::vector<eclipse::ReportStep>(),
                                            source.step_count());
     json frames = json::array();
     const auto frames_started = std::chrono::steady_clock::now();

@@ -56,7 +56,7 @@ void add_animate_options(CLI::App& c, AnimateOptions& o) {
     c.add_option("--orbit", o.orbit_deg, "azimuth the camera turns over the whole animation, degrees")
         ->check(finite_in(-3600, 3600, "degrees"));
     c.add_option("--frames", o.frames_dir, "also write each frame as DIR/frame_NNNNN.png")->check(frames_directory());
-    c.add_flag("!--no-caption", o.caption, "leave the date and report step out of the frames (drawn at their top left)");
+    add_caption_option(c, o.scene);
     c.add_flag("!--no-metrics", o.metrics, "skip primary_exposure (one extra untimed frame each) and cut_flicker");
     c.add_flag("--time-against-render", o.time_against_render,
                "draw every frame a second time as render does (no upload, read-back or encoding), timed: "
@@ -74,7 +74,6 @@ nlohmann::json describe(const AnimateOptions& o) {
     configuration["orbit_deg"] = o.orbit_deg;
     configuration["frames_dir"] = o.frames_dir;
     configuration["metrics"] = o.metrics;
-    configuration["caption"] = o.caption;
     configuration["crf"] = o.crf;
     configuration["time_against_render"] = o.time_against_render;
     return configuration;

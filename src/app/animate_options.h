@@ -26,7 +26,6 @@ struct AnimateOptions {
     double orbit_deg = 0;            ///< azimuth turned over the whole animation, degrees
     std::string frames_dir;          ///< PNG frames (empty: none)
     bool metrics = true;             ///< primary_exposure and cut_flicker per frame
-    bool caption = true;             ///< the date and report step drawn at each frame's top left
     int crf = 20;                    ///< x264 constant rate factor
     bool time_against_render = false;  ///< draw each frame again as `render` does, timed (render_ms)
 };

@@ -154,7 +154,7 @@ struct RankScene {
                 model.load_seconds += first_load_s;
             }
             property = choose_property(model.grid, options, source.k0);
-            caption = step_caption(model, property.name, options.step);
+            if (options.caption) caption = step_caption(model, property.name, options.step);
             own_range = property.colour_range;
             if (options.range.empty()) own_values = own_active_values(model.grid, source, property.values(), slab);
             if (!own_values.empty()) {

@@ -207,7 +207,7 @@ int run_render(const RenderOptions& options) {
     const std::optional<grid::IjkBox> box = choose_primary_range(model.grid, property, options);
     const std::optional<SecondPropertySelection> selected_by = select_by_second_property(model.grid, options);
     pipeline::FrameSettings settings = options.frame_settings();
-    settings.caption = step_caption(model, property.name, options.step);
+    if (options.caption) settings.caption = step_caption(model, property.name, options.step);
     // One frame needs one array: keep it, drop the others (36 bytes per cell for a generated model).
     if (property.external) property.owned = *std::exchange(property.external, nullptr);
     model.grid.clear_properties();

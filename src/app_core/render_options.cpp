@@ -101,7 +101,7 @@ pipeline::FrameSettings RenderOptions::frame_settings() const {
 nlohmann::json RenderOptions::describe() const {
     const pipeline::FrameSettings s = frame_settings();
     nlohmann::json description = {{"model", model}, {"property", property}, {"range", range}, {"colour_range", colour_range},
-            {"primary_fraction", primary_fraction}, {"step", step}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"stage2_passes", pipeline::to_string(s.stage2_passes)}, {"seeds", pipeline::to_string(s.seeds)},
+            {"primary_fraction", primary_fraction}, {"step", step}, {"caption", caption}, {"ijk_box", ijk_box}, {"select_by", select_by}, {"strategy", s.strategy}, {"draw", pipeline::to_string(s.draw)}, {"stage2_passes", pipeline::to_string(s.stage2_passes)}, {"seeds", pipeline::to_string(s.seeds)},
             {"aperture_deg", {s.aperture_h_deg, s.aperture_v_deg}}, {"back_margin", s.back_margin},
             {"border", pipeline::to_string(s.border)}, {"border_width_px", s.border_width_px},
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
@@ -230,8 +230,13 @@ void add_scene_options(CLI::App& c, RenderOptions& o) {
     });
 }
 
+void add_caption_option(CLI::App& c, RenderOptions& o) {
+    c.add_flag("!--no-caption", o.caption, "leave a dynamic property's date and report step out of the frame (drawn at its top left)");
+}
+
 void add_render_options(CLI::App& c, RenderOptions& o) {
     add_scene_options(c, o);
+    add_caption_option(c, o);
     c.add_option("--out", o.out, "output PNG")->required()->check(writable_output());
     c.add_option("--stats", o.stats, "write stage times, metrics and configuration as JSON")->check(writable_output());
     c.add_option("--cell-ids", o.cell_ids,

@@ -33,6 +33,7 @@ struct RenderOptions {
     std::vector<float> colour_range;  ///< --colour-range LO HI (empty: from the values shown)
     double primary_fraction = 0;      ///< 0: --range or the default 1%
     int step = -1;                    ///< --time-step: report step of a dynamic property (-1: none given)
+    bool caption = true;              ///< a dynamic property's date and report step over the frame (--no-caption)
     std::vector<int> ijk_box;         ///< I0 J0 K0 I1 J1 K1
     std::string select_by;            ///< render only: primaries by this property, colours by `property`
     pipeline::FrameSettings settings;
@@ -95,6 +96,8 @@ void add_frame_options(CLI::App& command, RenderOptions& options);
 /// The model, selection and frame options plus camera, size, z-scale and memory limit: what
 /// `cutaway render` and `cutaway view` share. Parsed values land in `options` (finalised by a callback).
 void add_scene_options(CLI::App& command, RenderOptions& options);
+/// --no-caption: the headless frames (`render`, `animate`) without their date and report step.
+void add_caption_option(CLI::App& command, RenderOptions& options);
 /// add_scene_options plus the headless run's outputs and repetitions (`cutaway render`).
 void add_render_options(CLI::App& command, RenderOptions& options);
 

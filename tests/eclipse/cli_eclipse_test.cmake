@@ -23,6 +23,14 @@ string(JSON caption GET "${stats}" property caption)
 if(NOT caption MATCHES "^SWAT  [0-9][0-9][0-9][0-9]-[0-9][0-9]-[0-9][0-9]  \\(step 5 of [0-9]+\\)$")
   message(FATAL_ERROR "render SPE1: caption '${caption}', expected 'SWAT  YYYY-MM-DD  (step 5 of N)'")
 endif()
+execute_process(COMMAND ${CUTAWAY} render ${spe1}.EGRID --property SWAT --time-step 5 --range 0.5 1 --size 320 240
+                        --no-caption --out ${OUT}/spe1_plain.png --stats ${OUT}/spe1_plain.json
+                RESULT_VARIABLE rc ERROR_VARIABLE err)
+file(READ ${OUT}/spe1_plain.json stats)
+string(JSON caption GET "${stats}" property caption)
+if(NOT rc EQUAL 0 OR NOT caption STREQUAL "")
+  message(FATAL_ERROR "render SPE1 --no-caption (${rc}): caption '${caption}', expected none; ${err}")
+endif()
 
 # --step is the older name of --time-step.
 execute_process(COMMAND ${CUTAWAY} render ${spe9} --property SWAT --step 80 --range 0.5 1 --size 320 240
