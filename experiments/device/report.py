@@ -9,7 +9,7 @@ render stats, scale.jsonl, context.txt, device.log, the GL test log, the rendere
 results/device-<gpu>/ and writes its README.md: the paper's Table 1 on that GPU (experiments/table1's
 protocol), the main job's frame against the plain frame and against drawing every face (the
 paper's path), GPU jump flooding against the CPU path it replaced, stage 1 of every cut strategy
-per model and primary fraction (with a plot), one frame per model from 1M to 100M cells with wall
+per model and primary fraction (with a plot, also drawn as paper_figures/cut_strategies_time_<gpu>.png), one frame per model from 1M to 100M cells with wall
 time and memory, stage times fenced beside the GL timer queries, the seismic ray casters
 (bench_volume, Duan & Li's figures 7 and 8), and the GL tests' summary. Every ratio is between two
 configurations of the same call on the same GPU. Measures nothing itself.
@@ -388,7 +388,11 @@ def main():
     if "bench_cut_strategies.json" in documents:
         lines += cut_strategies_section(documents["bench_cut_strategies.json"])
         plot_cut_strategies(documents["bench_cut_strategies.json"], gpu, os.path.join(out, "cut_strategies.png"))
-        lines += ["![stage 1 per strategy against primary cells](cut_strategies.png)", ""]
+        # The gallery's GPU timing figure beside its llvmpipe one (cut_strategies_time.png), named by its GPU.
+        gallery = os.path.join(cx.REPO, "paper_figures", f"cut_strategies_time_{os.path.basename(out)[len('device-'):]}.png")
+        plot_cut_strategies(documents["bench_cut_strategies.json"], gpu, gallery)
+        lines += ["![stage 1 per strategy against primary cells](cut_strategies.png)", "",
+                  f"The same plot is in the gallery as `paper_figures/{os.path.basename(gallery)}`.", ""]
     if "scale.jsonl" in files:
         lines += scale_section(files["scale.jsonl"])
     if "orbit_petra_720p.jsonl" in files:
