@@ -170,8 +170,9 @@ def measure(exp):
         layout = compose.compose([panel_rows], "Cut volumes alone (--primaries none), one of each kind, "
                                  f"preset:{config['panel_preset']}", exp.path("cut_volumes.png"))
         flood_rows, flood = waterflood(exp, config, scratch)
-        flood_layout = compose.compose([flood_rows], f"Waterflood of the generated {config['flood_preset']} deck: SWAT "
-                                       f"inside a cut around {INJECTOR} ({flood['cut']})", exp.path("wells_waterflood.png"))
+        radius = float(flood["cut"].split(",")[1])  # well:NAME,R (the spec itself is in the report)
+        flood_layout = compose.compose([flood_rows], f"Waterflood of the generated {config['flood_preset']} deck (OPM Flow): "
+                                       f"SWAT inside a {radius:.0f} m cut around {INJECTOR}", exp.path("wells_waterflood.png"))
     return {"experiment": "cut_volumes", "quick": exp.quick, "configuration": config, "targets": TARGETS,
             "cost": rows, "bench_context": bench_context, "panels": panels, "panels_layout": layout,
             "waterflood": {**flood, "layout": flood_layout},

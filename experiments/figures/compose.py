@@ -74,8 +74,8 @@ def zoom_window(images):
 
 def difference_image(image, reference, colour_bar_box=None):
     """`image` faded to grey, with the pixels where it differs from `reference` (the threshold
-    zoom_window uses) in red; and the share of the model's pixels (non-white in either, outside
-    the colour bar's box x0, y0, x1, y1) that differ."""
+    zoom_window uses) in red, the colour bar's box x0, y0, x1, y1 blanked; and the share of the
+    model's pixels (non-white in either, outside that box) that differ."""
     differs = np.abs(image - reference).max(axis=2) > 24 / 255
     model = (image.min(axis=2) < 250 / 255) | (reference.min(axis=2) < 250 / 255)
     if colour_bar_box:
@@ -83,6 +83,8 @@ def difference_image(image, reference, colour_bar_box=None):
         model[y0:y1 + 1, x0:x1 + 1] = False
     grey = 0.35 + 0.65 * image.mean(axis=2, keepdims=True) * np.ones((1, 1, 3))
     grey[differs] = (0.85, 0.0, 0.0)
+    if colour_bar_box:  # a greyed colour bar decodes nothing: left out of the difference map
+        grey[y0:y1 + 1, x0:x1 + 1] = 1.0
     return grey, float((differs & model).sum() / max(model.sum(), 1))
 
 

@@ -23,9 +23,10 @@ TWO_PROPERTIES_PORO = (0.30, 0.40)
 FRONT_RANGE = (0.5, 1.0)  # fig. 11's primaries: SWAT behind the waterflood's front
 
 
-def figure_specs(model, steps, swat_range):
+def figure_specs(model, steps, swat_range, grid_size):
     """Figures for `model` (preset:NAME); `steps`: SWAT time steps shown in figure 11, all coloured
-    over `swat_range` (LO, HI) so one colour means one saturation in every panel."""
+    over `swat_range` (LO, HI) so one colour means one saturation in every panel; `grid_size`: the
+    panels of figure 8's three rows (at the figure size it printed 241 mm tall at 182 mm wide)."""
     return [
         {"name": "fig07_borders", "title": "Fig. 7: threshold vs ray-cast border lines", "metrics": True, "zoom": True,
          "camera": LINES_VIEW,
@@ -35,7 +36,7 @@ def figure_specs(model, steps, swat_range):
         # radius drops by one texel at most on a framed model). The difference row shows where they
         # differ in place of a zoom row (both made the figure too tall to print on one page).
         {"name": "fig08_mean_filter", "title": "Fig. 8: mean-filter kernels on the cut surface, 33x33 (cost: primary exposure)",
-         "metrics": True, "caption_number": "primary_exposure", "difference_to": 1,
+         "metrics": True, "caption_number": "primary_exposure", "difference_to": 1, "size": grid_size,
          "panels": [("no mean filter", ["--mean-filter", 0])] +
                    [(f"{kernel} kernel", ["--mean-filter", 33, "--mean-filter-kernel", kernel])
                     for kernel in ("full", "sampled", "distance-scaled")]},
@@ -48,7 +49,8 @@ def figure_specs(model, steps, swat_range):
         # One primary range for every step (the swept zone behind the flood front, SWAT 0.5-1), as
         # a reservoir engineer tracks a front: a top fraction taken anew at each step selects the
         # same number of cells whatever the water did.
-        {"name": "fig11_aperture180_steps", "title": "Fig. 11: aperture 180 degrees over SWAT time steps, primaries SWAT 0.5-1",
+        {"name": "fig11_aperture180_steps",
+         "title": f"Fig. 11: aperture 180 degrees over SWAT time steps ({model[7:]}), primaries SWAT 0.5-1",
          "panels": [(f"SWAT step {s}", ["--aperture-180", "--property", "SWAT", "--step", s, "--range", *FRONT_RANGE,
                                         "--colour-range", *swat_range])
                     for s in steps]},
@@ -60,7 +62,8 @@ def figure_specs(model, steps, swat_range):
     ]
 
 
-MODEL_PROPERTIES = ("PORO", "PERMX", "NTG", "SWAT")  # fig. 14's rows (sapphire has no FACIES)
+MODEL_PROPERTIES = ("PORO", "PERMX", "NTG", "SWAT")
+COUNT_WORDS = {1: "one", 2: "two", 3: "three", 4: "four"}  # fig. 14's rows (sapphire has no FACIES)
 
 
 def models_figure(presets, size, row_options):
@@ -85,7 +88,8 @@ def models_figure(presets, size, row_options):
                  for view in (CAMERA, SECOND_VIEW)])
     models = sorted(set(presets), key=presets.index)
     return {"name": "fig14_models",
-            "title": f"Fig. 14: the {len(models)} synthetic models ({', '.join(models)}) with properties; last row: two properties",
+            "title": f"Fig. 14: the {COUNT_WORDS.get(len(models), len(models))} synthetic models ({', '.join(models)}) with "
+                     "properties; last row: two properties",
             "rows": rows, "size": size}
 
 

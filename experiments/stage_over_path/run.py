@@ -42,8 +42,9 @@ def measure(exp):
 
 
 def plot(exp, result):
-    """The camera path on top (azimuth and aperture on their own axes), then one panel of stage
-    times per model; one legend below the panels, clear of every curve."""
+    """The camera path on top (azimuth and aperture on twin axes), then one panel of stage times
+    per model in a grid of two columns; one legend below the panels, clear of every curve. Printed
+    at 182 mm wide it stays within a page (six stacked panels printed 264 mm tall)."""
     path = exp.path("stage_over_path.png")
     plt = cx.pyplot()
     camera = [tuple(float(v) for v in pose.split("/")) for pose in result["camera_path_az_el_aperture_deg"]]
@@ -51,24 +52,31 @@ def plot(exp, result):
     full = result.get("aperture") == "full opening angle"
     apertures = [c[2] if full else 2 * c[2] for c in camera]
     models = result["models"]
-    fig, axes = plt.subplots(len(models) + 2, 1, figsize=(cx.PLOT_WIDTH_IN, 2.4 + 2.0 * len(models)), sharex=True,
-                             squeeze=False, gridspec_kw={"height_ratios": [0.55, 0.55] + [1] * len(models)})
-    axes = axes[:, 0]
+    rows = (len(models) + 1) // 2
+    fig = plt.figure(figsize=(cx.PLOT_WIDTH_IN, 2.6 + 2.3 * rows))
+    grid = fig.add_gridspec(rows + 1, 2, height_ratios=[0.7] + [1] * rows)
     poses = list(range(len(camera)))
     elevations = "/".join(f"{e:g}" for e in dict.fromkeys(c[1] for c in camera))
-    axes[0].plot(poses, [c[0] for c in camera], marker="s", color="tab:blue")
-    axes[0].set_ylabel("azimuth\n(deg)")
-    axes[1].plot(poses, apertures, marker="^", color="tab:red")
-    axes[1].set_ylabel("full aperture\n(deg)")
-    for ax, (preset, rows) in zip(axes[2:], models.items()):
-        cx.plot_stages(ax, [r["pose"] for r in rows], [r["stages_ms"] for r in rows])
-        ax.set_ylabel("time (ms)")
-        ax.set_title(f"{preset} ({int(rows[0]['cells']):,} cells, {int(rows[0]['primary_cells'])} primaries)")
-    axes[-1].set_xlabel("camera pose along the path: azimuth and aperture rise together,\n"
-                        "so this path cannot tell their effects apart")
-    fig.legend(*axes[2].get_legend_handles_labels(), ncol=3, loc="lower center", frameon=False)
-    fig.suptitle(f"Stage times over the camera path (top: azimuth and aperture; elevation alternating {elevations} deg),\n"
-                 f"{result['size']} px, frustum cut, on {cx.device_label(result['context'])}")
+    top = fig.add_subplot(grid[0, :])
+    top.plot(poses, [c[0] for c in camera], marker="s", color="tab:blue")
+    top.set_ylabel("azimuth (deg)", color="tab:blue")
+    twin = top.twinx()
+    twin.plot(poses, apertures, marker="^", color="tab:red")
+    twin.set_ylabel("full aperture (deg)", color="tab:red")
+    top.set_xlabel("camera pose along the path")
+    axes = []
+    for index, (preset, rows_of_model) in enumerate(models.items()):
+        ax = fig.add_subplot(grid[1 + index // 2, index % 2], sharex=top)
+        cx.plot_stages(ax, [r["pose"] for r in rows_of_model], [r["stages_ms"] for r in rows_of_model])
+        if index % 2 == 0:
+            ax.set_ylabel("time (ms)")
+        ax.set_title(f"{preset} ({int(rows_of_model[0]['cells']):,} cells, {int(rows_of_model[0]['primary_cells'])} primaries)")
+        axes.append(ax)
+    for ax in axes[-2:]:
+        ax.set_xlabel("pose (azimuth and aperture\nrise together: not separable)")
+    fig.legend(*axes[0].get_legend_handles_labels(), ncol=4, loc="lower center", frameon=False)
+    fig.suptitle(f"Stage times over the camera path (elevation alternating {elevations} deg), {result['size']} px, "
+                 f"frustum cut,\non {cx.device_label(result['context'])}")
     cx.save_figure(fig, path)
     plt.close(fig)
 

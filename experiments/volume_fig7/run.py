@@ -86,7 +86,7 @@ def plot(exp, document):
         ax.plot(azimuths, [e[caster]["trimmed_mean_ms"] for e in eyes], marker=marker, color=colour,
                 label=f"{name}: mean {summary[caster]['mean_ms']:.1f} ms")
         ax.axhline(PAPER[f"{caster}_ms"]["mean"], linestyle=paper_style, color=colour, linewidth=1.2,
-                   label=f"Duan & Li's {caster.upper()} caster: mean {PAPER[caster + '_ms']['mean']:g} ms")
+                   label=f"Duan & Li's {caster.upper()} caster (published, their machine): {PAPER[caster + '_ms']['mean']:g} ms")
     ax.set_yscale("log")
     lowest = min([PAPER["gpu_ms"]["mean"]] + [e[c]["trimmed_mean_ms"] for e in eyes for c in ("gpu", "cpu")])
     ax.set_ylim(bottom=10 ** math.floor(math.log10(lowest)))  # a labelled decade below every line
@@ -94,7 +94,7 @@ def plot(exp, document):
     ax.set_ylabel("time per frame (ms, log scale)")
     fig.suptitle(f"Fig. 7: ray casting {'20x20x40' if quick else '101x101x250'} samples into {size}x{size} px\n"
                  f"on {cx.device_label(document['context'])}")
-    fig.legend(*ax.get_legend_handles_labels(), ncol=2, loc="lower center", frameon=False)
+    fig.legend(*ax.get_legend_handles_labels(), ncol=1, loc="lower center", frameon=False)
     cx.save_figure(fig, figure_path)
     plt.close(fig)
 

@@ -139,7 +139,8 @@ struct RankScene {
         mpi.sum(active_per_layer);
         grid::PrimaryRange own_range;
         // The rank's own active values (for --primary-fraction) and their true extremes: the top
-        // fraction reaches the largest value, beyond the colour range's percentile.
+        // fraction reaches the largest value, beyond the colour range's percentile, and the colour
+        // range widens to hold the primaries within them.
         std::vector<float> own_values;
         grid::PrimaryRange own_extremes{std::numeric_limits<float>::max(), std::numeric_limits<float>::lowest()};
         on_all_ranks(mpi, [&] {
@@ -156,7 +157,7 @@ struct RankScene {
             property = choose_property(model.grid, options, source.k0);
             if (options.caption) caption = step_caption(model, property.name, options.step);
             own_range = property.colour_range;
-            if (options.range.empty()) own_values = own_active_values(model.grid, source, property.values(), slab);
+            own_values = own_active_values(model.grid, source, property.values(), slab);
             if (!own_values.empty()) {
                 const auto [low, high] = std::minmax_element(own_values.begin(), own_values.end());
                 own_extremes = {*low, *high};
@@ -172,11 +173,13 @@ struct RankScene {
             frame = distributed::global_model_frame(mpi, part, bounds, options.z_scale);
             property.colour_range = distributed::global_value_range(mpi, own_range);
             wells = distributed_wells(mpi, chosen_wells, model, source, bounds, options.well_radius);
-            property.primary_range = options.range.empty()
-                                         ? distributed::global_range_for_fraction(
-                                               mpi, own_values, primary_fraction(options),
-                                               distributed::global_value_range(mpi, own_extremes).max)
-                                         : grid::PrimaryRange{options.range[0], options.range[1]};
+            const grid::PrimaryRange extremes = distributed::global_value_range(mpi, own_extremes);
+            property.primary_range = options.range.empty() ? distributed::global_range_for_fraction(
+                                                                 mpi, own_values, primary_fraction(options), extremes.max)
+                                                           : grid::PrimaryRange{options.range[0], options.range[1]};
+            if (options.colour_range.empty() && options.frame_settings().primaries)  // as choose_primary_range
+                property.colour_range =
+                    colour_range_holding(property.colour_range, property.primary_range, extremes, property.log_scale);
         });
         on_all_ranks(mpi, [&] {
             check_view(frame, options);

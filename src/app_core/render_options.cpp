@@ -333,6 +333,15 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
     return choice;
 }
 
+grid::PrimaryRange colour_range_holding(grid::PrimaryRange colour, const grid::PrimaryRange& primary,
+                                        const grid::PrimaryRange& extremes, bool log_scale) {
+    const float low = std::max(primary.min, extremes.min), high = std::min(primary.max, extremes.max);
+    if (!(low <= high)) return colour;  // no value in the primary range: nothing to show in its colours
+    if (!log_scale || low > 0) colour.min = std::min(colour.min, low);
+    colour.max = std::max(colour.max, high);
+    return colour;
+}
+
 std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
                                                  const RenderOptions& options) {
     std::optional<grid::IjkBox> box = selection_box(options, grid.dims());
@@ -340,6 +349,11 @@ std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& gr
         property.primary_range = {options.range[0], options.range[1]};
     else
         property.primary_range = grid::range_for_fraction(grid, property.values(), property.name, primary_fraction(options));
+    // Only where the range picks the primaries (not --select-by's property, not --primaries none).
+    if (options.colour_range.empty() && options.select_by.empty() && options.frame_settings().primaries)
+        property.colour_range = colour_range_holding(property.colour_range, property.primary_range,
+                                                     grid::active_value_range(grid, property.values(), property.name),
+                                                     property.log_scale);
     return box;
 }
 

@@ -123,8 +123,16 @@ struct PropertyChoice {
 /// colouring of a model without properties.
 PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOptions& options, int first_layer = 0);
 
-/// Sets property.primary_range from --range (or --primary-fraction) and returns the --ijk-box,
-/// if any: the selection the renderer makes on the GPU (CutawayRenderer::select).
+/// The colour range `colour` (the values' percentiles) widened to hold `primary` within the
+/// values' `extremes`, so that primaries coloured by the property that selects them keep their
+/// values' colours (a top 1% lies beyond the 98th percentile, all in the bar's end colour); on a
+/// log scale the low end stays above 0.
+grid::PrimaryRange colour_range_holding(grid::PrimaryRange colour, const grid::PrimaryRange& primary,
+                                        const grid::PrimaryRange& extremes, bool log_scale);
+/// Sets property.primary_range from --range (or --primary-fraction), widens its colour range to
+/// hold it (colour_range_holding) when it picks the primaries and --colour-range gave no range,
+/// and returns the --ijk-box, if
+/// any: the selection the renderer makes on the GPU (CutawayRenderer::select).
 std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
                                                  const RenderOptions& options);
 /// The checks of --range and --primary-fraction, and the --ijk-box (checked against `dims`).

@@ -61,8 +61,9 @@ std::vector<AxisTick> edge_ticks(const ViewGeometry& view, int width, int height
         const float reach = 0.5f * std::abs(glm::dot(glm::vec2(ink.width(), ink.height()), glm::abs(out)));
         tick.label = centred_at(tick.label, tick.to + out * (2 * text_scale + reach));
         const annotation::PixelRect ink_box = annotation::ink_box(tick.label);
-        // Half a glyph of room around each label: two values side by side read as one number.
-        const float room = 3 * text_scale;
+        // A glyph's width of room around each label: closer, a value beside an axis name or another
+        // value reads as one ("crossline 25").
+        const float room = 6 * text_scale;
         const annotation::PixelRect box{ink_box.x0 - room, ink_box.y0 - room, ink_box.x1 + room, ink_box.y1 + room};
         if (!inside(ink_box, right_limit, height) ||
             std::any_of(placed.begin(), placed.end(), [&](const annotation::PixelRect& r) { return r.overlaps(box); }))

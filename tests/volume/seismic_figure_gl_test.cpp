@@ -161,8 +161,9 @@ TEST_F(VolumeGlSeismicFigure, AnnotationsStayInsideTheImage) {
             labels.push_back(annotation::ink_box(edge.label));
             for (const AxisTick& tick : edge.ticks) labels.push_back(annotation::ink_box(tick.label));
         }
-        // Apart by more than a glyph's stroke: two values side by side would read as one number.
-        const float gap = 2 * bar.text_scale;
+        // Apart by about a glyph's width (6 text units; 5 for rounding): closer, two values side by
+        // side, or a value beside an axis name ("crossline 25"), read as one.
+        const float gap = 5 * bar.text_scale;
         for (std::size_t a = 0; a < labels.size(); ++a)
             for (std::size_t b = a + 1; b < labels.size(); ++b) {
                 const annotation::PixelRect& r = labels[a];
