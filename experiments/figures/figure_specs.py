@@ -23,10 +23,10 @@ TWO_PROPERTIES_PORO = (0.30, 0.40)
 FRONT_RANGE = (0.5, 1.0)  # fig. 11's primaries: SWAT behind the waterflood's front
 
 
-def figure_specs(model, steps, swat_range, grid_size):
+def figure_specs(model, steps, swat_range):
     """Figures for `model` (preset:NAME); `steps`: SWAT time steps shown in figure 11, all coloured
-    over `swat_range` (LO, HI) so one colour means one saturation in every panel; `grid_size`: the
-    panels of figure 8's three rows (at the figure size it printed 241 mm tall at 182 mm wide)."""
+    over `swat_range` (LO, HI) so one colour means one saturation in every panel. Figure 8 keeps
+    the figure's 16:9 panels: at the grids' 1000x600 its four rows printed 255 mm tall, not 241."""
     return [
         {"name": "fig07_borders", "title": "Fig. 7: threshold vs ray-cast border lines", "metrics": True, "zoom": True,
          "camera": LINES_VIEW,
@@ -36,7 +36,7 @@ def figure_specs(model, steps, swat_range, grid_size):
         # radius drops by one texel at most on a framed model). The difference row shows where they
         # differ in place of a zoom row (both made the figure too tall to print on one page).
         {"name": "fig08_mean_filter", "title": "Fig. 8: mean-filter kernels on the cut surface, 33x33 (cost: primary exposure)",
-         "metrics": True, "caption_number": "primary_exposure", "difference_to": 1, "size": grid_size,
+         "metrics": True, "caption_number": "primary_exposure", "difference_to": 1,
          "panels": [("no mean filter", ["--mean-filter", 0])] +
                    [(f"{kernel} kernel", ["--mean-filter", 33, "--mean-filter-kernel", kernel])
                     for kernel in ("full", "sampled", "distance-scaled")]},

@@ -132,7 +132,7 @@ def measure(exp):
     presets = ("zaphirus", "zaphirus", "petra", "petra") if quick else cx.PRESETS
     layers_model = "preset:zaphirus" if quick else "preset:opharine"
     swat_range = common_colour_range(exp, model, "SWAT", steps)
-    specs = figure_specs.figure_specs(model, steps, swat_range, grid_size) + [
+    specs = figure_specs.figure_specs(model, steps, swat_range) + [
         figure_specs.models_figure(presets, grid_size, models_options(exp, presets)),
         figure_specs.layers_figure(layers_model, FIG15_RANGES, grid_size)]
     numbers = {}
