@@ -9,16 +9,33 @@ namespace {
 
 std::uint8_t channel(float value) { return std::uint8_t(glm::clamp(value, 0.0f, 1.0f) * 255.0f + 0.5f); }
 
+/// Points tried along a well's first segment for an anchor in view (1/64 of it apart).
+constexpr int anchor_steps = 64;
+
+/// Image pixel (y down) of render-space `p`; far outside the image behind the camera.
+glm::vec2 image_point(const Camera& camera, const glm::vec3& p) {
+    const glm::vec4 clip = camera.view_projection() * glm::vec4(p, 1.0f);
+    const glm::vec2 ndc = clip.w > 0 ? glm::vec2(clip) / clip.w : glm::vec2(-2.0f);
+    return {(0.5f * ndc.x + 0.5f) * float(camera.width), (0.5f - 0.5f * ndc.y) * float(camera.height)};
+}
+
+/// Inside the image, a label's text height from its top edge (a name needs room above its anchor).
+bool inside_image(const Camera& camera, const glm::vec2& p) {
+    return p.x >= 0 && p.x < float(camera.width) && p.y >= 0.02f * float(camera.height) && p.y < float(camera.height);
+}
+
 }  // namespace
 
 std::vector<annotation::PlacedLabel> well_label_layout(const std::vector<WellHead>& heads, const Camera& camera,
                                                        float reserved_right, float min_text_px, const std::string& caption) {
     std::vector<annotation::LabelRequest> requests;
     for (const WellHead& head : heads) {
-        const glm::vec4 clip = camera.view_projection() * glm::vec4(head.position, 1.0f);
-        // Behind the camera: no anchor (place_labels skips anchors outside the image).
-        const glm::vec2 ndc = clip.w > 0 ? glm::vec2(clip) / clip.w : glm::vec2(-2.0f);
-        requests.push_back({head.name, (0.5f * ndc.x + 0.5f) * float(camera.width), (0.5f - 0.5f * ndc.y) * float(camera.height)});
+        // The wellhead, or where the well's first segment comes into view when the head stands
+        // above the framed model (a tall well's head left the image and its name with it).
+        glm::vec2 anchor = image_point(camera, head.position);
+        for (int step = 1; step <= anchor_steps && !inside_image(camera, anchor); ++step)
+            anchor = image_point(camera, glm::mix(head.position, head.next, float(step) / float(anchor_steps)));
+        requests.push_back({head.name, anchor.x, anchor.y});
     }
     // The caption is placed as FrameCaption places it (the same reserved columns and text height).
     std::vector<annotation::PixelRect> obstacles;

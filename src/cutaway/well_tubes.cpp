@@ -62,7 +62,7 @@ void WellTubes::set(const WellSet& set, const ModelFrame& frame) {
                                 {rgba[0], rgba[1], rgba[2], rgba[3]}});
         }
         for (const auto& t : mesh.triangles) indices.insert(indices.end(), {base + t[0], base + t[1], base + t[2]});
-        heads.push_back({well.name, well.colour, frame.to_render(well.path.front())});
+        heads.push_back({well.name, well.colour, frame.to_render(well.path.front()), frame.to_render(well.path[1])});
     }
     vertices_ = vertices.empty() ? gl::Buffer() : gl::Buffer(vertices.size() * sizeof(TubeVertex), vertices.data());
     indices_ = indices.empty() ? gl::Buffer() : gl::Buffer(indices.size() * sizeof(std::uint32_t), indices.data());

@@ -36,7 +36,8 @@ struct WellSet {
 struct WellHead {
     std::string name;
     glm::vec3 colour{1.0f};
-    glm::vec3 position{0.0f};
+    glm::vec3 position{0.0f};  ///< render space, the path's first point (above the model)
+    glm::vec3 next{0.0f};      ///< the path's second point: a label's anchor slides down to it when the head is out of view
 };
 
 class WellTubes {

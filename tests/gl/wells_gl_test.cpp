@@ -95,6 +95,24 @@ TEST(Wells, EverySpe9WellIsDrawnInItsColourAndLabelledInsideTheImage) {
     EXPECT_EQ(overlapping, 0u) << "labels placed clear of each other";
 }
 
+TEST(Wells, AWellWhoseHeadIsOutOfViewIsNamedWhereItComesIntoView) {
+    // A well standing above the top of the image (a tall well, a framed model): its name is placed
+    // where its first segment enters the image instead of being left out with its head.
+    const Spe9Wells& s = spe9();
+    pipeline::CutawayRenderer renderer(GlEnvironment::shaders(), s.model.grid, 0, 640, 360);
+    renderer.set_wells(s.wells);
+    const pipeline::Camera camera = pipeline::make_orbit_camera(renderer.frame(), {}, 640, 360);
+    std::vector<pipeline::WellHead> heads = {renderer.status().well_heads.front()};
+    pipeline::WellHead& head = heads.front();
+    // Raised until it projects above the image: up the camera's own up axis from where it was.
+    const glm::vec3 up = glm::normalize(glm::vec3(glm::inverse(camera.view) * glm::vec4(0, 1, 0, 0)));
+    head.next = head.position;
+    head.position += up * 10.0f * float(renderer.frame().radius());
+    const std::vector<annotation::PlacedLabel> labels = pipeline::well_label_layout(heads, camera, 0);
+    ASSERT_EQ(labels.size(), 1u) << head.name << " is named though its head is out of view";
+    EXPECT_GE(labels.front().anchor_y, 0.0f);
+}
+
 TEST(Wells, ATubeIsVisibleWhereverItsWellheadIsInView) {
     // Occlusion: wellheads stand above the model's top (wells::wellhead_level), so from an eye
     // above that level the line of sight to a wellhead passes above every cell, cut or not: only
