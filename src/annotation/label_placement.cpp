@@ -7,6 +7,11 @@
 #include <optional>
 
 namespace cutaway::annotation {
+
+std::array<float, 2> leader_end(const PixelRect& box, float x, float y) {
+    return {std::clamp(x, box.x0, box.x1), std::clamp(y, box.y0, box.y1)};
+}
+
 namespace {
 
 PixelRect moved(const PixelRect& r, float dx, float dy) { return {r.x0 + dx, r.y0 + dy, r.x1 + dx, r.y1 + dy}; }
@@ -52,14 +57,6 @@ bool segment_crosses(const PixelRect& r, float ax, float ay, float bx, float by)
     }
     return true;
 }
-
-}  // namespace
-
-std::array<float, 2> leader_end(const PixelRect& box, float x, float y) {
-    return {std::clamp(x, box.x0, box.x1), std::clamp(y, box.y0, box.y1)};
-}
-
-namespace {
 
 /// How badly `box` for request `r` sits among the labels `placed` before: 100 for each label it
 /// overlaps (text over text is unreadable), 1 for each leader line crossing it or crossed by its

@@ -177,7 +177,7 @@ struct RankScene {
             property.primary_range = options.range.empty() ? distributed::global_range_for_fraction(
                                                                  mpi, own_values, primary_fraction(options), extremes.max)
                                                            : grid::PrimaryRange{options.range[0], options.range[1]};
-            if (options.colour_range.empty() && options.frame_settings().primaries)  // as choose_primary_range
+            if (colour_range_holds_primaries(options))
                 property.colour_range =
                     colour_range_holding(property.colour_range, property.primary_range, extremes, property.log_scale);
         });

@@ -342,6 +342,10 @@ grid::PrimaryRange colour_range_holding(grid::PrimaryRange colour, const grid::P
     return colour;
 }
 
+bool colour_range_holds_primaries(const RenderOptions& options) {
+    return options.colour_range.empty() && options.select_by.empty() && options.frame_settings().primaries;
+}
+
 std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
                                                  const RenderOptions& options) {
     std::optional<grid::IjkBox> box = selection_box(options, grid.dims());
@@ -349,8 +353,7 @@ std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& gr
         property.primary_range = {options.range[0], options.range[1]};
     else
         property.primary_range = grid::range_for_fraction(grid, property.values(), property.name, primary_fraction(options));
-    // Only where the range picks the primaries (not --select-by's property, not --primaries none).
-    if (options.colour_range.empty() && options.select_by.empty() && options.frame_settings().primaries)
+    if (colour_range_holds_primaries(options))
         property.colour_range = colour_range_holding(property.colour_range, property.primary_range,
                                                      grid::active_value_range(grid, property.values(), property.name),
                                                      property.log_scale);

@@ -129,10 +129,12 @@ PropertyChoice choose_property(const grid::CornerPointGrid& grid, const RenderOp
 /// log scale the low end stays above 0.
 grid::PrimaryRange colour_range_holding(grid::PrimaryRange colour, const grid::PrimaryRange& primary,
                                         const grid::PrimaryRange& extremes, bool log_scale);
+/// Whether the colouring property's primary range widens its colour range (colour_range_holding):
+/// it picks the primaries (no --select-by, not --primaries none) and --colour-range gave none.
+bool colour_range_holds_primaries(const RenderOptions& options);
 /// Sets property.primary_range from --range (or --primary-fraction), widens its colour range to
-/// hold it (colour_range_holding) when it picks the primaries and --colour-range gave no range,
-/// and returns the --ijk-box, if
-/// any: the selection the renderer makes on the GPU (CutawayRenderer::select).
+/// hold it where colour_range_holds_primaries, and returns the --ijk-box, if any: the selection
+/// the renderer makes on the GPU (CutawayRenderer::select).
 std::optional<grid::IjkBox> choose_primary_range(const grid::CornerPointGrid& grid, PropertyChoice& property,
                                                  const RenderOptions& options);
 /// The checks of --range and --primary-fraction, and the --ijk-box (checked against `dims`).

@@ -362,11 +362,11 @@ FrameTimes CutawayRenderer::render(const FrameSettings& s, const Camera& camera,
     return times;
 }
 
-RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
+RendererState CutawayRenderer::state_for(const CutSurfaceEntry& strategy) const {
     RendererState state;
     state.frozen = frozen_camera_.has_value();
     state.frozen_cut_valid = frozen_valid_;
-    state.cone_field_strategy = bool(find_cut_surface(cut_strategy(s)).cpu_reference);
+    state.cone_field_strategy = bool(strategy.cpu_reference);
     state.cut_volumes = !volume_cut_.empty();
     state.opening_cells = !opening_cut_.empty();
     state.distributed = bool(hooks_.combine_max);
@@ -378,9 +378,10 @@ RendererState CutawayRenderer::state_for(const FrameSettings& s) const {
 FrameTimes CutawayRenderer::render_once(const FrameSettings& s, const Camera& camera) {
     if (camera.width != width_ || camera.height != height_)
         throw std::invalid_argument("camera image size differs from the renderer's");
+    const CutSurfaceEntry strategy = find_cut_surface(cut_strategy(s));
     // Untimed, once per GPU selection, and only for a strategy that builds from the flags.
-    if (find_cut_surface(cut_strategy(s)).selection_on_cpu) sync_selection_to_cpu();
-    last_plan_ = plan_frame(s, state_for(s));
+    if (strategy.selection_on_cpu) sync_selection_to_cpu();
+    last_plan_ = plan_frame(s, state_for(strategy));
     timer_.clear();
     cut_readback_bytes_ = 0;
     empty_vertex_array_.bind();

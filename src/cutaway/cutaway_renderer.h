@@ -261,7 +261,7 @@ private:
     gl::RgbaImage read_image() const;
     std::vector<std::uint32_t> read_eclipse_ids() const;
     float colour_bar_reserved_width(const FrameSettings& settings) const;
-    RendererState state_for(const FrameSettings& settings) const;
+    RendererState state_for(const CutSurfaceEntry& strategy) const;
     void run_pass(FramePass pass, const FrameStep& step);
     void draw_strategy_cut(const FrameStep& step);
     void draw_secondaries(const FrameStep& step);
