@@ -5,7 +5,7 @@
 // (cut_normal_at), not stored: stage 2's per-fragment test reads a 4-byte texel instead of 16.
 // Variant CUT_IMAGES (compute passes): the cut surface and its rear-clamp mask read as images,
 // whose loads cost less than texel fetches on llvmpipe (deferred shading with ray-cast borders,
-// sapphire at 1920x1080: 33-42 ms against 46-56, alternating runs, the same image).
+// sapphire at 1920x1080, alternating runs, the same image).
 #include "common/shared_constants.h"
 #ifdef CUT_IMAGES
 layout(r32f, binding = img_cut_surface) uniform readonly image2D cut_surface_image;

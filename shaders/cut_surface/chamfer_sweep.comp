@@ -5,7 +5,7 @@
 // h(p -+ direction) - weight). Heights in stored depth units t.
 // Variant INIT: the sweep along the rows (direction (1, 0)) reading its forward pass from the
 // seed image (cone_seed.glsl; no seed: far below 0) instead of the heights image, so the heights
-// need no pass of their own (sapphire at 1920x1080: the separate pass took 17-28 ms).
+// need no pass of their own (sapphire at 1920x1080: the separate pass was a noticeable cost).
 layout(local_size_x = 64) in;
 
 layout(r32f, binding = 0) uniform coherent image2D heights;

@@ -2,8 +2,8 @@
 // The cut's world normal at each cut pixel (common/cut_lookup.glsl cut_normal_at), stored for
 // stage 2's one-pass shading (the paper's path, --draw all-faces, and --stage2-passes 1 or 2),
 // whose fragment shader would otherwise rebuild it for every fragment seen from inside its cell:
-// sapphire's all-faces stage 2 at 1920x1080 took 1725-1969 ms so, against 1345-1359 with the
-// normals read (src/cutaway/secondary_pass.cpp). The deferred shading rebuilds it once per
+// sapphire's all-faces stage 2 at 1920x1080 was slower so than with the normals read
+// (src/cutaway/secondary_pass.cpp). The deferred shading rebuilds it once per
 // pixel instead. Pixels without a cut are left as they were: nothing reads them.
 layout(local_size_x = 64, local_size_y = 4) in;
 #define CUT_IMAGES

@@ -10,7 +10,7 @@
 // jump_flood_split.h), from the (BLOCK_Y + 2) x 3 texels that hold all their taps: a step of 2k
 // puts a pixel's taps k texels away in the same half, a step of 1 in the texels beside.
 // On llvmpipe an image store costs several times a load, whatever its size: 2 pixels per store
-// made a pass about 30% faster than one pixel per store (jfa2, gpu_jump_flooding.cpp).
+// made a pass faster than one pixel per store (jfa2, gpu_jump_flooding.cpp).
 // Variant INIT: the first owners image from the seed image (cone_seed.glsl). Variant CUT_OUT:
 // the last pass, storing each pixel's cut instead of its owner: the owner cone's height, clamped
 // to [0, 1] (0: nothing cut; no owner's height is negative, flood_take), as the cut depth image

@@ -2,9 +2,9 @@
 // Final image: ambient occlusion, saturation contrast (HSV), primary silhouette, shell contours.
 // Each is a #define variant: SSAO, SATURATION, SILHOUETTE, CONTOURS. A compute pass with image
 // loads (as post/ssao.comp; src/cutaway/post/composite.cpp). Workgroups of one row of 128 pixels:
-// 35-44 ms against 47-65 in 64 x 4 (sapphire 1080p, half-resolution SSAO, contours; 6 alternating
-// runs, the same image); the mean filter, resolve, deferred shading and border passes gained
-// nothing so and stay 64 x 4.
+// faster than 64 x 4 (sapphire 1080p, half-resolution SSAO, contours; 6 alternating runs, the
+// same image); the mean filter, resolve, deferred shading and border passes gained nothing so
+// and stay 64 x 4.
 layout(local_size_x = 128, local_size_y = 1) in;
 #include "common/shared_constants.h"
 

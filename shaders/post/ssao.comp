@@ -3,10 +3,10 @@
 // disc of world radius `radius` around each pixel, rebuilt from linear depth; each occludes by
 // how much it lies above the pixel's tangent plane, with distance falloff. Works on every
 // surface of the frame, the cut fill included (its normals are the cut surface's). A compute pass
-// with image loads: on llvmpipe 48-54 ms at 1920x1080 against the fragment pass's 64-68 with
-// texelFetch (sapphire, alternating runs; the same image); 41-44 ms against 52-53 once the
-// spiral turned by a rotation instead of a sine and cosine per sample and the divisions per
-// sample became multiplies (the loads are about 18 ms of it).
+// with image loads: on llvmpipe at 1920x1080 faster than the fragment pass with texelFetch
+// (sapphire, alternating runs; the same image), still so once the spiral turned by a rotation
+// instead of a sine and cosine per sample and the divisions per sample became multiplies (the
+// loads are then much of what remains).
 // HALF_RESOLUTION: one invocation per 2x2 block, shading the block's even pixel (2t) with the same
 // full-resolution samples, and storing that pixel's depth beside the factor for the composite's
 // depth-aware upsampling (post/composite.comp, ambient_at): a quarter of the work.

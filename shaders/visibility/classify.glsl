@@ -4,7 +4,7 @@
 // straddling it.
 // visibility/cut_pyramid.comp's (min, max) pairs as RG32F texels: on llvmpipe a storage-buffer load
 // at an index that varies across SIMD lanes runs lane by lane, a texel fetch is one gather (the
-// culling's cell pass took 34 ms at 1080p on sapphire before, 27-28 ms after).
+// culling's cell pass at 1080p on sapphire ran faster so).
 uniform samplerBuffer pyramid_texels;
 
 // ViewCamera: the model camera; CutCamera: the cut camera (the model camera unless the view is frozen).

@@ -22,7 +22,7 @@ layout(local_size_x = 64) in;
 #include "visibility/classify.glsl"
 
 // Read as buffer textures: on llvmpipe a storage-buffer load at an index that varies across the
-// SIMD lanes runs lane by lane, a texel fetch is one gather (the selection ran 1.3x faster so).
+// SIMD lanes runs lane by lane, a texel fetch is one gather (the selection ran faster so).
 layout(binding = tex_face_classes) uniform usamplerBuffer face_class_texels;   // per cell: 2 bits per side
 layout(binding = tex_primary_bits) uniform usamplerBuffer primary_bit_texels;  // 1 bit per compact cell
 layout(binding = tex_brick_cells) uniform usamplerBuffer brick_cell_texels;   // compact cells, brick by brick
@@ -81,10 +81,10 @@ void select_cell(uint cell, uint slot, uint brick, int brick_class, inout uvec3 
 // No shared memory and no barrier(): llvmpipe runs barrier() by switching between the
 // invocations of a workgroup, which costs more than the test itself. A workgroup takes
 // bricks_per_group bricks in turn, one cell per invocation (a brick has at most 64 cells): on
-// llvmpipe each workgroup costs about 10 us before it does anything, so one per brick (3,250 on
+// llvmpipe each workgroup has a fixed cost before it does anything, so one per brick (3,250 on
 // sapphire) cost more than the selection itself. An invocation adds its cells to the counters once
-// at the end: an atomic per cell on the same three words made the pass 5-9% slower (scale-1m at
-// 1080p, medians of 8 frames in 3 alternating runs: 225-233 against 211-218 ms).
+// at the end: an atomic per cell on the same three words made the pass slower (scale-1m at
+// 1080p, medians of 8 frames in 3 alternating runs).
 void main() {
     uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
     uint first = group * bricks_per_group;

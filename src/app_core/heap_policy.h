@@ -2,11 +2,11 @@
 // The process's heap policy. llvmpipe allocates its bins and vertex buffers anew for every batch of
 // draws and frees them after rasterising it; glibc returns freed memory at the top of the heap to
 // the system once it exceeds M_TRIM_THRESHOLD (128 KiB by default, adjusted as large blocks come
-// and go), so the next batch faults those pages in again, zero-filled by the kernel. Sapphire's
-// 1080p frame took about 15,000 minor page faults (60 MB) per frame so; keeping freed memory for
-// reuse removed them (34 faults over 10 frames) and took 30-60 ms off the frame, most of it in the
-// outer-face and stage-2 draws (alternating runs at 8441fb6; README, "Keeping freed heap memory").
-// The peak resident memory is unchanged: scale-10m 91.4 bytes per active cell against 92.5.
+// and go), so the next batch faults those pages in again, zero-filled by the kernel: many minor
+// page faults in every frame (sapphire, 1080p). Keeping freed memory for reuse removed nearly all
+// of them and made the frame faster, most of the gain in the outer-face and stage-2 draws
+// (alternating runs; commit 8eada0d has the numbers).
+// The peak resident memory is unchanged (scale-10m, bytes per active cell).
 #include <climits>
 #include <cstddef>
 #include <nlohmann/json.hpp>

@@ -29,10 +29,13 @@ VisibleFaces make_visible_faces(const gl::ShaderLibrary& shaders, const grid::Co
                                 const GridLayout& layout, const ModelFrame& frame,
                                 const CutawayRenderer::CornerDepthsRead& corner_depths_read) {
     const CellBricks bricks = build_cell_bricks(grid, frame, corner_depths_read);
-    // A frame selects a fraction of the faces (scale-10m: 1.1M of 33M): the buffer starts at an
-    // eighth of them (all of them up to 2M faces) and grows when a frame needs more.
+    // Sized ahead of time: up to 16M faces (64 MiB, models of about 5M cells) the buffer holds
+    // every face the selection can pick, so no frame reads its count back. Above that, where
+    // every buffer byte is resident memory on llvmpipe and a frame selects a small fraction of
+    // the faces, it starts at an eighth of them and grows when a frame needs more (grow_to_fit).
     const std::size_t limit = selectable_face_capacity(layout);
-    return VisibleFaces(shaders, bricks, limit, std::max<std::size_t>(limit / 8, std::size_t(1) << 21));
+    constexpr std::size_t whole_limit = std::size_t(1) << 24;
+    return VisibleFaces(shaders, bricks, limit, limit <= whole_limit ? limit : limit / 8);
 }
 
 int checked_side(int side, const char* name) {
@@ -260,6 +263,7 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
     status.colour_bar_reserved_width = colour_bar_reserved_width(settings);
     status.frozen = frozen_camera_.has_value();
     status.frames_redrawn = frames_redrawn_;
+    status.face_count_readback_bytes = visible_.count_readback_bytes();
     status.cut_readback_bytes = cut_readback_bytes_;
     status.selection_readback_bytes = selection_readback_bytes_;
     status.gpu_memory_by_part = {{"grid", buffers_.memory_bytes()},

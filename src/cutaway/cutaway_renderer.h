@@ -135,6 +135,9 @@ struct RendererStatus {
     float colour_bar_reserved_width = 0;
     bool frozen = false;
     std::size_t frames_redrawn = 0;      ///< frames drawn twice because the culling's face buffer grew
+    /// Bytes of the culling's face count read back after frames (0 while its buffer holds every
+    /// selectable face: models up to about 5M cells).
+    std::size_t face_count_readback_bytes = 0;
     std::size_t cut_readback_bytes = 0;  ///< what the last frame's strategy read back (stats.json readback_bytes)
     /// Bytes of GPU selections read back so far: only for a strategy that builds from the flags
     /// (CutSurfaceEntry::selection_on_cpu) or the full secondary list (DrawMode::all), once per selection.

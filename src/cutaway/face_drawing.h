@@ -23,9 +23,9 @@ void prepare_face_program(const gl::Program& program, const FaceDrawContext& con
 
 /// cut_surface/seed_geometry.frag's depth encoding, (s - near) / (far - near) of `camera`: plain
 /// uniforms, not the view block's planes, because the fragment shader reads them for every
-/// fragment: on llvmpipe the cut stage (which draws the rear shell) was 1.025x the per-program
-/// uniforms' time with the block read there, 0.968x with these (petra 1080p, medians of 22 and 12
-/// alternating pairs); the blocks read by vertex and compute stages showed no such cost.
+/// fragment: on llvmpipe the cut stage (which draws the rear shell) was slower with the block
+/// read there than with these (petra 1080p, medians of 22 and 12 alternating pairs); the blocks
+/// read by vertex and compute stages showed no such cost.
 void set_depth_encoding(const gl::Program& program, const Camera& camera);
 
 }  // namespace cutaway::pipeline

@@ -61,7 +61,7 @@ SceneTargets::SceneTargets(int width, int height)
 
 void SceneTargets::clear() const {
     // colour and face_plane are read only where id says a cell was drawn: not cleared (12 of the
-    // G-buffer's 32 bytes per pixel; the clear of 20 of 48 took 15 ms at 1080p on llvmpipe).
+    // G-buffer's 32 bytes per pixel; on llvmpipe at 1080p their clear was a noticeable cost).
     glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 1, zero_id);
     glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 2, zero_id);
     glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far_depth);

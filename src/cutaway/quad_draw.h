@@ -17,13 +17,12 @@ public:
     /// Chunks drawn between two fences. Before a group is issued, the group before the last one
     /// must have completed, so at most two groups (32K faces) are queued at a time. llvmpipe
     /// bins a whole draw into scenes before its threads rasterise them; unthrottled, stage 2's
-    /// 1.1M faces at scale-10m queued scenes that raised the peak resident memory from 109 to
-    /// 122-126 bytes per active cell (alternating direct runs, same image, the frame no slower).
-    /// Each halving of the group was measured the same way at scale-10m, 1080p: 4 -> 2 chunks,
-    /// the frame's resident memory 954 -> 905 MB, warm frames 3.81 and 3.70 -> 3.37 and 3.64 s;
-    /// 2 -> 1 chunk, peak 100.1 -> 96.5-96.8 bytes per active cell, warm frames 3.83 and 3.69 ->
-    /// 3.52 and 4.55 s (stage 2 0.80-0.98 against 0.82-0.84 s, primaries 0.67-0.83 against
-    /// 0.60: within this machine's noise, perhaps slightly slower), the same image.
+    /// 1.1M faces at scale-10m queued scenes that raised the peak resident memory per active
+    /// cell markedly (alternating direct runs, same image, the frame no slower).
+    /// Each halving of the group was measured the same way at scale-10m, 1080p: 4 -> 2 chunks
+    /// and 2 -> 1 chunk each lowered the resident memory, the warm frames (stage 2 and the
+    /// primaries too) within this machine's noise, perhaps slightly slower at 1 chunk; the same
+    /// image.
     /// A GPU always has the last group queued while the CPU waits for the one before it.
     static constexpr std::size_t chunks_per_group = 1;
     /// Chunks (draw commands) that `faces` faces need.

@@ -27,9 +27,9 @@ inline unsigned group_count(int count, int group) { return unsigned((count + gro
 
 /// Dispatches the bound compute `program` with one invocation per cell of a `width` x `height`
 /// grid, in workgroups of the size its shader declares, so each pass keeps the size that measured
-/// best for it on llvmpipe (1920x1080, sapphire, alternating runs): SSAO about 10% faster in
-/// 64 x 16 groups than in 64 x 4 (a workgroup has a fixed cost), the composite 50% slower so and
-/// fastest in rows of 128.
+/// best for it on llvmpipe (1920x1080, sapphire, alternating runs): SSAO faster in 64 x 16
+/// groups than in 64 x 4 (a workgroup has a fixed cost), the composite slower so and fastest in
+/// rows of 128.
 inline void dispatch_over(const Program& program, int width, int height) {
     GLint size[3] = {1, 1, 1};
     glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);

@@ -244,21 +244,25 @@ TEST(VisibleInteriorFaces, EachIsSelectedFromOneOfItsCells) {
     check_interior_faces_selected_once(faulted_model_with_inactive_cells({24, 20, 8}, 0.25, 5), 7);
 }
 
-// The culling's face buffer holds what frames have needed so far (a tenth of a large model's
-// faces). A frame that selects more than it holds drops faces, so it must grow the buffer and be
-// drawn again: the same records, the same pixels as with the buffer sized for it from the start.
+// The culling's face buffer is sized ahead of time to every face the selection can pick, up to
+// 16M faces: then no frame reads its count back. A larger model's buffer holds what frames have
+// needed so far; a frame that selects more than it holds drops faces, so it must grow the buffer
+// and be drawn again: the same records, the same pixels as with the buffer sized for it from the
+// start.
 TEST(VisibleFaceBuffer, AFrameThatOverflowsGrowsTheBufferAndIsDrawnAgainUnchanged) {
     const grid::CornerPointGrid grid = petra();
     const VisibleFrame frame = draw_visible(grid, 5, {120, 40, 0});
     pipeline::CutawayRenderer* renderer = frame.renderer.get();
     const auto& [settings, camera, records] = std::tie(frame.settings, frame.camera, frame.records);
-    ASSERT_EQ(renderer->status().frames_redrawn, 0u) << "petra's faces all fit the initial buffer (2M faces)";
+    ASSERT_EQ(renderer->status().frames_redrawn, 0u) << "petra's faces all fit the initial buffer";
+    ASSERT_EQ(renderer->status().face_count_readback_bytes, 0u) << "a buffer sized to the limit reads nothing back";
     const std::vector<std::uint32_t> cells = pipeline::FrameReadback(*renderer).read_eclipse_ids();
     ASSERT_GT(records.size(), 1000u);
 
     pipeline::RendererProbe(*renderer).set_face_buffer_capacity(100);
     renderer->render(settings, camera);
     EXPECT_EQ(renderer->status().frames_redrawn, 1u) << "100 records cannot hold the frame: it is drawn again once";
+    EXPECT_GT(renderer->status().face_count_readback_bytes, 0u) << "below the limit the count is read after the frame";
     EXPECT_GE(pipeline::RendererProbe(*renderer).face_buffer_capacity(), records.size());
     EXPECT_EQ(pipeline::FrameReadback(*renderer).faces_drawn().culling->faces_requested, records.size());
     EXPECT_EQ(pipeline::RendererProbe(*renderer).read_visible_faces(), records);

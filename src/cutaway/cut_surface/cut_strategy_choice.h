@@ -7,13 +7,12 @@
 // crossover of their stage 1 times on the kind of GL device running the frame (1920x1080,
 // medians, results/cut_strategies and README):
 //   - frustum-clusters draws one frustum per IJK box of primaries: cheapest while the boxes are
-//     few; its wall area grows with them (scale-10m's 93,100 primaries: 9.5 s on llvmpipe);
+//     few; its wall area grows with them (scale-10m's 93,100 primaries: very slow on llvmpipe);
 //   - frustum-sweep costs O(pixels) whatever the count;
 //   - on a GPU (the H100 and the H200) clusters is cheaper up to petra's 6,095 primaries and
 //     sweep from sapphire's 9,691 on: 10,000;
 //   - on a software rasteriser (llvmpipe), which pays for every wall pixel on the CPU, sweep is
-//     cheaper from 350-700 primaries (707 on opharine: 87 against 107 ms; 349 on zaphirus: 81
-//     against 64 ms): 500.
+//     cheaper from 350-700 primaries (sweep on opharine's 707, clusters on zaphirus's 349): 500.
 #include <cstdint>
 #include <string>
 #include <string_view>

@@ -35,9 +35,8 @@ public:
 enum class BufferedCutWrite { pixel_transfer, fragment_pass };
 
 /// The cheaper of the two on the device GL_RENDERER names (sapphire, 1920x1080, glFinish laps):
-/// on llvmpipe the transfer, 2.7 ms against 6.5-9.6 for the fragment pass; on NVIDIA's H200 the
-/// fragment pass, 0.2 ms, where the transfer took 4.9-6.0 ms and made the last flooding pass,
-/// which writes the buffer, take 4.0 ms instead of 0.05 (stage 1 of jfa 11.2-11.5 -> 2.2 ms).
+/// on llvmpipe the transfer; on NVIDIA's H200 the fragment pass, where the transfer cost more and
+/// also made the last flooding pass, which writes the buffer, far slower (stage 1 of jfa).
 BufferedCutWrite buffered_cut_write_for(std::string_view gl_renderer);
 
 /// Jump flooding with the passes of `variant` (jfa_steps), the CPU reference's 9-tap rule and

@@ -5,12 +5,12 @@
 // pixel transfer or a fragment pass, whichever the device does faster (BufferedCutWrite,
 // gpu_cone_transform.h). On llvmpipe, image
 // loads with "0 = no owner" (out-of-image loads read 0: no bounds tests) and selects instead of
-// branches made a pass about 2.5x faster than texelFetch with branches (same run, loaded machine).
-// Work groups of 64 x 4 passed JFA^2's 22 passes about 11% faster than 8 x 8 (16 x 16: slower, 32 x 8:
+// branches made a pass much faster than texelFetch with branches (same run, loaded machine).
+// Work groups of 64 x 4 passed JFA^2's 22 passes faster than 8 x 8 (16 x 16: slower, 32 x 8:
 // the same); shader storage buffers instead of the images (a select for outside taps) were slower
 // (zaphirus, 1920x1080, two alternating runs each, LP_NUM_THREADS=2, issue 16). The same pass as
 // a fragment shader (full-screen triangle into an RG32UI attachment, texelFetch with clamped taps)
-// took 300 ms for sapphire's 11 passes against the compute passes' 135 ms; 128 x 8, 32 x 32 and
+// was much slower than the compute passes over sapphire's 11 passes; 128 x 8, 32 x 32 and
 // 8 x 8 groups were within noise of 64 x 4 (1920x1080, LP_NUM_THREADS=2).
 //
 // Each invocation floods a texel of 2 horizontally adjacent pixels in 2 rows a step apart: their
@@ -22,14 +22,13 @@
 // without the square root or without any height took as long), and a store costs several times
 // a load whatever its size (4 stores to one pixel took as long as to 4 pixels). Against the
 // layout before, one RG32UI texel per pixel and 2 x 2 blocks of pixels a step apart (16 loads
-// and 4 stores per 4 pixels): GPU jfa 165 -> 136 ms, jfa2 309-318 -> 257-262 ms (BM_cpu_path,
+// and 4 stores per 4 pixels), the present one made GPU jfa and jfa2 faster (BM_cpu_path,
 // opharine 0.1%, 1920x1080, alternating processes, LP_NUM_THREADS=2). The 2 x 2 blocks had made
-// a small step's pass 7.2-7.5 ms instead of 11.1-11.4 for one pixel per invocation. Slower: one
-// row per invocation (4.5 loads per pixel: jfa2's stage 1 262 against 232 ms), 4 rows (646-825
-// against 253-320 ms: more live values than registers), 4 x 2 pixel blocks in the one-pixel
-// layout (24 ms a pass), several small steps fused in shared memory (3 steps in 95 ms against
-// 33), and a first pass reading the seed image instead of an init pass's owners (20-35 ms
-// against 9 + 9: texelFetch of the depth texture with bounds tests costs more than image loads).
+// a small step's pass faster than one pixel per invocation. Slower: one row per invocation
+// (4.5 loads per pixel; jfa2's stage 1), 4 rows (more live values than registers), 4 x 2 pixel
+// blocks in the one-pixel layout, several small steps fused in shared memory, and a first pass
+// reading the seed image instead of an init pass's owners (texelFetch of the depth texture with
+// bounds tests costs more than image loads).
 //
 // Against the CPU reference (cone_field/jump_flooding.h): the same steps, taps, comparisons and
 // tie-breaking, in float (stored depth units) where the reference uses double (depth units).

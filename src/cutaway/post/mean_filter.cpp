@@ -8,13 +8,11 @@
 namespace cutaway::pipeline {
 
 // Compute passes over image buffers instead of full-screen fragment passes reading the depth
-// texture: the 9x9 kernel's two passes with their copies take 17-18 ms and the compute resolve
-// after them 26-29 ms, where the fragment passes and resolve took 93-98 ms together (the
-// mean_filter stage: 45-54 ms now; sapphire and petra at 1920x1080, LP_NUM_THREADS=2,
-// alternating runs). The frame is byte-identical (the same taps, sums in the same order;
-// MeanFilter.EqualsTheBoxMeanOnRandomDepthImages checks the mean itself). The frame's resolve
-// reads the filter's output buffer as it is (filter()), without copying it into a depth texture
-// and back.
+// texture: on llvmpipe the two passes and the compute resolve after them cost a fraction of the
+// fragment passes' time (bench_cutaway's mean_filter stage measures it). The frame is byte-identical
+// (the same taps, sums in the same order; MeanFilter.EqualsTheBoxMeanOnRandomDepthImages checks
+// the mean itself). The frame's resolve reads the filter's output buffer as it is (filter()),
+// without copying it into a depth texture and back.
 MeanFilter::MeanFilter(const gl::ShaderLibrary& shaders) : programs_(shaders, {{GL_COMPUTE_SHADER, "post/mean_filter.comp"}}) {}
 
 float mean_filter_reference_depth(const ModelFrame& frame, const Camera& cut_camera) {
@@ -55,20 +53,16 @@ const gl::FloatImageBuffer& MeanFilter::filter(const CutTargets& input, int size
 
     unfiltered_.read_depth(input.depth);
     unfiltered_.bind_image(2, GL_READ_ONLY);  // the distance-scaled kernel's radius, in both passes
-    // Pass 1: along x into rows_.
-    bind(unfiltered_, 0, GL_READ_ONLY);
-    bind(rows_, 1, GL_WRITE_ONLY);
-    const gl::Program& along_x = program(size, kernel, 0, cut_camera, reference_depth, quads);
-    along_x.use();
-    gl::dispatch_over(along_x, invocations_x, height);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
-    // Pass 2: along y.
-    bind(rows_, 0, GL_READ_ONLY);
-    bind(columns_out, 1, GL_WRITE_ONLY);
-    const gl::Program& along_y = program(size, kernel, 1, cut_camera, reference_depth, quads);
-    along_y.use();
-    gl::dispatch_over(along_y, invocations_x, height);
-    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    const auto pass = [&](int axis, const gl::FloatImageBuffer& from, const gl::FloatImageBuffer& to) {
+        bind(from, 0, GL_READ_ONLY);
+        bind(to, 1, GL_WRITE_ONLY);
+        const gl::Program& p = program(size, kernel, axis, cut_camera, reference_depth, quads);
+        p.use();
+        gl::dispatch_over(p, invocations_x, height);
+        glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    };
+    pass(0, unfiltered_, rows_);     // along x
+    pass(1, rows_, columns_out);     // along y
     return columns_out;
 }
 

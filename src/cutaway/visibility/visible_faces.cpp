@@ -22,10 +22,10 @@ enum CullingTextureUnit : unsigned { brick_cell_texture_unit = shared::tex_brick
                                      brick_begin_texture_unit = shared::tex_brick_begin,
                                      brick_class_texture_unit = shared::tex_brick_classes };
 
-/// Bricks one workgroup of cull_cells.comp takes in turn: on llvmpipe a workgroup costs about
-/// 10 us before its first instruction (measured: an empty dispatch of sapphire's 3,250 one-brick
-/// groups took 36 ms), so a group per brick cost more than the selection; 16 leaves ~200 groups
-/// on sapphire, plenty for any number of threads.
+/// Bricks one workgroup of cull_cells.comp takes in turn: on llvmpipe a workgroup costs a fixed
+/// start-up before its first instruction (an empty dispatch of one-brick groups is measurable
+/// against the whole selection), so a group per brick cost more than the selection; 16 leaves
+/// hundreds of groups on sapphire, plenty for any number of threads.
 constexpr unsigned bricks_per_group = 16;
 
 /// The uniforms of visibility/classify.glsl.
@@ -92,9 +92,11 @@ void VisibleFaces::set_capacity(std::size_t faces) {
 }
 
 bool VisibleFaces::grow_to_fit() {
+    if (face_capacity_ == face_limit_) return false;  // sized ahead of time: nothing to read back
     std::uint32_t requested = 0;
     glGetNamedBufferSubData(counters_.id(), faces_requested_offset, sizeof(requested), &requested);
-    if (requested <= face_capacity_ || face_capacity_ == face_limit_) return false;
+    count_readback_bytes_ += sizeof(requested);
+    if (requested <= face_capacity_) return false;
     // A margin of an eighth, so that a camera moving on does not grow the buffer every frame.
     set_capacity(std::size_t(requested) + std::size_t(requested) / 8);
     return true;

@@ -49,10 +49,13 @@ public:
     void draw(const GridBuffers& grid) const;
     /// Reads the counters of the last selection back (a GPU->CPU sync: not in timed frames).
     CullingCounts read_counts() const;
-    /// After a finished frame: reads the last selection's face count (4 bytes) and, if the face
-    /// buffer was too small for it, grows the buffer to fit it with a margin. True when it grew:
-    /// that frame dropped faces and must be drawn again.
+    /// After a finished frame, when the face buffer is smaller than the limit: reads the last
+    /// selection's face count (4 bytes) and, if the buffer was too small for it, grows the buffer
+    /// to fit it with a margin. True when it grew: that frame dropped faces and must be drawn
+    /// again. A buffer sized to the limit reads nothing.
     bool grow_to_fit();
+    /// Bytes grow_to_fit has read back so far.
+    std::size_t count_readback_bytes() const { return count_readback_bytes_; }
     /// Sizes the face buffer to `faces` records (clamped to 1..face_limit); it grows from there.
     void set_capacity(std::size_t faces);
     /// Grows the face buffer to `face_limit` (no selection can overflow it then).
@@ -78,6 +81,7 @@ private:
     std::size_t brick_count_ = 0;
     std::size_t face_limit_ = 0;
     std::size_t face_capacity_ = 0;
+    std::size_t count_readback_bytes_ = 0;
     gl::Buffer counters_, faces_;
     std::size_t chunks_ = 0;  ///< draw commands: QuadDraw chunks of the face capacity
     gl::Buffer commands_;     ///< DrawElementsIndirectCommand per chunk (finish_culling.comp)
