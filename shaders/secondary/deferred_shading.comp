@@ -47,7 +47,7 @@ void main() {
     hide_internal_lines = true;
 #endif
     if (raycast_border_at(window, texel, world, plane_normal))
-        colour_border(s.colour, s.flags, face_info & 3u, hide_internal_lines);
+        colour_border(s.colour, s.flags, face_info & 3u, hide_internal_lines, id.x - 1u, stored_eye_normal(s.normal));
 #endif
     imageStore(scene_colour, texel, vec4(s.colour, 1.0));
     imageStore(normal_depth, texel, uvec4(pack_normal_and(normalize(mat3(model_view) * s.normal), linear_depth), 0u, 0u));

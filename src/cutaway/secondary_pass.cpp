@@ -69,8 +69,9 @@ void dispatch_per_pixel(const gl::Program& program, const Camera& camera) {
 }
 }  // namespace
 
-void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
-                                          const CutClip& clip) {
+void SecondaryPass::apply_raycast_borders(const FaceDrawContext& context, const SceneTargets& scene,
+                                          const FrameSettings& settings, const CutClip& clip) {
+    const Camera& camera = context.camera;
     gl::ShaderDefines defines = cut_view_defines(camera, clip);
     defines.emplace_back("CUT_IMAGES", "");
     bind_cut_images(clip);
@@ -79,6 +80,8 @@ void SecondaryPass::apply_raycast_borders(const Camera& camera, const SceneTarge
     set_cut_lookup(p, clip, camera);
     set_border_uniforms(p, settings);
     gl::set_uniform(p, "hide_internal_lines", settings.hide_internal_lines);
+    context.grid.set_geometry_uniforms(p);  // the cut fill's line fade reads the cells' corners
+    context.grid.bind_geometry();
     glBindImageTexture(shared::img_scene_colour, scene.colour.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
     glBindImageTexture(shared::img_scene_id, scene.id.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RG32UI);
     glBindImageTexture(shared::img_scene_face_plane, scene.face_plane.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);  // image loads: cheaper than texelFetch on llvmpipe
@@ -171,7 +174,7 @@ void SecondaryPass::draw(const FaceDrawContext& context, const std::function<voi
         glDepthMask(GL_TRUE);
         glDepthFunc(GLenum(depth_function));
     }
-    if (settings.border == BorderMode::raycast) apply_raycast_borders(context.camera, scene, settings, clip);
+    if (settings.border == BorderMode::raycast) apply_raycast_borders(context, scene, settings, clip);
 }
 
 void SecondaryPass::draw_plain(const FaceDrawContext& context, const std::function<void()>& submit,

@@ -41,7 +41,7 @@ public:
 
 private:
     /// Ray-cast borders over the visible secondary pixels of `scene` (after a shaded draw).
-    void apply_raycast_borders(const Camera& camera, const SceneTargets& scene, const FrameSettings& settings,
+    void apply_raycast_borders(const FaceDrawContext& context, const SceneTargets& scene, const FrameSettings& settings,
                                const CutClip& clip);
     /// The cut's normal per cut pixel into cut_normals_ (cut_surface/cut_normals.comp) for the
     /// one-pass shading, bound at its texture unit.
