@@ -50,7 +50,7 @@ def figure_specs(model, steps, swat_range):
         # a reservoir engineer tracks a front: a top fraction taken anew at each step selects the
         # same number of cells whatever the water did.
         {"name": "fig11_aperture180_steps",
-         "title": f"Fig. 11: aperture 180 degrees over SWAT time steps ({model[7:]}), primaries SWAT 0.5-1",
+         "title": f"Fig. 11: aperture 180 degrees over the generator's SWAT steps ({model[7:]}), primaries SWAT 0.5-1",
          "panels": [(f"SWAT step {s}", ["--aperture-180", "--property", "SWAT", "--step", s, "--range", *FRONT_RANGE,
                                         "--colour-range", *swat_range])
                     for s in steps]},
@@ -93,10 +93,13 @@ def models_figure(presets, size, row_options):
             "rows": rows, "size": size}
 
 
-def layers_figure(model, ranges, size):
+def layers_figure(model, ranges, colour_range, size):
     """Fig. 15: full cutaway, only primaries, only secondaries (rows) for two PORO value ranges
-    (columns, `ranges`: (caption, (lo, hi)) pairs)."""
+    (columns, `ranges`: (caption, (lo, hi)) pairs), every panel coloured over `colour_range`
+    (LO, HI): the columns' frames would each widen their own range to hold their primaries, and
+    the same cell would take two colours side by side."""
     layers = (("full cutaway", []), ("only primaries", ["--only", "primaries"]), ("only secondaries", ["--only", "secondaries"]))
-    rows = [[(f"{layer}, {caption}", ["--range", lo, hi, *options]) for caption, (lo, hi) in ranges] for layer, options in layers]
-    return {"name": "fig15_only_layers", "title": f"Fig. 15: only primaries / only secondaries ({model[7:]}, two PORO ranges; grey: the shell behind hidden primaries)",
+    rows = [[(f"{layer}, {caption}", ["--range", lo, hi, "--colour-range", *colour_range, *options]) for caption, (lo, hi) in ranges]
+            for layer, options in layers]
+    return {"name": "fig15_only_layers", "title": f"Fig. 15: only primaries / only secondaries ({model[7:]}, two PORO ranges, one colour scale; grey: the shell behind hidden primaries)",
             "rows": rows, "model": model, "size": size}

@@ -17,16 +17,20 @@ def metric_cells(panel):
 
 def sweep_section(result, title, sweep, label):
     result.section(title, f"{sweep['model']}, {sweep['size'][0]}x{sweep['size'][1]}, median of {sweep['repeat']} "
-                          f"timed frames per value in each of {sweep.get('rounds', 1)} rounds over the values (interleaved), "
-                          "then the median over the rounds.")
-    result.table([label, "primary cells", *(cx.STAGE_LABELS[s] + " ms" for s in SWEEP_STAGES)],
-                 [[f"{r['value']:g}", f"{r['primary_cells']:,}", *(md.ms(r["stages_ms"].get(s)) for s in SWEEP_STAGES)]
-                  for r in sweep["rows"]])
+                          f"timed frames per point in each of {sweep['rounds']} rounds over the values and strategies "
+                          "(interleaved), then the median over the rounds; the fastest and slowest rounds' totals beside it. "
+                          "`auto` draws with the strategy it picks for the primary count (column `drew`).")
+    result.table(["strategy", label, "drew", "primary cells", *(cx.STAGE_LABELS[s] + " ms" for s in SWEEP_STAGES),
+                  "total: fastest - slowest round ms"],
+                 [[panel["requested"], f"{r['value']:g}", r["strategy"], f"{r['primary_cells']:,}",
+                   *(md.ms(r["stages_ms"].get(s)) for s in SWEEP_STAGES),
+                   f"{md.ms(min(r['total_ms_by_round']))} - {md.ms(max(r['total_ms_by_round']))}"]
+                  for panel in sweep["strategies"] for r in panel["rows"]])
 
 
 def report(exp, document):
     """Per figure a table of its panels, then the sweeps; links every figure."""
-    aperture = document["time_vs_aperture"]["rows"]
+    aperture = document["time_vs_aperture"]["strategies"][0]["rows"]
     result = md.Report(
         "Figures 7-15 and frame time against aperture and primary fraction",
         f"Images like the paper's figures 7-15, each a grid of `cutaway render` panels ({document['model']}, "
@@ -38,7 +42,7 @@ def report(exp, document):
         "protocol); the sweeps are the timing.",
         headline=f"frame {md.ms(aperture[0]['stages_ms']['total'])} ms at aperture {aperture[0]['value']:g} to "
                  f"{md.ms(aperture[-1]['stages_ms']['total'])} ms at {aperture[-1]['value']:g} degrees "
-                 f"({document['time_vs_aperture']['model']})")
+                 f"({document['time_vs_aperture']['model']}, {aperture[0]['strategy']})")
     for name, figure in document["figures"].items():
         result.section(figure["title"])
         result.table(["panel", "model", "total ms", "primary cells", "primary exposure", "context kept", "border width px"],

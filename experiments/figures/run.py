@@ -17,7 +17,9 @@ cutaway, only primaries, only secondaries) are grids of 1000x600 panels. Figures
 add a zoom row: the window where their panels differ, enlarged 3 times; figure 8 a row of each
 kernel against the full kernel, the pixels that differ in red.
 Sweeps on preset:opharine: full apertures 0..180 degrees at 1% primaries; fractions 0.1%..10% at 60 degrees;
-three rounds over each sweep's values, interleaved, each value's median over the rounds.
+for the default strategy (auto: the report names what it picked) and the paper's frustum;
+five rounds over each sweep's values and strategies, interleaved, each point's median over the
+rounds and its fastest and slowest round.
 """
 import os
 import sys
@@ -35,6 +37,8 @@ FIGURES = ("fig07_borders", "fig08_mean_filter", "fig09_ssao_saturation", "fig10
 # Fig. 15's two PORO windows: the high-porosity channels and the tightest rock (both
 # spatially coherent clusters in the generated models, as the paper's ranges are).
 FIG15_RANGES = (("PORO 0.30-0.40", (0.30, 0.40)), ("PORO 0.00-0.12", (0.0, 0.12)))
+# The sweeps' strategies: the default (auto names what it picked) and the paper's own, one frustum per primary.
+SWEEP_STRATEGIES = ("auto", "frustum")
 PANEL_NUMBERS = ("colour_bar_box", "stages_ms", "primary_cells", "primary_exposure", "context_kept", "border_line_width", "total_over_baseline")
 
 
@@ -88,34 +92,45 @@ def difference_row(rows, numbers, reference):
     return [row]
 
 
-def common_colour_range(exp, model, prop, steps):
-    """(LO, HI) spanning `prop`'s 2nd..98th percentiles at every step (`cutaway inspect --json`)."""
-    lows, highs = [], []
-    for step in steps:
-        ranges = exp.inspect(model, "--time-step", step)["property_ranges"][f"{prop}@step {step}"]
-        lows.append(ranges["p2"])
-        highs.append(ranges["p98"])
-    return min(lows), max(highs)
+def range_holding(ranges, primary_ranges):
+    """(LO, HI) over the `ranges` (`cutaway inspect --json` property ranges): their 2nd..98th
+    percentiles, widened to hold each primary range of `primary_ranges` within the values'
+    extremes, as `render` widens one frame's colour range: one range for every panel of a figure,
+    so one colour means one value in all of them and every primary keeps its own colour."""
+    low, high = min(r["p2"] for r in ranges), max(r["p98"] for r in ranges)
+    lowest, highest = min(r["min"] for r in ranges), max(r["max"] for r in ranges)
+    for lo, hi in primary_ranges:
+        low, high = min(low, max(lo, lowest)), max(high, min(hi, highest))
+    return low, high
+
+
+def common_colour_range(exp, model, prop, steps, primary_range):
+    """`prop`'s colour range over every step of `steps` holding `primary_range` (range_holding)."""
+    return range_holding([exp.inspect(model, "--time-step", step)["property_ranges"][f"{prop}@step {step}"] for step in steps],
+                         [primary_range])
 
 
 def models_options(exp, presets):
     """Fig. 14's rows fitted to their data (`cutaway inspect --json`): NTG's primaries are its
     lowest-NTG cells, min to 2nd percentile (the shale; its top 1% is a tie at NTG 1.0 that holds a
     fifth of the cells, which hid the primaries among look-alike secondaries), coloured from its
-    minimum to its 98th percentile so the primaries keep their own colours; SWAT at its last
-    report step (at step 0 the water is connate nearly everywhere: one colour over 85% of the
-    model); the two-property row's PERMX coloured over its whole range (the high-porosity channels
+    minimum to its 98th percentile so the primaries keep their own colours; SWAT halfway through
+    the flood, the swept zone behind the front (figure_specs.FRONT_RANGE) as primaries (at step
+    0 the water is connate nearly everywhere: one colour over 85% of the model; at the last step
+    the top 1% took the colour of most of the flooded field); the two-property row's PERMX coloured over its whole range (the high-porosity channels
     are its most permeable cells: a 2-98% range put every primary at the bar's top)."""
     def ranges(preset, *options):
         return exp.inspect(f"preset:{preset}", *options)["property_ranges"]
     ntg = ranges(presets[2], "--property", "NTG")["NTG"]
     swat_steps = exp.inspect(f"preset:{presets[3]}", "--property", "SWAT")["dynamic_properties"]["SWAT"]
     permx = ranges(presets[0], "--property", "PERMX")["PERMX"]
+    front_lo, front_hi = figure_specs.FRONT_RANGE
     # NTG's colours from its minimum (not its 2nd percentile): the primaries lie below that and
     # would all take the bar's lowest colour.
     return {"NTG": (f", primaries NTG {ntg['min']:.2f}-{ntg['p2']:.2f}",
                     ["--range", ntg["min"], ntg["p2"], "--colour-range", ntg["min"], ntg["p98"]]),
-            "SWAT": (f" step {swat_steps - 1}", ["--step", swat_steps - 1]),
+            "SWAT": (f" step {(swat_steps - 1) // 2}, primaries SWAT {front_lo:g}-{front_hi:g}",
+                     ["--step", (swat_steps - 1) // 2, "--range", front_lo, front_hi]),
             "two_properties": ("", ["--colour-range", permx["min"], permx["max"]])}
 
 
@@ -131,10 +146,12 @@ def measure(exp):
     steps = (0, 2) if quick else (0, 1, 2, 3)
     presets = ("zaphirus", "zaphirus", "petra", "petra") if quick else cx.PRESETS
     layers_model = "preset:zaphirus" if quick else "preset:opharine"
-    swat_range = common_colour_range(exp, model, "SWAT", steps)
+    swat_range = common_colour_range(exp, model, "SWAT", steps, figure_specs.FRONT_RANGE)
+    poro = exp.inspect(layers_model, "--property", "PORO")["property_ranges"]["PORO"]
+    layers_colours = range_holding([poro], [window for _, window in FIG15_RANGES])
     specs = figure_specs.figure_specs(model, steps, swat_range) + [
         figure_specs.models_figure(presets, grid_size, models_options(exp, presets)),
-        figure_specs.layers_figure(layers_model, FIG15_RANGES, grid_size)]
+        figure_specs.layers_figure(layers_model, FIG15_RANGES, layers_colours, grid_size)]
     numbers = {}
     with tempfile.TemporaryDirectory(prefix="cutaway-figures-") as scratch:
         for spec in sorted(specs, key=lambda s: s["name"]):
@@ -142,29 +159,32 @@ def measure(exp):
 
     apertures = (0, 60, 120, 180) if quick else (0, 30, 60, 90, 120, 150, 180)
     fractions = (0.003, 0.03) if quick else (0.001, 0.003, 0.01, 0.03, 0.1)
-    repeat, rounds = (1, 1) if quick else (3, 3)
+    repeat, rounds = (1, 1) if quick else (3, 5)
     sweep_size = (320, 180) if quick else size
-    aperture_rows, stats = sweeps.sweep(exp, sweep_model, sweep_size, [(a, ["--aperture", a, a]) for a in apertures],
-                                        figure_specs.CAMERA, repeat, rounds)
-    fraction_rows, _ = sweeps.sweep(exp, sweep_model, sweep_size, [(f, ["--primary-fraction", f]) for f in fractions],
-                                    figure_specs.CAMERA, repeat, rounds)
+    timed = {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rounds": rounds}
+    aperture_panels, stats = sweeps.sweep(exp, sweep_model, sweep_size, [(a, ["--aperture", a, a]) for a in apertures],
+                                          figure_specs.CAMERA, repeat, rounds, SWEEP_STRATEGIES)
+    fraction_panels, _ = sweeps.sweep(exp, sweep_model, sweep_size, [(f, ["--primary-fraction", f]) for f in fractions],
+                                      figure_specs.CAMERA, repeat, rounds, SWEEP_STRATEGIES)
     return {
         "experiment": "figures", "quick": quick, "model": model, "size": list(size), "camera": list(figure_specs.CAMERA[1:]),
         "context": exp.context(stats), "configuration": stats["configuration"], "figures": numbers,
-        "time_vs_aperture": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rounds": rounds, "rows": aperture_rows},
-        "time_vs_primary_fraction": {"model": sweep_model, "size": list(sweep_size), "repeat": repeat, "rounds": rounds, "rows": fraction_rows}}
+        "time_vs_aperture": {**timed, "strategies": aperture_panels},
+        "time_vs_primary_fraction": {**timed, "strategies": fraction_panels}}
 
 
 def plot(exp, document):
     """The two sweeps' plots, from the document (the composed figures are renders: measure makes them)."""
     device = cx.device_label(document["context"])
-    for name, xlabel, setting, log_x in (
-            ("time_vs_aperture", "full aperture angle (degrees, horizontal = vertical)", "1% primaries", False),
-            ("time_vs_primary_fraction", "primary fraction (of active cells, log scale)", "aperture 60 degrees", True)):
+    for name, xlabel, setting, log_x, format_value in (
+            ("time_vs_aperture", "full aperture angle (degrees, horizontal = vertical)", "1% primaries", False,
+             lambda v: f"{v:g} deg"),
+            ("time_vs_primary_fraction", "primary fraction (of active cells, log scale)", "aperture 60 degrees", True,
+             lambda v: f"{100 * v:g}%")):
         sweep = document[name]
         what = name.removeprefix("time_vs_").replace("_", " ")
         sweeps.plot_sweep(sweep, xlabel, f"Frame time vs {what} ({sweep['model']}, {sweep['size'][0]}x{sweep['size'][1]}, "
-                                         f"{setting})\non {device}", exp.path(name + ".png"), log_x=log_x)
+                                         f"{setting})\non {device}", exp.path(name + ".png"), format_value, log_x=log_x)
 
 
 def main():

@@ -1,39 +1,68 @@
-"""Frame time against one parameter (aperture angle, primary fraction): stats per value, and a plot."""
+"""Frame time against one parameter (aperture angle, primary fraction), for each cut strategy asked
+for: stats per value, and a plot with one panel per strategy."""
+import itertools
 import statistics
 
 import cutaway_experiment as cx
 
 
-def sweep(exp, model, size, flag_values, base_options, repeat, rounds=1):
-    """Renders `model` once per (label, options) in `flag_values` in each of `rounds` rounds (the
-    values interleaved, so a machine whose speed drifts slows every value alike: one pass gave the
-    same setting 184 ms in one sweep and 130 ms in the other); returns rows of label + each stage's
-    median over the rounds, and the last render's stats."""
-    runs = [[] for _ in flag_values]
+def sweep(exp, model, size, flag_values, base_options, repeat, rounds, strategies):
+    """Renders `model` once per (label, options) in `flag_values` and per strategy of `strategies`
+    in each of `rounds` rounds (values and strategies interleaved, so a machine whose speed drifts
+    slows every point alike: one pass gave the same setting 184 ms in one sweep and 130 ms in the
+    other). Returns per strategy its rows (label, each stage's median over the rounds, the rounds'
+    totals, the strategy the renderer drew with: "auto" names the one it picked) and the last
+    render's stats."""
+    points = list(itertools.product(strategies, flag_values))
+    runs = [[] for _ in points]
     for _ in range(rounds):
-        for k, (value, options) in enumerate(flag_values):
-            stats = exp.render(model, *base_options, *options, "--size", *size, "--warmup", 1, "--repeat", repeat)
+        for k, (strategy, (_, options)) in enumerate(points):
+            stats = exp.render(model, *base_options, *options, "--strategy", strategy, "--size", *size,
+                               "--warmup", 1, "--repeat", repeat)
             runs[k].append(stats)
-    rows = []
-    for (value, _), value_runs in zip(flag_values, runs):
+    by_strategy = {strategy: [] for strategy in strategies}
+    for (strategy, (value, _)), value_runs in zip(points, runs):
         stages = {s: statistics.median(r["stages_ms"][s] for r in value_runs) for s in value_runs[0]["stages_ms"]}
-        rows.append({"value": value, "stages_ms": stages, "primary_cells": value_runs[0]["primary_cells"],
-                     "total_ms_by_round": [r["stages_ms"]["total"] for r in value_runs]})
-    return rows, stats
+        by_strategy[strategy].append({"value": value, "stages_ms": stages, "primary_cells": value_runs[0]["primary_cells"],
+                                      "strategy": value_runs[0]["strategy"]["name"],
+                                      "total_ms_by_round": [r["stages_ms"]["total"] for r in value_runs]})
+    return [{"requested": s, "rows": rows} for s, rows in by_strategy.items()], stats
 
 
-def plot_sweep(sweep, xlabel, title, path, log_x=False):
-    """One line per stage (total in bold black) of a sweep as the document holds it ({"rows": [{"value",
-    "stages_ms"}]}), the legend below the axes, clear of the curves."""
+def strategy_names(rows, format_value):
+    """What a panel's renderer drew with: one name, or each name with the values it drew."""
+    groups = [(name, [r["value"] for r in group]) for name, group in itertools.groupby(rows, key=lambda r: r["strategy"])]
+    if len(groups) == 1:
+        return groups[0][0]
+    return ", ".join(f"{name} at {format_value(values[0])}" +
+                     (f"-{format_value(values[-1])}" if len(values) > 1 else "") for name, values in groups)
+
+
+def plot_sweep(sweep, xlabel, title, path, format_value, log_x=False):
+    """Per strategy of the sweep ({"strategies": [{"requested", "rows": [{"value", "stages_ms",
+    "strategy", "total_ms_by_round"}]}]}) a panel: one line per stage, the total in bold black with
+    bars from the fastest to the slowest round; the panel names the strategy the renderer drew with.
+    The legend below the axes, clear of the curves."""
     plt = cx.pyplot()
-    fig, ax = plt.subplots(figsize=(cx.PLOT_WIDTH_IN, 4.6))
-    cx.plot_stages(ax, [r["value"] for r in sweep["rows"]], [r["stages_ms"] for r in sweep["rows"]])
-    if log_x:
-        ax.set_xscale("log")
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel("time per frame (ms, median)")
-    ax.set_ylim(bottom=0)
+    panels = sweep["strategies"]
+    fig, axes = plt.subplots(1, len(panels), figsize=(cx.PLOT_WIDTH_IN, 4.8), squeeze=False)
+    for ax, panel in zip(axes[0], panels):
+        rows = panel["rows"]
+        x = [r["value"] for r in rows]
+        cx.plot_stages(ax, x, [r["stages_ms"] for r in rows])
+        totals = [r["stages_ms"]["total"] for r in rows]
+        low = [t - min(r["total_ms_by_round"]) for t, r in zip(totals, rows)]
+        high = [max(r["total_ms_by_round"]) - t for t, r in zip(totals, rows)]
+        ax.errorbar(x, totals, yerr=[low, high], fmt="none", ecolor="black", capsize=3, linewidth=1)
+        if log_x:
+            ax.set_xscale("log")
+        ax.set_xlabel(xlabel)
+        ax.set_ylim(bottom=0)
+        drawn = strategy_names(rows, format_value)
+        ax.set_title(f"{panel['requested']}" + (f" (drew {drawn})" if drawn != panel["requested"] else " (the paper's)"
+                                                 if panel["requested"] == "frustum" else ""), fontsize="medium")
+    axes[0][0].set_ylabel(f"time per frame (ms, median of {sweep['rounds']} rounds;\nbars: fastest to slowest round)")
     fig.suptitle(title)
-    fig.legend(*ax.get_legend_handles_labels(), ncol=3, loc="lower center", frameon=False)
+    fig.legend(*axes[0][0].get_legend_handles_labels(), ncol=3, loc="lower center", frameon=False)
     cx.save_figure(fig, path)
     plt.close(fig)

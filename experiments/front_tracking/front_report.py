@@ -45,11 +45,13 @@ def four_steps(model, step_count):
 
 
 def _date_at(steps, time_step):
-    """The date at a fractional report step, interpolated between the two report dates."""
+    """The date at a fractional report step, interpolated between the two report dates, rounded
+    as the frames' captions are (eclipse::date_at: halves away from zero; Python's round() takes
+    halves to even, which put zaphirus's titles a day before their frames)."""
     lower = min(int(math.floor(time_step)), len(steps) - 1)
     upper = min(lower + 1, len(steps) - 1)
     a, b = (datetime.date.fromisoformat(steps[i]["date"][:10]) for i in (lower, upper))
-    return a + datetime.timedelta(days=round((b - a).days * (time_step - lower)))
+    return a + datetime.timedelta(days=math.floor((b - a).days * (time_step - lower) + 0.5))
 
 
 def compose_panels(rows, title, path):
@@ -174,9 +176,11 @@ def flicker_pops_figure(document, path):
         axes[r][0].set_ylabel("pixels changed (share)")
         axes[r][1].set_title(f"{name}: primary pops")
         axes[r][1].set_ylabel("cells in + out")
+        axes[r][1].yaxis.set_major_locator(plt.MaxNLocator(integer=True))  # pops are whole cells
     for ax in axes[-1]:
         ax.set_xlabel("report step (fractional)")
-    axes[0][1].legend(title="--coherence")
+    # The legend below the panels: inside one it covered that panel's peaks.
+    fig.legend(*axes[0][1].get_legend_handles_labels(), title="--coherence", ncol=2, loc="lower center", frameon=False)
 
     cx.save_figure(fig, path)
     plt.close(fig)

@@ -25,7 +25,12 @@ the machine does not fall on one configuration only. The viewer's --stats file h
 frame's loop time (events, script, panel, render when something changed, blit, swap) and its
 fenced stage times; medians over the frames of all rounds are reported, with each round's median
 beside them.
+
+The gallery's screenshot comes from one more, untimed run: a 1920x1080 window (960x540 with
+--quick) with the panel and overlays at --ui-scale 2.25 and the colour bar's text sized to print,
+so every text prints at 7 pt or more when the figure is 182 mm wide; the same script.
 """
+import math
 import os
 import shutil
 import subprocess
@@ -35,6 +40,10 @@ import tempfile
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
 import report_markdown as md  # noqa: E402
+
+
+PRINTED_TEXT_PT = 7  # the gallery's smallest text at 182 mm wide (experiments/figures/compose.py MIN_TEXT_PT)
+SCREENSHOT_UI_SCALE = 2.25  # Dear ImGui's 13 px font at 29 px: 2.8 mm when 1920 px print 182 mm wide
 
 
 def script_text(turns, ranges, idle, screenshot, drag):
@@ -84,18 +93,25 @@ def measure(exp):
             for name, (scale, interaction_fps) in configurations.items():
                 script = os.path.join(scratch, f"script-{name}-{round_index}.txt")
                 stats = os.path.join(scratch, f"stats-{name}-{round_index}.json")
-                shot = name == "1.0" and round_index == 0
                 with open(script, "w") as f:
-                    # The screenshot goes to scratch and is copied at the end: rewriting the tracked
-                    # figure during the runs would make the viewer record a dirty revision.
-                    f.write(script_text(turns, ranges, idle, os.path.join(scratch, "viewer_petra.png") if shot else None,
-                                        drag=interaction_fps > 0))
+                    f.write(script_text(turns, ranges, idle, None, drag=interaction_fps > 0))
                 command = [xvfb_run, "-a", "-s", "-screen 0 1920x1080x24", exp.cutaway, "view", "preset:petra",
                            "--size", str(size[0]), str(size[1]), "--render-scale", str(scale),
                            "--interaction-fps", str(interaction_fps), "--script", script, "--stats", stats]
                 subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
                 with open(stats) as f:
                     runs[name].append(cx.json.loads(f.read()))
+        # The screenshot goes to scratch and is copied at the end: rewriting the tracked figure
+        # during the runs would make the viewer record a dirty revision.
+        shot_size = (960, 540) if exp.quick else (1920, 1080)
+        text_px = math.ceil(PRINTED_TEXT_PT * 25.4 / 72 / cx.PRINT_WIDTH_MM * shot_size[0])
+        script = os.path.join(scratch, "script-screenshot.txt")
+        with open(script, "w") as f:
+            f.write(script_text(turns, ranges, idle, os.path.join(scratch, "viewer_petra.png"), drag=False))
+        subprocess.run([xvfb_run, "-a", "-s", "-screen 0 1920x1080x24", exp.cutaway, "view", "preset:petra",
+                        "--size", str(shot_size[0]), str(shot_size[1]), "--ui-scale", str(SCREENSHOT_UI_SCALE),
+                        "--text-height", str(text_px), "--interaction-fps", "0", "--script", script],
+                       check=True, stdout=subprocess.DEVNULL)
         first = runs["1.0"][0]
         # Before the copy changes a tracked file (the revision would read dirty).
         context = {**exp.context(first), "gl_version": first["gl_version"], "gl_platform": first["gl_platform"],

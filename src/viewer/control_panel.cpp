@@ -1,4 +1,5 @@
 #include "viewer/control_panel.h"
+#include "viewer/imgui_session.h"
 
 #include <algorithm>
 #include <cmath>
@@ -53,7 +54,7 @@ std::vector<std::string> property_names(const grid::CornerPointGrid& grid) {
 void play_controls(ViewerState& state) {
     if (ImGui::Button(state.playing ? "pause [SPACE]" : "play [SPACE]")) state.playing = !state.playing;
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(120);
+    ImGui::SetNextItemWidth(ui_px(120));
     choice_combo("coherence", state.coherence, temporal::coherence_names());
     ImGui::SliderInt("frames/step", &state.frames_per_step, 1, 60);
 }
@@ -73,7 +74,7 @@ unsigned property_section(ViewerState& state, const ViewerScene& scene) {
     }
     const PropertyHistogram& histogram = scene.histogram();
     ImGui::PlotHistogram("##histogram", histogram.counts.data(), int(histogram.counts.size()), 0,
-                         "active cells", 0.0f, FLT_MAX, ImVec2(0, 60));
+                         "active cells", 0.0f, FLT_MAX, ImVec2(0, ui_px(60)));
     float low = property.primary_range.min, high = property.primary_range.max;
     const float lo_limit = property.colour_range.min, hi_limit = property.colour_range.max;
     bool range_changed = ImGui::SliderFloat("primary min", &low, lo_limit, hi_limit, "%.4g");
@@ -259,8 +260,11 @@ unsigned volumes_section(ViewerState& state, const ViewerScene& scene, PanelRequ
 
 unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const PanelInfo& info,
                             PanelRequests& requests) {
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(420, 0), ImGuiCond_FirstUseEver);  // 360 clipped "aperture H (full)"
+    ImGui::SetNextWindowPos(ImVec2(ui_px(8), ui_px(8)), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(ui_px(420), 0), ImGuiCond_FirstUseEver);  // 360 clipped "aperture H (full)"
+    // Above the timing overlay (timing_overlay.h): at most the height it leaves, scrolled beyond.
+    const float free_height = ImGui::GetMainViewport()->WorkSize.y - state.overlay_height - ui_px(24);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImVec2(FLT_MAX, std::max(free_height, ui_px(100))));
     unsigned changes = change_none;
     if (ImGui::Begin("cutaway")) {
         ImGui::TextWrapped("%s", scene.description().c_str());
@@ -275,7 +279,9 @@ unsigned draw_control_panel(ViewerState& state, const ViewerScene& scene, const 
         if (ImGui::CollapsingHeader("view", ImGuiTreeNodeFlags_DefaultOpen)) changes |= view_section(state, info, requests);
     }
     const float width = ImGui::GetIO().DisplaySize.x;
-    const float share = ImGui::IsWindowCollapsed() || width <= 0 ? 0.0f : (ImGui::GetWindowPos().x + ImGui::GetWindowWidth()) / width;
+    const float right = std::max(ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowWidth(),
+                                 state.overlay_width > 0 ? ui_px(8) + state.overlay_width : 0.0f);
+    const float share = width <= 0 ? 0.0f : right / width;
     if (std::abs(share - state.panel_share) > 1e-3f) changes |= change_frame;
     state.panel_share = share;
     ImGui::End();

@@ -11,11 +11,20 @@
 
 namespace cutaway::viewer {
 
-ImGuiSession::ImGuiSession(gl::GlfwWindow& window) {
+namespace {
+constexpr float default_font_px = 13.0f;  // Dear ImGui's ProggyClean
+}  // namespace
+
+ImGuiSession::ImGuiSession(gl::GlfwWindow& window, float ui_scale) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini written into the working directory
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // no imgui.ini written into the working directory
+    ImFontConfig font;
+    font.SizePixels = default_font_px * ui_scale;
+    io.Fonts->AddFontDefault(&font);
     ImGui::StyleColorsDark();
+    ImGui::GetStyle().ScaleAllSizes(ui_scale);
     if (!ImGui_ImplGlfw_InitForOpenGL(window.handle(), true) || !ImGui_ImplOpenGL3_Init("#version 450")) {
         ImGui::DestroyContext();
         throw gl::GlError("Dear ImGui could not start on the window's OpenGL context");
@@ -27,6 +36,8 @@ ImGuiSession::~ImGuiSession() {
     ImGui_ImplGlfw_Shutdown();
     ImGui::DestroyContext();
 }
+
+float ui_px(float px) { return px * ImGui::GetFontSize() / default_font_px; }
 
 void ImGuiSession::begin_frame() {
     ImGui_ImplOpenGL3_NewFrame();

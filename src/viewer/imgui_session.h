@@ -7,7 +7,9 @@ namespace cutaway::viewer {
 class ImGuiSession {
 public:
     /// Call after the window's own input callbacks are installed: ImGui chains to them.
-    explicit ImGuiSession(gl::GlfwWindow& window);
+    /// `ui_scale`: the text and widgets at this multiple of Dear ImGui's 13 px default font (the
+    /// font rasterised at that size, not magnified), e.g. 2 for a screenshot that prints.
+    ImGuiSession(gl::GlfwWindow& window, float ui_scale);
     ~ImGuiSession();
     ImGuiSession(const ImGuiSession&) = delete;
     ImGuiSession& operator=(const ImGuiSession&) = delete;
@@ -16,5 +18,9 @@ public:
     /// Draws the frame's widgets onto the bound framebuffer (or only ends the frame when `draw` is false).
     void end_frame(bool draw);
 };
+
+/// `px` pixels of the default 13 px font's layout at the session's scale (widget sizes the
+/// panels set themselves; Dear ImGui scales its own style).
+float ui_px(float px);
 
 }  // namespace cutaway::viewer

@@ -1,4 +1,5 @@
 #include "viewer/step_overlay.h"
+#include "viewer/imgui_session.h"
 
 #include <imgui.h>
 
@@ -8,8 +9,8 @@ void draw_step_overlay(const std::string& caption, float colour_bar_share) {
     if (caption.empty()) return;
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
     // Top right, beside the columns the colour bar keeps (the panel holds the top left).
-    const float right = viewport->WorkPos.x + viewport->WorkSize.x * (1.0f - colour_bar_share) - 8;
-    ImGui::SetNextWindowPos(ImVec2(right, viewport->WorkPos.y + 8), ImGuiCond_Always, ImVec2(1, 0));
+    const float right = viewport->WorkPos.x + viewport->WorkSize.x * (1.0f - colour_bar_share) - ui_px(8);
+    ImGui::SetNextWindowPos(ImVec2(right, viewport->WorkPos.y + ui_px(8)), ImGuiCond_Always, ImVec2(1, 0));
     // Sized from this frame's text: auto-resizing follows a frame late and clips a caption that grew.
     const ImVec2 padding = ImGui::GetStyle().WindowPadding;
     const ImVec2 text = ImGui::CalcTextSize(caption.c_str());

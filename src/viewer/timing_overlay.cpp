@@ -1,26 +1,27 @@
 #include "viewer/timing_overlay.h"
+#include "viewer/imgui_session.h"
 
 #include <imgui.h>
 
 namespace cutaway::viewer {
 
-void draw_timing_overlay(const FrameTimings& timings, float colour_bar_share) {
+ImVec2 draw_timing_overlay(const FrameTimings& timings) {
     const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    // Bottom right, beside the columns the colour bar keeps (its lowest labels reach down to the
-    // bottom third of the window, where the overlay's table is).
-    const float right = viewport->WorkPos.x + viewport->WorkSize.x * (1.0f - colour_bar_share) - 8;
-    ImGui::SetNextWindowPos(ImVec2(right, viewport->WorkPos.y + viewport->WorkSize.y - 8), ImGuiCond_Always, ImVec2(1, 1));
+    ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x + ui_px(8), viewport->WorkPos.y + viewport->WorkSize.y - ui_px(8)),
+                            ImGuiCond_Always, ImVec2(0, 1));
     ImGui::SetNextWindowBgAlpha(0.6f);
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav;
     if (ImGui::Begin("timing", nullptr, flags)) {
         // Medians of the loops that drew a frame and of those that did not (nothing changed): the
         // last loop alone, often an idle one, gave a rate the viewer never reached while drawing.
+        // Short lines: the overlay is no wider than the panel above it.
         const double frame_ms = timings.loop_ms_rendering();
-        ImGui::Text("frame (median of those drawn): %.1f ms, %.1f fps", frame_ms, frame_ms > 0 ? 1000.0 / frame_ms : 0.0);
-        ImGui::Text("loop without drawing (median): %.1f ms", timings.loop_ms_idle());
+        ImGui::Text("frame %.1f ms, %.1f fps", frame_ms, frame_ms > 0 ? 1000.0 / frame_ms : 0.0);
+        ImGui::TextUnformatted("(median of the frames drawn)");
+        ImGui::Text("loop without drawing %.1f ms", timings.loop_ms_idle());
         ImGui::Separator();
-        ImGui::Text("stage medians of the last %zu frames (fenced)", timings.window());
+        ImGui::Text("stages: medians of %zu frames", timings.window());
         if (ImGui::BeginTable("stages", 3, ImGuiTableFlags_SizingFixedFit)) {
             ImGui::TableSetupColumn("stage");
             ImGui::TableSetupColumn("wall ms");
@@ -40,7 +41,9 @@ void draw_timing_overlay(const FrameTimings& timings, float colour_bar_share) {
             ImGui::EndTable();
         }
     }
+    const ImVec2 size = ImGui::GetWindowSize();
     ImGui::End();
+    return size;
 }
 
 }  // namespace cutaway::viewer

@@ -79,7 +79,7 @@ ViewerApp::ViewerApp(ViewerOptions options)
     : options_(std::move(options)),
       script_(options_.script.empty() ? std::nullopt : std::optional<ScriptRunner>(parse_viewer_script(options_.script))),
       window_(window_options(options_)),
-      imgui_(install_key_queue(window_, pressed_keys_)),
+      imgui_(install_key_queue(window_, pressed_keys_), options_.ui_scale),
       shaders_(gl::ShaderLibrary::default_root()),
       shader_watcher_(shaders_.root()),
       timings_(std::size_t(options_.timing_window)) {
@@ -174,7 +174,9 @@ bool ViewerApp::frame(bool last_frame_due) {
         const pipeline::CutawayRenderer& renderer = scene_->renderer();
         const float colour_bar_share = renderer.status(settings_).colour_bar_reserved_width / float(renderer.status().width);
         draw_step_overlay(info_.step_caption, colour_bar_share);
-        draw_timing_overlay(timings_, colour_bar_share);
+        const ImVec2 overlay = draw_timing_overlay(timings_);
+        state_.overlay_width = overlay.x;
+        state_.overlay_height = overlay.y;
     }
     if (requests.reset_camera) changes |= press_key("R");
     if (!requests.volumes.empty()) changes |= panel_volume_command(requests.volumes);
@@ -211,7 +213,7 @@ bool ViewerApp::frame(bool last_frame_due) {
     pass.loop_ms = milliseconds_since(started);
     timings_.add_loop(pass);
     // Frame 0 compiles the programs and the first frame of a size allocates its targets: their
-    // times say nothing about the size (the first 640 x 360 frame on petra took 287 ms, the next 138).
+    // times say nothing about the size (on petra the first 640 x 360 frame took far longer than the next).
     if (pass.view_moving && !resized && frame_index_ > 0) interaction_.frame_drawn(pass.loop_ms, state_.interaction_fps);
     if (frame_index_ == 0) std::cout << "cutaway view: ready (first frame drawn)\n" << std::flush;
     ++frame_index_;

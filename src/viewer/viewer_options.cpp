@@ -23,6 +23,10 @@ void add_viewer_options(CLI::App& c, ViewerOptions& o) {
         ->check(app::finite_in(0, 240));
     c.add_option("--timing-window", o.timing_window, "frames in the overlay's rolling medians")
         ->check(app::finite_in(1, 1000));
+    c.add_option("--ui-scale", o.ui_scale,
+                 "the control panel's and overlays' text and widgets at this multiple of their size (0.5..4; "
+                 "2 for a high-density screen or a screenshot that prints)")
+        ->check(app::finite_in(0.5, 4));
 }
 
 }  // namespace cutaway::viewer

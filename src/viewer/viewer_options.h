@@ -18,6 +18,7 @@ struct ViewerOptions {
     float render_scale = 1;     ///< render size / window size
     float interaction_fps = 10; ///< frames per second held while the view moves (0: full size always)
     int timing_window = 31;     ///< frames in the rolling medians
+    float ui_scale = 1;         ///< --ui-scale: the panel's and overlays' text and widgets at this multiple
 };
 
 void add_viewer_options(CLI::App& command, ViewerOptions& options);

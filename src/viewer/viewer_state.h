@@ -22,6 +22,10 @@ struct ViewerState {
     /// Share of the window's width the control panel covers from its left edge (0: hidden or
     /// collapsed): the model is framed to the right of it.
     float panel_share = 0;
+    /// The timing overlay's size last frame (pixels): it stands under the panel, which leaves it
+    /// this height, and the model is framed right of whichever of the two is wider.
+    float overlay_width = 0;
+    float overlay_height = 0;
     float render_scale = 1;                        ///< render size / window framebuffer size
     /// While the view moves, frames are drawn smaller to hold this many per second (interaction_
     /// resolution.h); the full size once it stops. 0: always the full size.
