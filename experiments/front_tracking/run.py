@@ -164,8 +164,12 @@ def measure(exp):
                                               scratch)
     document["targets"] = front_report.targets(document)
     document["context"] = exp.context({"gl_renderer": document["timing"]["gl_renderer"]})
-    front_report.flicker_pops_figure(document, front.out("flicker_pops.png"))
     return document
+
+
+def plot(exp, document):
+    """The flicker and pops plot from the document (--report-only redraws it)."""
+    front_report.flicker_pops_figure(document, os.path.join(exp.results, "flicker_pops.png"))
 
 
 def report(exp, document):
@@ -175,7 +179,7 @@ def report(exp, document):
 
 
 def main():
-    cx.Experiment(__doc__, "front_tracking.json").run(measure, report)
+    cx.Experiment(__doc__, "front_tracking.json").run(measure, report, plot)
 
 
 if __name__ == "__main__":
