@@ -1,5 +1,7 @@
 #include "cutaway/frame_caption.h"
 
+#include <algorithm>
+
 #include "annotation/label_placement.h"
 
 namespace cutaway::pipeline {
@@ -8,7 +10,12 @@ void FrameCaption::draw(const gl::Framebuffer& target, int width, int height, co
                         float min_text_px) {
     const auto caption = annotation::place_caption(text, width, height, reserved_right, min_text_px);
     if (!caption) return;
-    batch_.add_rectangle(caption->box, {255, 255, 255, 210});
+    // An opaque box with a dark outline: a translucent one over the model's far corner showed the
+    // corner lightened, a shape a reader took for the model's geometry.
+    const float outline = std::max(1.0f, caption->line.scale);
+    const annotation::PixelRect box = caption->box;
+    batch_.add_rectangle(box, {60, 60, 60, 255});  // the outline, inside the box's padding
+    batch_.add_rectangle({box.x0 + outline, box.y0 + outline, box.x1 - outline, box.y1 - outline}, {255, 255, 255, 255});
     batch_.add_text(caption->line, {20, 20, 20, 255});
     batch_.draw(target, width, height, nullptr);
 }
