@@ -15,7 +15,8 @@ void FrameCaption::draw(const gl::Framebuffer& target, int width, int height, co
     const float outline = std::max(1.0f, caption->line.scale);
     const annotation::PixelRect box = caption->box;
     batch_.add_rectangle(box, {60, 60, 60, 255});  // the outline, inside the box's padding
-    batch_.add_rectangle({box.x0 + outline, box.y0 + outline, box.x1 - outline, box.y1 - outline}, {255, 255, 255, 255});
+    // Light grey, not white: a box the colour of the background would read as a hole in the model.
+    batch_.add_rectangle({box.x0 + outline, box.y0 + outline, box.x1 - outline, box.y1 - outline}, {232, 232, 232, 255});
     batch_.add_text(caption->line, {20, 20, 20, 255});
     batch_.draw(target, width, height, nullptr);
 }
