@@ -25,7 +25,7 @@ PRESETS = ("zaphirus", "petra", "opharine", "sapphire")
 STAGES = ("cut_surface", "culling", "secondary", "primary", "ssao", "mean_filter", "post")
 STAGE_LABELS = {"cut_surface": "stage 1: cut surface", "culling": "culling (visible path)", "secondary": "stage 2: secondaries",
                 "primary": "stage 3: primaries", "ssao": "SSAO", "mean_filter": "mean filter",
-                "post": "composite (post)", "total": "total"}
+                "post": "composite (post)", "total": "total"}  # their colours: stage_style.COLOURS
 write_json = exio.write_json
 TOOLS = {"cutaway": "cutaway", "bench": "bench_cutaway", "bench_cut_volumes": "bench_cut_volumes"}
 
@@ -258,14 +258,10 @@ def pyplot():
     return plt
 
 
-def plot_stages(ax, x, stages_ms):
-    """One line per stage (STAGES order, the colour cycle's colours; total in bold black) of the
-    per-x dicts `stages_ms` ({stage: ms}); stages missing from the first (a run from before the
-    stage was timed) are left out."""
-    for stage in STAGES + ("total",):
-        if stage in stages_ms[0]:
-            style = {"color": "black", "linewidth": 2.2} if stage == "total" else {}
-            ax.plot(x, [s[stage] for s in stages_ms], marker="o", markersize=3.5, label=STAGE_LABELS[stage], **style)
+def min_max_bars(centres, samples):
+    """matplotlib's yerr for bars from each point's fastest to its slowest sample: `centres` the
+    plotted values (medians), `samples` per point the values measured."""
+    return [[c - min(s) for c, s in zip(centres, samples)], [max(s) - c for c, s in zip(centres, samples)]]
 
 
 def print_size_problems(fig):

@@ -51,8 +51,9 @@ def figure_specs(model, steps, swat_range):
         # same number of cells whatever the water did.
         {"name": "fig11_aperture180_steps",
          "title": f"Fig. 11: aperture 180 degrees over the generator's SWAT steps ({model[7:]}), primaries SWAT 0.5-1",
-         "panels": [(f"SWAT step {s}", ["--aperture-180", "--property", "SWAT", "--step", s, "--range", *FRONT_RANGE,
-                                        "--colour-range", *swat_range])
+         # The panel's title names the step: no caption in the frame repeats it.
+         "panels": [(f"SWAT step {s}", ["--aperture-180", "--no-caption", "--property", "SWAT", "--step", s,
+                                        "--range", *FRONT_RANGE, "--colour-range", *swat_range])
                     for s in steps]},
         {"name": "fig12_hidden_lines", "title": "Fig. 12: internal lines of secondaries shown / hidden", "zoom": True,
          "camera": LINES_VIEW,

@@ -1,9 +1,9 @@
 """Frame time against one parameter (aperture angle, primary fraction), for each cut strategy asked
 for: stats per value, and a plot with one panel per strategy."""
 import itertools
-import statistics
 
 import cutaway_experiment as cx
+import stage_style
 
 
 def sweep(exp, model, size, flag_values, base_options, repeat, rounds, strategies):
@@ -22,7 +22,7 @@ def sweep(exp, model, size, flag_values, base_options, repeat, rounds, strategie
             runs[k].append(stats)
     by_strategy = {strategy: [] for strategy in strategies}
     for (strategy, (value, _)), value_runs in zip(points, runs):
-        stages = {s: statistics.median(r["stages_ms"][s] for r in value_runs) for s in value_runs[0]["stages_ms"]}
+        stages = stage_style.median_stages([r["stages_ms"] for r in value_runs])
         by_strategy[strategy].append({"value": value, "stages_ms": stages, "primary_cells": value_runs[0]["primary_cells"],
                                       "strategy": value_runs[0]["strategy"]["name"],
                                       "total_ms_by_round": [r["stages_ms"]["total"] for r in value_runs]})
@@ -42,26 +42,23 @@ def plot_sweep(sweep, xlabel, title, path, format_value, log_x=False):
     """Per strategy of the sweep ({"strategies": [{"requested", "rows": [{"value", "stages_ms",
     "strategy", "total_ms_by_round"}]}]}) a panel: one line per stage, the total in bold black with
     bars from the fastest to the slowest round; the panel names the strategy the renderer drew with.
-    The legend below the axes, clear of the curves."""
+    The panels share their time axis (apart, 0-250 ms beside 0-900 ms read as alike). The legend
+    below the axes, clear of the curves."""
     plt = cx.pyplot()
     panels = sweep["strategies"]
-    fig, axes = plt.subplots(1, len(panels), figsize=(cx.PLOT_WIDTH_IN, 4.8), squeeze=False)
+    fig, axes = plt.subplots(1, len(panels), figsize=(cx.PLOT_WIDTH_IN, 4.8), sharey=True, squeeze=False)
     for ax, panel in zip(axes[0], panels):
         rows = panel["rows"]
         x = [r["value"] for r in rows]
-        cx.plot_stages(ax, x, [r["stages_ms"] for r in rows])
-        totals = [r["stages_ms"]["total"] for r in rows]
-        low = [t - min(r["total_ms_by_round"]) for t, r in zip(totals, rows)]
-        high = [max(r["total_ms_by_round"]) - t for t, r in zip(totals, rows)]
-        ax.errorbar(x, totals, yerr=[low, high], fmt="none", ecolor="black", capsize=3, linewidth=1)
+        stage_style.plot_stages(ax, x, [r["stages_ms"] for r in rows], [r["total_ms_by_round"] for r in rows])
         if log_x:
             ax.set_xscale("log")
         ax.set_xlabel(xlabel)
-        ax.set_ylim(bottom=0)
         drawn = strategy_names(rows, format_value)
         ax.set_title(f"{panel['requested']}" + (f" (drew {drawn})" if drawn != panel["requested"] else " (the paper's)"
                                                  if panel["requested"] == "frustum" else ""), fontsize="medium")
-    axes[0][0].set_ylabel(f"time per frame (ms, median of {sweep['rounds']} rounds;\nbars: fastest to slowest round)")
+    axes[0][0].set_ylim(bottom=0)  # after every panel's curves: the shared top fits them all
+    axes[0][0].set_ylabel(f"time per frame (ms, {stage_style.rounds_note(sweep['rounds'])})")
     fig.suptitle(title)
     fig.legend(*axes[0][0].get_legend_handles_labels(), ncol=3, loc="lower center", frameon=False)
     cx.save_figure(fig, path)

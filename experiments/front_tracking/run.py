@@ -127,7 +127,8 @@ class FrontExperiment:
         panels = []
         for step in front_report.four_steps(model, len(steps)):
             image = os.path.join(scratch, f"fig11_{step}.png")
-            self.exp.render(egrid, *CAMERA, "--aperture-180", "--property", model["property"], "--time-step", step, "--range",
+            # The panel's title gives the date and step: no caption in the frame repeats them.
+            self.exp.render(egrid, *CAMERA, "--aperture-180", "--no-caption", "--property", model["property"], "--time-step", step, "--range",
                             *model["range"], "--colour-range", *colour_range, "--size", *size,
                             "--text-height", print_text_px(size[0]), image=image)
             panels.append((f"{steps[step]['date']} (report step {step})", image))

@@ -1,19 +1,23 @@
 #!/usr/bin/python3
-"""Scale: one cutaway frame of models from 7.5K to 100M cells, frame time and peak memory.
+"""Scale: a cutaway frame of models from 7.5K to 100M cells, frame time and peak memory.
 
 Interface (for experiments/run_all):
   experiments/scale/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR] [--replot]
 Writes results/scale/scale.json (per model: active cells, stats.json stage times and faces drawn,
 wall time of the whole command including generating the model in memory, peak resident memory of
-the process and per active cell, machine context), results/scale/README.md and
-paper_figures/scale.png (frame time and peak bytes per active cell against active cells).
---quick: zaphirus and petra at 480x270 (results/quick/scale/). --replot: only the plot, from scale.json.
+the process and per active cell, each the median of the model's rounds with every round's own
+beside; machine context), results/scale/README.md and paper_figures/scale.png (frame time and
+peak bytes per active cell against active cells). --quick: zaphirus and petra at 480x270, 2 rounds
+(results/quick/scale/). --replot: only the plot, from scale.json.
 
 Each model is `cutaway render preset:NAME` at 1920x1080 with the main job's settings (1% of PORO
 primaries, 9x9 mean filter, SSAO, ray-cast borders, --draw visible), one warm-up frame (none above
 a million cells) and one timed frame (plus the same frame once more unfenced, frame_ms_unfenced),
-run as its own process so its peak resident set (getrusage of the child) is its own. Every model
-runs twice: with the default cut strategy, auto (cut_surface/cut_strategy_choice.h: frustum-clusters,
+run as its own process so its peak resident set (getrusage of the child) is its own. A model whose
+first command took under REPEAT_BELOW_S runs ROUNDS times, in rounds over those models after the
+first pass over all (so a machine whose speed drifts slows each alike), and its numbers are the
+medians; the larger ones keep their one timed frame (a round of scale-100m takes minutes). Every
+model runs twice: with the default cut strategy, auto (cut_surface/cut_strategy_choice.h: frustum-clusters,
 one frustum per IJK box of adjacent primaries, O(boxes x wall area), below 10,000 primary cells on a GPU and 500 on llvmpipe;
 frustum-sweep, the same union as chessboard sweeps over the boxes' back faces, O(pixels), from
 there; cut_surface/frustum_sweep.cpp says how its walls differ), and with the one of the two that
@@ -21,6 +25,7 @@ auto did not pick. The 100M model takes about 5 minutes per strategy here (1 of 
 """
 import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -29,6 +34,7 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "common"))
 import cutaway_experiment as cx  # noqa: E402
 import report_markdown as md  # noqa: E402
+import stage_style  # noqa: E402
 import strategy_style  # noqa: E402
 
 FULL = ("zaphirus", "petra", "opharine", "sapphire", "scale-1m", "scale-10m", "scale-100m")
@@ -36,6 +42,12 @@ QUICK = ("zaphirus", "petra")
 DEFAULT = "auto"  # picks one of STRATEGIES by primary count
 STRATEGIES = ("frustum-clusters", "frustum-sweep")
 MEMORY_TARGET = 100  # peak resident bytes per active cell (issue 14)
+ROUNDS = 3
+# Here everything below scale-10m (frames under 1.2 s) and scale-10m with frustum-sweep (2.5 s
+# frame, 20 s command) get their rounds: about 100 s more than one round's 570 s.
+REPEAT_BELOW_S = 30
+# The ring around a point timed once, among points with rounds.
+ONE_FRAME = {"marker": "o", "markersize": 12, "markerfacecolor": "none", "markeredgecolor": "grey", "markeredgewidth": 0.8}
 
 
 def measure_one(exp, preset, size, strategy):
@@ -56,16 +68,29 @@ def measure_one(exp, preset, size, strategy):
     return stats, wall, usage.ru_maxrss * 1024  # ru_maxrss is in KiB on Linux
 
 
-def row_for(preset, stats, wall, peak):
+def row_for(preset, rounds):
+    """The model's row from its `rounds` ((stats, wall s, peak RSS bytes) each): the first's counts
+    and memory break-down; stage times, unfenced frame, load, set-up, wall and peak the medians of
+    the rounds, every round's beside ("rounds")."""
+    stats = rounds[0][0]
     cells = stats["active_cells"]
+    each = [{"stages_ms": s["stages_ms"], "frame_ms_unfenced": s.get("frame_ms_unfenced"), "model_load_s": s.get("model_load_s"),
+             "renderer_setup_s": s.get("renderer_setup_s"), "command_wall_s": wall, "peak_resident_bytes": peak,
+             "peak_bytes_per_active_cell": peak / cells} for s, wall, peak in rounds]
+    median = {key: statistics.median(r[key] for r in each)
+              for key in ("frame_ms_unfenced", "model_load_s", "renderer_setup_s", "command_wall_s", "peak_resident_bytes")}
     return {"preset": preset, "active_cells": cells, "primary_cells": stats["primary_cells"],
-            "stages_ms": stats["stages_ms"], "frame_ms_unfenced": stats.get("frame_ms_unfenced"),
-            "faces_drawn": stats.get("faces_drawn"), "model_load_s": stats.get("model_load_s"),
-            "renderer_setup_s": stats.get("renderer_setup_s"), "strategy": (stats.get("strategy") or {}).get("name"),
+            "stages_ms": stage_style.median_stages([r["stages_ms"] for r in each]),
+            "faces_drawn": stats.get("faces_drawn"), "strategy": (stats.get("strategy") or {}).get("name"),
             "requested": (stats.get("strategy") or {}).get("requested"),
-            "command_wall_s": wall, "peak_resident_bytes": peak, "peak_bytes_per_active_cell": peak / cells,
+            **median, "peak_bytes_per_active_cell": median["peak_resident_bytes"] / cells,
             "gpu_memory_bytes": stats.get("gpu_memory_bytes"), "memory_bytes": stats.get("memory_bytes"),
-            "frames_redrawn": stats.get("frames_redrawn")}
+            "frames_redrawn": stats.get("frames_redrawn"), "rounds": each}
+
+
+def rounds_of(row):
+    """The row's rounds (rows from before the rounds: the row itself, their one)."""
+    return row.get("rounds", [row])
 
 
 def is_default(row):
@@ -81,8 +106,9 @@ def label(row):
 def frame_rows(rows):
     out = []
     for r in rows:
-        s = r["stages_ms"]
-        out.append([r["preset"], label(r), f"{r['active_cells']:,}", f"{s['total']:.0f}", f"{r['frame_ms_unfenced']:.0f}",
+        s, frames = r["stages_ms"], [q["stages_ms"]["total"] for q in rounds_of(r)]
+        out.append([r["preset"], label(r), f"{r['active_cells']:,}", len(frames), f"{s['total']:.0f}",
+                    f"{min(frames):.0f}-{max(frames):.0f}" if len(frames) > 1 else "-", f"{r['frame_ms_unfenced']:.0f}",
                     f"{s['cut_surface']:.0f}", f"{s.get('culling', 0):.0f}", f"{s['secondary']:.0f}",
                     f"{r['faces_drawn']['secondary']:,}", f"{r['model_load_s']:.1f}", f"{r['renderer_setup_s']:.1f}",
                     f"{r['command_wall_s']:.1f}", f"{r['peak_resident_bytes'] / 2**20:.0f}", f"{r['peak_bytes_per_active_cell']:.0f}"])
@@ -104,22 +130,31 @@ def report(exp, document):
     rows, size, context = document["models"], document["size"], document["context"]
     largest_default = [r for r in rows if is_default(r)][-1]
     memory = context.get("memory_bytes")
+    single = [f"{r['preset']} {r['strategy']}" for r in rows if len(rounds_of(r)) == 1]
+    rounds = document.get("rounds", 1)
+    timed = ("one timed frame" if rounds == 1 else
+             f"one timed frame in each of {rounds} rounds (a process each; the rounds of all such models in turn, after a "
+             "first pass over every model) where the first command took under "
+             f"{document['repeat_below_s']:g} s, the times and peak memory then the medians of the rounds (the memory "
+             "break-down below: the first round's)" + (f"; one timed frame only for {', '.join(single)} (a round would "
+                                                       "cost too much)" if single else ""))
     result = md.Report(
-        f"Scale: one cutaway frame per model, {rows[0]['preset']} to {rows[-1]['preset']} ({size})",
-        "Frame time and peak memory of one `cutaway render preset:NAME` per model, from "
+        f"Scale: a cutaway frame per model, {rows[0]['preset']} to {rows[-1]['preset']} ({size})",
+        "Frame time and peak memory of `cutaway render preset:NAME` per model, from "
         f"{rows[0]['active_cells']:,} to {rows[-1]['active_cells']:,} active cells, each run as its own process (so its peak resident set is its own), with the main job's settings (1% of PORO primaries, 9x9 "
-        "mean filter, SSAO, ray-cast borders, --draw visible), one warm-up frame (none above a million cells) and one "
-        f"timed frame. Frame: the stats' fenced total; wall: the whole command (model generated in memory, renderer "
+        f"mean filter, SSAO, ray-cast borders, --draw visible), one warm-up frame (none above a million cells) and {timed}. "
+        f"Frame: the stats' fenced total; wall: the whole command (model generated in memory, renderer "
         f"set-up, warm-up, timed frame, the same frame unfenced, no metrics). Cut strategies: the default ({DEFAULT}: "
         "frustum-clusters below 10,000 primary cells on a GPU and 500 on llvmpipe, frustum-sweep from there; marked "
         "'(default)') and the other of the two. Targets (issue 14): scale-10m frame <= 5 s, wall <= 30 s, <= 100 bytes "
         "per active cell; scale-100m renders" + (f" (this machine: {memory / 2**30:.0f} GB)." if memory else "."),
-        headline=f"{largest_default['preset']}: {largest_default['stages_ms']['total'] / 1000:.1f} s frame, "
-                 f"{largest_default['peak_bytes_per_active_cell']:.0f} bytes per active cell")
+        headline=f"{largest_default['preset']}: {largest_default['stages_ms']['total'] / 1000:.1f} s frame"
+                 + (" (one timed frame)" if len(rounds_of(largest_default)) == 1 else f" (median of {len(rounds_of(largest_default))})")
+                 + f", {largest_default['peak_bytes_per_active_cell']:.0f} bytes per active cell")
     result.section("Frame time and peak memory")
-    result.table(["model", "cut strategy", "active cells", "frame ms", "unfenced ms", "cut surface ms", "culling ms",
-                  "stage 2 ms", "stage 2 faces", "load s", "set-up s", "wall s", "peak RSS MB", "bytes / active cell"],
-                 frame_rows(rows), align="ll" + "r" * 12)
+    result.table(["model", "cut strategy", "active cells", "rounds", "frame ms", "frame min-max ms", "unfenced ms",
+                  "cut surface ms", "culling ms", "stage 2 ms", "stage 2 faces", "load s", "set-up s", "wall s", "peak RSS MB",
+                  "bytes / active cell"], frame_rows(rows), align="ll" + "r" * 14)
     redrawn = [r for r in rows if r.get("frames_redrawn")]
     result.text("Frames drawn twice because the culling's face buffer (sized to what frames select, grown when one "
                 "selects more) had to grow: " + (", ".join(f"{r['preset']} {r['strategy']} {r['frames_redrawn']}" for r in redrawn)
@@ -137,8 +172,9 @@ def report(exp, document):
 def plot(exp, document):
     """Frame, stage 1, culling, stage 2, the command's wall time and peak bytes per active cell
     against active cells, a panel each; one colour and marker per strategy (strategy_style), filled
-    where auto picked it, open for the other; no connecting line: each point is a different model
-    (issue 15), named in the memory panel."""
+    where auto picked it, open for the other; each point the median of the model's rounds with a bar
+    from the fastest to the slowest, ringed where the model was timed once; no connecting line: each
+    point is a different model (issue 15), named in the memory panel."""
     rows, path = document["models"], exp.path("scale.png")
     plt = cx.pyplot()
     fig, axes = plt.subplots(3, 2, figsize=(cx.PLOT_WIDTH_IN, 8.4), sharex=True)
@@ -150,12 +186,17 @@ def plot(exp, document):
               ("peak resident bytes / active cell", lambda r: r["peak_bytes_per_active_cell"], MEMORY_TARGET,
                f"{MEMORY_TARGET} bytes"))
     strategies = strategy_style.ordered(r["strategy"] for r in rows)
+    # A ring marks a model timed once, where the others have rounds (then a point is their median).
+    single = [r for r in rows if len(rounds_of(r)) == 1] if any(len(rounds_of(r)) > 1 for r in rows) else []
     for ax, (title, value, target, target_label) in zip(axes.flat, panels):
         for name in strategies:
             for picked in (True, False):
                 mine = [r for r in rows if r["strategy"] == name and is_default(r) == picked]
-                ax.plot([r["active_cells"] for r in mine], [value(r) for r in mine], linestyle="none",
-                        markerfacecolor=None if picked else "none", **strategy_style.style(name))
+                y = [value(r) for r in mine]
+                ax.errorbar([r["active_cells"] for r in mine], y, cx.min_max_bars(y, [[value(q) for q in rounds_of(r)] for r in mine]),
+                            linestyle="none", capsize=2, elinewidth=1, markerfacecolor=None if picked else "none",
+                            **strategy_style.style(name))
+        ax.plot([r["active_cells"] for r in single], [value(r) for r in single], linestyle="none", **ONE_FRAME)
         if target:
             ax.axhline(target, color="grey", linestyle="--", linewidth=1)
             ax.annotate(f"target: {target_label}", (0.02, target), xycoords=("axes fraction", "data"),
@@ -180,29 +221,47 @@ def plot(exp, document):
     handles = [plt.Line2D([], [], linestyle="none", markerfacecolor=None if picked else "none",
                           label=f"{name} ({'picked by ' + DEFAULT if picked else DEFAULT + ' picked the other'})",
                           **strategy_style.style(name)) for name in strategies for picked in (True, False)]
+    rounds = max(len(rounds_of(r)) for r in rows)
+    if single:
+        handles.append(plt.Line2D([], [], linestyle="none", label=f"one timed frame (a round took over "
+                                  f"{document['repeat_below_s']:g} s): no bar", **ONE_FRAME))
     fig.legend(handles=handles, ncol=2, loc="lower center", frameon=False)
-    fig.suptitle(f"Scale: one frame per model at {document['size']}, {DEFAULT} and the other strategy\n"
-                 f"{cx.device_label(document['context'])}")
+    timed = "one timed frame per model" if rounds == 1 else (
+        f"a point: the median of {rounds} rounds (bars: fastest to slowest round)" + ("; ringed: one timed frame" if single else ""))
+    fig.suptitle(f"Scale at {document['size']}, {DEFAULT} and the other strategy\n{timed}\n{cx.device_label(document['context'])}")
     cx.save_figure(fig, path)
     plt.close(fig)
 
 
 def measure(exp):
-    """Every model with the default strategy and the other one; returns the document."""
-    size = "480x270" if exp.quick else "1920x1080"
-    rows, stats = [], None
+    """Every model with the default strategy and the other one, then the further rounds of the
+    cheap ones; returns the document."""
+    size, rounds = ("480x270", 2) if exp.quick else ("1920x1080", ROUNDS)
+    runs, stats = [], None
+
+    def run_once(preset, strategy, runs_of_model):
+        nonlocal stats
+        stats, wall, peak = measure_one(exp, preset, size, strategy)
+        runs_of_model.append((stats, wall, peak))
+        print(f"{preset}, {stats['strategy']['name']} (round {len(runs_of_model)}): {stats['stages_ms']['total']:.0f} ms "
+              f"frame, {wall:.1f} s wall, {peak / stats['active_cells']:.0f} bytes per active cell", flush=True)
+
     for preset in QUICK if exp.quick else FULL:
         picked = None
         for strategy in (DEFAULT,) + STRATEGIES:
             if strategy == picked:
                 continue  # the default drew it already
-            stats, wall, peak = measure_one(exp, preset, size, strategy)
-            rows.append(row_for(preset, stats, wall, peak))
-            picked = picked or rows[-1]["strategy"]
-            print(f"{preset}, {label(rows[-1])}: {rows[-1]['stages_ms']['total']:.0f} ms frame, {wall:.1f} s wall, "
-                  f"{rows[-1]['peak_bytes_per_active_cell']:.0f} bytes per active cell", flush=True)
+            runs.append((preset, strategy, []))
+            run_once(*runs[-1])
+            picked = picked or stats["strategy"]["name"]
+    cheap = [run for run in runs if run[2][0][1] < REPEAT_BELOW_S]
+    for _ in range(rounds - 1):
+        for run in cheap:
+            run_once(*run)
     return {"experiment": "scale", "quick": exp.quick, "size": size, "default": DEFAULT, "strategies": STRATEGIES,
-            "context": {**exp.context(stats), "gl_version": stats.get("gl_version")}, "models": rows}
+            "rounds": rounds, "repeat_below_s": REPEAT_BELOW_S,
+            "context": {**exp.context(stats), "gl_version": stats.get("gl_version")},
+            "models": [row_for(preset, rounds_of_model) for preset, _, rounds_of_model in runs]}
 
 
 def main():

@@ -52,10 +52,9 @@ def plot(exp, result):
             continue
         shown_ms += [t for c in records for t in c["trials_ms"]]
         medians = [statistics.median(c["trials_ms"]) for c in records]
-        low = [m - min(c["trials_ms"]) for m, c in zip(medians, records)]
-        high = [max(c["trials_ms"]) - m for m, c in zip(medians, records)]
         threads = result["protocol"].get("cpu_threads") if caster == "cpu" else None
-        ax.errorbar(voxels, medians, yerr=[low, high], marker=marker, color=colour, capsize=3,
+        ax.errorbar(voxels, medians, yerr=cx.min_max_bars(medians, [c["trials_ms"] for c in records]), marker=marker,
+                    color=colour, capsize=3,
                     label=f"{name}{f', {threads} threads' if threads else ''}: median and min-max of "
                           f"{len(records[0]['trials_ms'])} trials per cube")
     ax.set_yscale("log")

@@ -72,6 +72,12 @@ struct SecondaryShade {
     uint flags;   // common/pixel_flags.glsl
 };
 
+// Whether a point seen from inside its cell (`inside_view`) shows the cut surface: not where the
+// cut is clamped to the rear shell, there a shell face seen from inside is the surface shown.
+bool shows_cut_surface(bool inside_view, CutSample here, uint face_class) {
+    return inside_view && here.cut_depth > 0.0 && !(face_class == face_class_shell && cut_is_rear_shell(here.texel));
+}
+
 // The point `world` seen at model-camera pixel `pixel`, `here` its cut sample, on a face of
 // `compact_cell` with `face_info` (common/face_varyings.glsl) and outward unit `face_normal`;
 // `edge_opacity`: the cell edge line's there (common/line_style.glsl face_edge_opacity),
@@ -81,15 +87,14 @@ SecondaryShade shade_secondary(CutSample here, vec3 world, ivec2 pixel, uint com
                                vec3 face_normal, float edge_opacity, bool edge_line) {
     bool inside_view = (face_info & 4u) != 0u;
     SecondaryShade s;
+    bool shows_cut = shows_cut_surface(inside_view, here, face_info & 3u);
     s.normal = face_normal;
-    if (inside_view) {  // a branch: only cut fill rebuilds the cut's normal
-        // Where the cut is clamped to the rear shell, a shell face seen from inside takes its own
-        // plane: the cut's normal there follows the shell's triangles, a shade per triangle.
-        bool rear_shell_face = here.cut_depth == 0.0 || ((face_info & 3u) == face_class_shell && cut_is_rear_shell(here.texel));
-        s.normal = rear_shell_face ? -face_normal : cut_normal_at(here.texel);
-    }
+    // A branch: only cut fill rebuilds the cut's normal. Where the cut is clamped to the rear
+    // shell, a shell face seen from inside takes its own plane: the cut's normal there follows
+    // the shell's triangles, a shade per triangle.
+    if (inside_view) s.normal = shows_cut ? cut_normal_at(here.texel) : -face_normal;
     s.colour = lit(cell_colour(compact_cell), s.normal, world);
-    s.flags = inside_view ? flag_cut_fill : 0u;
+    s.flags = (inside_view ? flag_cut_fill : 0u) | (shows_cut ? flag_shows_cut : 0u);
     bool hide_lines = false;  // on the cut fill, with --hide-internal-lines
 #ifdef HIDE_INTERNAL_LINES
     hide_lines = inside_view;

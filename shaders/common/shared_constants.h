@@ -19,6 +19,10 @@ CUTAWAY_SHARED_CONST uint flag_cut_fill = 2u;    // a cell's inside seen through
 CUTAWAY_SHARED_CONST uint flag_border = 4u;      // border line where a face meets the cut
 CUTAWAY_SHARED_CONST uint flag_edge = 8u;        // cell edge line
 CUTAWAY_SHARED_CONST uint flag_shell_cut = 16u;  // border line on a shell face
+// Cut fill showing the cut surface itself (not a shell face where the cut is clamped to the rear
+// shell): the pixel's stored depth is its cell's far face, the surface seen is the cut's
+// (post/ssao.comp takes the cut's depth there).
+CUTAWAY_SHARED_CONST uint flag_shows_cut = 64u;
 // A well tube (stage 3, primary/well.frag): its pixel shows no cell (id 0), and the flags' bits
 // from well_index_shift up hold the well's index in the renderer's well set. The distributed
 // compositor carries flags as floats, exact below 2^24: at most max_drawn_wells wells.
@@ -85,6 +89,7 @@ CUTAWAY_SHARED_CONST uint img_cut_normals = 6u;     // the cut's world normals (
 CUTAWAY_SHARED_CONST uint img_post_ambient = 4u;       // SSAO factor, linear depth (RG32F)
 CUTAWAY_SHARED_CONST uint img_post_shell_depth = 5u;   // the uncut shell's linear depth (R32F)
 CUTAWAY_SHARED_CONST uint img_post_final_colour = 6u;  // the composited frame (RGBA8)
+CUTAWAY_SHARED_CONST uint img_post_cut_depth = 7u;     // SSAO: the cut's depth where the cut fill shows it (R32F)
 
 // Uniform block binding points of the per-frame cameras (common/cameras.glsl,
 // src/cutaway/camera_blocks.h).

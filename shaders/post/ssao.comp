@@ -10,6 +10,11 @@
 // HALF_RESOLUTION: one invocation per 2x2 block, shading the block's even pixel (2t) with the same
 // full-resolution samples, and storing that pixel's depth beside the factor for the composite's
 // depth-aware upsampling (post/composite.comp, ambient_at): a quarter of the work.
+// CUT_DEPTH (the cut was made from the model camera): where a pixel shows the cut surface
+// (flag_shows_cut) the depth stored there is its cell's far face, behind the cut; the cut's own
+// depth at the pixel stands in, so a wall cut through thin layers is one surface, not a sawtooth
+// of far faces that darkened into a lattice (fig. 11's rear wall). The stored depth stays the
+// face's: the border test, the MPI compositing and the identity tests read it.
 layout(local_size_x = 64, local_size_y = 16) in;  // gl::dispatch_over says why
 #include "common/shared_constants.h"
 
@@ -21,6 +26,16 @@ uniform vec2 projection_scale;   // P[0][0], P[1][1]
 uniform vec2 viewport_size;
 uniform float radius;            // render units
 uniform float strength;
+#ifdef CUT_DEPTH
+layout(rg32ui, binding = img_scene_id) uniform readonly uimage2D scene_id;          // compact cell + 1, pixel flags
+layout(r32f, binding = img_post_cut_depth) uniform readonly image2D cut_depth;     // the resolved cut, the model camera's
+// Outside the images both loads read 0: not on the cut, the stored depth (0 there too).
+float depth_shown(ivec2 texel, float stored) {
+    return (imageLoad(scene_id, texel).g & flag_shows_cut) != 0u ? imageLoad(cut_depth, texel).r : stored;
+}
+#else
+float depth_shown(ivec2 texel, float stored) { return stored; }
+#endif
 
 // The eye-space point seen at window position `window` at linear depth `depth`, from the
 // per-pixel factors ndc_per_px = 2 / (viewport_size * projection_scale) and ndc_origin =
@@ -39,7 +54,7 @@ void main() {
     if (any(greaterThanEqual(pixel, ivec2(viewport_size)))) return;
     vec2 window = vec2(pixel) + 0.5;  // the pixel's centre, as gl_FragCoord.xy
     uvec2 here = imageLoad(normal_depth, pixel).rg;
-    float here_depth = packed_value(here);
+    float here_depth = depth_shown(pixel, packed_value(here));
     if (here_depth <= 0.0) {  // background: a branch, so that background-only SIMD lanes skip the samples
         imageStore(ambient, target, vec4(1.0, 0.0, 0.0, 0.0));
         return;
@@ -64,7 +79,7 @@ void main() {
                          direction.x * golden_turn.y + direction.y * golden_turn.x);
         ivec2 texel = ivec2(window + offset);
         // Outside the image a load reads 0: no depth, no occlusion (selects, not branches).
-        float depth = packed_value(imageLoad(normal_depth, texel).rg);
+        float depth = depth_shown(texel, packed_value(imageLoad(normal_depth, texel).rg));
         vec3 d = eye_position(vec2(texel) + 0.5, depth, ndc_per_px, ndc_origin) - position;
         float distance2 = dot(d, d);
         float occludes = max(dot(normal, d) * inversesqrt(distance2 + 1e-12) - 0.05, 0.0) / (1.0 + distance2 * inverse_radius2);

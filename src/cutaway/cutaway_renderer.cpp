@@ -460,7 +460,10 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
     case FramePass::shell_contours: primary_.draw_shell_depth(draw_context(f.camera), scene_); return;
     case FramePass::reset_depth_test: glDepthFunc(GL_LESS); return;
     case FramePass::combine_scene: hooks_.combine_scene(scene_); return;
-    case FramePass::ssao: ssao_.apply(scene_, post_, f.camera, f.settings, f.settings.ssao_radius * frame_.radius()); return;
+    case FramePass::ssao:
+        ssao_.apply(scene_, post_, f.camera, f.settings, f.settings.ssao_radius * frame_.radius(),
+                    f.plan.cut_drawn && same_view(f.camera, f.cut_camera) ? &cut_.surface : nullptr);
+        return;
     case FramePass::composite:
         composite_.apply(scene_, post_, f.settings, width_, height_);
         empty_vertex_array_.bind();

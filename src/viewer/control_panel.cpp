@@ -72,9 +72,12 @@ unsigned property_section(ViewerState& state, const ViewerScene& scene) {
         o.primary_fraction = 0;
         changes |= change_selection;
     }
+    ImGui::Text("%zu primary cells of %zu active", scene.primary_count(), scene.grid().active_count());
+    // The histogram's caption on its own line: written over the bars it could not be read.
     const PropertyHistogram& histogram = scene.histogram();
-    ImGui::PlotHistogram("##histogram", histogram.counts.data(), int(histogram.counts.size()), 0,
-                         "active cells", 0.0f, FLT_MAX, ImVec2(0, ui_px(60)));
+    ImGui::TextDisabled("active cells per %s value", name.c_str());
+    ImGui::PlotHistogram("##histogram", histogram.counts.data(), int(histogram.counts.size()), 0, nullptr, 0.0f,
+                         FLT_MAX, ImVec2(0, ui_px(60)));
     float low = property.primary_range.min, high = property.primary_range.max;
     const float lo_limit = property.colour_range.min, hi_limit = property.colour_range.max;
     bool range_changed = ImGui::SliderFloat("primary min", &low, lo_limit, hi_limit, "%.4g");
@@ -84,7 +87,6 @@ unsigned property_section(ViewerState& state, const ViewerScene& scene) {
         o.primary_fraction = 0;
         changes |= change_selection;
     }
-    ImGui::Text("%zu primary cells of %zu active", scene.primary_count(), scene.grid().active_count());
     if (const std::size_t steps = scene.step_count(); steps > 0) {
         int step = std::max(o.step, 0);
         if (ImGui::SliderInt("time step", &step, 0, int(steps) - 1)) {

@@ -4,6 +4,7 @@ scratch folder. Run by ctest (label cpu): /usr/bin/python3 -m unittest report_pl
 import json
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -14,6 +15,7 @@ sys.path.insert(0, os.path.join(REPO, "experiments", "common"))
 import cutaway_experiment as cx  # noqa: E402
 import report_markdown as md  # noqa: E402
 import results_index  # noqa: E402
+import stage_style  # noqa: E402
 import strategy_style  # noqa: E402
 
 PYTHON = "/usr/bin/python3"
@@ -118,7 +120,10 @@ class CommandLineTest(unittest.TestCase):
         for name in experiments:
             self.assertTrue(any(row.startswith(f"| {name} |") or row.startswith(f"| [{name}]") for row in rows), name)
         with open(os.path.join(self.scratch, "results", "volume_fig7", "fig7.json")) as f:
-            ratio = json.load(f)["summary"]["cpu_over_gpu"]
+            eyes = json.load(f)["eyes"]
+        # The headline's ratio: of the casters' medians over the eyes of each eye's median trial.
+        medians = {c: statistics.median(statistics.median(e[c]["trials_ms"]) for e in eyes) for c in ("gpu", "cpu")}
+        ratio = medians["cpu"] / medians["gpu"]
         fig7 = next(row for row in rows if row.startswith("| [volume_fig7]"))
         self.assertIn(f"({ratio:.2f}x)", fig7)
 
@@ -130,6 +135,21 @@ class PlotTest(unittest.TestCase):
         self.assertEqual(names - set(strategy_style.STYLES), set())
         self.assertEqual(len({c for c, _ in strategy_style.STYLES.values()}), len(strategy_style.STYLES))
         self.assertEqual(len({m for _, m in strategy_style.STYLES.values()}), len(strategy_style.STYLES))
+
+    def test_no_stage_has_a_strategy_colour(self):
+        stages = {c for s, c in stage_style.COLOURS.items() if s != "total"}  # the total: black, drawn bold
+        self.assertEqual(stages & {c for c, _ in strategy_style.STYLES.values()}, set())
+        self.assertEqual(len(set(stage_style.COLOURS.values())), len(stage_style.COLOURS))
+
+    def test_report_only_redraws_rounds_from_data_with_one_timed_frame(self):
+        for name, data in (("stage_over_path", "stage_over_path.json"), ("scale", "scale.json")):
+            folder = os.path.join(self.scratch, "results", name)
+            os.makedirs(folder)
+            shutil.copy(os.path.join(REPO, "results", name, data), folder)
+            result = run(os.path.join(REPO, "experiments", name, "run.py"), "--report-only", "--out", self.scratch)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertNotIn("text below", result.stderr)
+            self.assertTrue(os.path.exists(os.path.join(self.scratch, "paper_figures", name + ".png")), name)
 
     def test_device_label_names_what_the_data_recorded(self):
         self.assertEqual(cx.device_label({"gl_renderer": "NVIDIA H200/PCIe/SSE2"}), "NVIDIA H200")

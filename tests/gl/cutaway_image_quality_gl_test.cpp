@@ -223,5 +223,53 @@ TEST(CutawayImageQuality, CutWallsShowTheirColoursNotBlackLines) {
     }
 }
 
+/// SSAO's shading of the cut fill: per pixel showing a cell's inside (no line on it or its right
+/// neighbour), the luminance with SSAO over that without; returns the share of pixels on the fill
+/// where that ratio changes by more than 0.1 to the right neighbour (a wall shaded smoothly: few).
+double ssao_roughness_on_cut_fill(pipeline::CutawayRenderer& renderer, pipeline::FrameSettings settings,
+                                  const pipeline::Camera& camera) {
+    settings.ssao = false;
+    renderer.render(settings, camera);
+    const pipeline::IdImage ids = pipeline::RendererProbe(renderer).read_ids();
+    const gl::RgbaImage plain = pipeline::FrameReadback(renderer).read_image();
+    settings.ssao = true;
+    renderer.render(settings, camera);
+    const gl::RgbaImage shaded = pipeline::FrameReadback(renderer).read_image();
+    const std::uint32_t lines = pipeline::flag_edge | pipeline::flag_border | pipeline::flag_shell_cut;
+    auto fill = [&](std::size_t i) {
+        return ids.cell[i] != 0 && (ids.flags[i] & pipeline::flag_cut_fill) && !(ids.flags[i] & lines) &&
+               luminance(plain, i) > 10.0;
+    };
+    std::size_t steps = 0, pairs = 0;
+    for (std::size_t i = 0; i + 1 < ids.cell.size(); ++i) {
+        if ((i + 1) % std::size_t(ids.width) == 0 || !fill(i) || !fill(i + 1)) continue;
+        steps += std::abs(luminance(shaded, i) / luminance(plain, i) - luminance(shaded, i + 1) / luminance(plain, i + 1)) > 0.1;
+        ++pairs;
+    }
+    return pairs ? double(steps) / double(pairs) : 0.0;
+}
+
+TEST(CutawayImageQuality, SsaoSeesTheCutFillAsTheCutSurface) {
+    // Fig. 11's frame: an aperture-180 cut through petra's thin layers, primaries SWAT 0.5-1 at
+    // the generator's step 0. The cut fill's stored depths are the cells' far faces, a sawtooth
+    // behind the wall; SSAO read them and darkened the wall into a lattice. Reading the cut's
+    // depth there, SSAO shades the wall as one surface.
+    constexpr int w = 1280, h = 720;
+    auto renderer = make_renderer(petra(), w, h);
+    renderer->select(grid::select_primaries(petra(), *petra().dynamic_property("SWAT", 0), "SWAT", {0.5f, 1.0f}));
+    for (const float azimuth : {35.0f, 215.0f}) {
+        const pipeline::OrbitPose pose{azimuth, 30.0f, 0.0f, glm::vec3(0)};
+        pipeline::FrameSettings settings;
+        pipeline::set_aperture_180(settings);
+        const double roughness =
+            ssao_roughness_on_cut_fill(*renderer, settings, pipeline::make_orbit_camera(renderer->frame(), pose, w, h));
+        std::cout << "  azimuth " << azimuth << ": SSAO's change from a cut-fill pixel to the next " << roughness << "\n";
+        // Measured: 1.1% and 0.8% of the fill's pixels; with the far faces' depths (before the
+        // fix) 2.2% and 1.6%, the lattice's edges. What remains: the wall's foot and the creases
+        // where the fill meets other cells' faces, and SSAO's per-pixel sample rotation.
+        EXPECT_LT(roughness, 0.015);
+    }
+}
+
 }  // namespace
 }  // namespace cutaway::test
