@@ -25,18 +25,7 @@ uniform vec3 background;
 
 #include "common/packed_normal.glsl"
 
-vec3 rgb_to_hsv(vec3 c) {
-    vec4 K = vec4(0.0, -1.0 / 3.0, 2.0 / 3.0, -1.0);
-    vec4 p = mix(vec4(c.bg, K.wz), vec4(c.gb, K.xy), step(c.b, c.g));
-    vec4 q = mix(vec4(p.xyw, c.r), vec4(c.r, p.yzx), step(p.x, c.r));
-    float d = q.x - min(q.w, q.y);
-    return vec3(abs(q.z + (q.w - q.y) / (6.0 * d + 1e-10)), d / (q.x + 1e-10), q.x);
-}
-
-vec3 hsv_to_rgb(vec3 c) {
-    vec3 p = abs(fract(c.xxx + vec3(1.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0);
-    return c.z * mix(vec3(1.0), clamp(p - 1.0, 0.0, 1.0), c.y);
-}
+#include "common/hsv.glsl"
 
 #ifdef SSAO
 #ifdef HALF_AMBIENT
@@ -82,11 +71,7 @@ void main() {
     if (covered) colour *= ambient_at(texel);
 #endif
 #ifdef SATURATION
-    if (covered) {
-        vec3 hsv = rgb_to_hsv(colour);
-        hsv.y = clamp(hsv.y * (primary || well ? saturation_primary : saturation_secondary), 0.0, 1.0);
-        colour = hsv_to_rgb(hsv);
-    }
+    if (covered) colour = scale_saturation(colour, primary || well ? saturation_primary : saturation_secondary);
 #endif
 #ifdef SILHOUETTE
     // A doubled line in its own colour (the red of the shell-cut lines means something else): the

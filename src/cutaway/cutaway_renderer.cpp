@@ -469,7 +469,10 @@ void CutawayRenderer::run_pass(FramePass pass, const FrameStep& f) {
         empty_vertex_array_.bind();
         return;
     case FramePass::colour_bar:
-        colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_);
+        colour_bar_.draw(post_.final_framebuffer, width_, height_, colour_map_, label_,
+                         f.settings.saturation ? std::optional<BarSaturation>({f.settings.saturation_primary,
+                                                                                f.settings.saturation_secondary})
+                                               : std::nullopt);
         empty_vertex_array_.bind();
         return;
     case FramePass::well_labels:

@@ -12,15 +12,18 @@ OverlayBatch::OverlayBatch(const gl::ShaderLibrary& shaders)
     glEnableVertexArrayAttrib(vertex_array_.id(), 0);
     glEnableVertexArrayAttrib(vertex_array_.id(), 1);
     glEnableVertexArrayAttrib(vertex_array_.id(), 2);
+    glEnableVertexArrayAttrib(vertex_array_.id(), 3);
     glVertexArrayAttribFormat(vertex_array_.id(), 0, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, x));
     glVertexArrayAttribFormat(vertex_array_.id(), 1, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(Vertex, colour));
     glVertexArrayAttribFormat(vertex_array_.id(), 2, 1, GL_FLOAT, GL_FALSE, offsetof(Vertex, map_t));
-    for (GLuint a = 0; a < 3; ++a) glVertexArrayAttribBinding(vertex_array_.id(), a, 0);
+    glVertexArrayAttribFormat(vertex_array_.id(), 3, 1, GL_FLOAT, GL_FALSE, offsetof(Vertex, saturation));
+    for (GLuint a = 0; a < 4; ++a) glVertexArrayAttribBinding(vertex_array_.id(), a, 0);
 }
 
-void OverlayBatch::add_rectangle(const annotation::PixelRect& r, const Rgba8& c, float t_top, float t_bottom) {
-    const Vertex a{r.x0, r.y0, {c[0], c[1], c[2], c[3]}, t_top}, b{r.x1, r.y0, {c[0], c[1], c[2], c[3]}, t_top};
-    const Vertex d{r.x0, r.y1, {c[0], c[1], c[2], c[3]}, t_bottom}, e{r.x1, r.y1, {c[0], c[1], c[2], c[3]}, t_bottom};
+void OverlayBatch::add_rectangle(const annotation::PixelRect& r, const Rgba8& c, float t_top, float t_bottom,
+                                 float saturation) {
+    const auto v = [&](float x, float y, float t) { return Vertex{x, y, {c[0], c[1], c[2], c[3]}, t, saturation}; };
+    const Vertex a = v(r.x0, r.y0, t_top), b = v(r.x1, r.y0, t_top), d = v(r.x0, r.y1, t_bottom), e = v(r.x1, r.y1, t_bottom);
     vertices_.insert(vertices_.end(), {a, b, e, a, e, d});
 }
 
@@ -33,7 +36,7 @@ void OverlayBatch::add_segment(float x0, float y0, float x1, float y1, float wid
     if (!(length > 0)) return;
     // Half the width across the segment on either side.
     const float nx = -(y1 - y0) / length * 0.5f * width, ny = (x1 - x0) / length * 0.5f * width;
-    const auto v = [&](float x, float y) { return Vertex{x, y, {c[0], c[1], c[2], c[3]}, -1}; };
+    const auto v = [&](float x, float y) { return Vertex{x, y, {c[0], c[1], c[2], c[3]}, -1, 1}; };
     vertices_.insert(vertices_.end(), {v(x0 + nx, y0 + ny), v(x1 + nx, y1 + ny), v(x1 - nx, y1 - ny), v(x0 + nx, y0 + ny),
                                        v(x1 - nx, y1 - ny), v(x0 - nx, y0 - ny)});
 }

@@ -18,8 +18,9 @@ public:
     explicit OverlayBatch(const gl::ShaderLibrary& shaders);
 
     /// A rectangle of colour `c`, or of the colour map from `t_top` at y0 to `t_bottom` at y1 when
-    /// both are >= 0.
-    void add_rectangle(const annotation::PixelRect& r, const Rgba8& c, float t_top = -1, float t_bottom = -1);
+    /// both are >= 0, its saturation times `saturation` (the saturation contrast's factors).
+    void add_rectangle(const annotation::PixelRect& r, const Rgba8& c, float t_top = -1, float t_bottom = -1,
+                       float saturation = 1);
     /// Every stroke of `line` in colour `c`.
     void add_text(const annotation::TextLine& line, const Rgba8& c);
     /// A segment from (x0, y0) to (x1, y1), `width` pixels wide.
@@ -34,6 +35,7 @@ private:
         float x, y;
         std::uint8_t colour[4];
         float map_t;
+        float saturation;
     };
     std::vector<Vertex> vertices_;
     gl::Program program_;

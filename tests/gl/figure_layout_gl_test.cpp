@@ -244,5 +244,49 @@ TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
     EXPECT_GT(median_brightness, 0.5);
 }
 
+/// HSV saturation of an 8-bit RGB pixel.
+double hsv_saturation(const std::uint8_t* p) {
+    const int high = std::max({p[0], p[1], p[2]}), low = std::min({p[0], p[1], p[2]});
+    return high == 0 ? 0.0 : double(high - low) / double(high);
+}
+
+TEST(FigureLayout, SaturationContrastSplitsTheColourBar) {
+    // Under saturation contrast the secondaries are drawn desaturated: the bar's left half keeps
+    // the primaries' (boosted) colours, its right half shows the secondaries' so a reader can
+    // match either (fig. 9). The bar is found as the background pixels the contrast changes.
+    constexpr int width = 800, height = 450;
+    auto renderer = make_renderer(petra(), width, height);
+    renderer->select(grid::range_for_fraction(petra(), *petra().property("PORO"), "PORO", 0.01));
+    pipeline::FrameSettings settings;
+    settings.ssao = false;  // speed; the bar does not depend on it
+    const pipeline::Camera camera = pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height,
+                                                                renderer->status(settings).colour_bar_reserved_width);
+    renderer->render(settings, camera);
+    const gl::RgbaImage plain = pipeline::FrameReadback(*renderer).read_image();
+    const std::vector<std::uint32_t> ids = pipeline::FrameReadback(*renderer).read_eclipse_ids();
+    settings.saturation = true;
+    renderer->render(settings, camera);
+    const gl::RgbaImage contrast = pipeline::FrameReadback(*renderer).read_image();
+    std::vector<std::pair<int, double>> changed;  // x, saturation with contrast / without
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            if (ids[std::size_t(height - 1 - y) * std::size_t(width) + std::size_t(x)] != 0) continue;
+            const double before = hsv_saturation(plain.at(x, y));
+            if (before > 0.2 && !std::equal(plain.at(x, y), plain.at(x, y) + 3, contrast.at(x, y)))
+                changed.emplace_back(x, hsv_saturation(contrast.at(x, y)) / before);
+        }
+    ASSERT_GT(changed.size(), 500u) << "the colour bar's gradient changes under saturation contrast";
+    const auto [low, high] = std::minmax_element(changed.begin(), changed.end());
+    const double middle = 0.5 * (low->first + high->first);
+    std::vector<double> left, right;
+    for (const auto& [x, ratio] : changed) (x < middle ? left : right).push_back(ratio);
+    const double left_ratio = metrics::median(left), right_ratio = metrics::median(right);
+    std::cout << "  colour bar saturation with contrast / without: left half " << left_ratio << ", right half "
+              << right_ratio << " (factors " << settings.saturation_primary << ", " << settings.saturation_secondary << ")\n";
+    // The factors within 8-bit rounding (the saturated end of the map clamps at 1 on the left).
+    EXPECT_GT(left_ratio, 1.0);
+    EXPECT_NEAR(right_ratio, settings.saturation_secondary, 0.05);
+}
+
 }  // namespace
 }  // namespace cutaway::test
