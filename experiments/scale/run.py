@@ -207,12 +207,13 @@ def plot(exp, document):
     for r in (r for r in rows if is_default(r)):
         y = r["peak_bytes_per_active_cell"]
         # Right of the point (the next model's point is well below); near the target line, where
-        # the models sit a decade apart at about the same height, below it, the two staggered.
+        # the models sit a decade apart at about the same height, left of the point, alternately
+        # under and over the line (the lower limit leaves room for the ones under it).
         below = [q for q in rows if is_default(q) and q["peak_bytes_per_active_cell"] < 1.5 * MEMORY_TARGET]
-        if r in below:
-            last = r is below[-1]  # at the axes' right end: its label ends at the point
-            memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", ha="right" if last else "center",
-                            xytext=(6 if last else 0, -13 - 11 * (below.index(r) % 2)))
+        if r in below:  # a decade apart the labels are wider than the gap between the points
+            over = below.index(r) % 2 == 1
+            memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", ha="right",
+                            va="bottom" if over else "top", xytext=(-8, 12 if over else -6))
         else:
             memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", xytext=(6, 0), va="center")
     memory.set_ylim(bottom=min(r["peak_bytes_per_active_cell"] for r in rows) / 5)

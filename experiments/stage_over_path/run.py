@@ -80,11 +80,23 @@ def plot(exp, result):
     elevations = "/".join(f"{e:g}" for e in dict.fromkeys(c[1] for c in camera))
     top = fig.add_subplot(grid[0, :])
     # Black and grey: a colour in these plots means a stage (stage_style) or a strategy (strategy_style).
-    top.plot(poses, [c[0] for c in camera], marker="s", color="black")
+    # Both rise linearly along the path: the azimuth's axis puts its line in the panel's upper half,
+    # the aperture's its line in the lower half, so the two never cover each other; each labelled.
+    azimuths = [c[0] for c in camera]
+    top.plot(poses, azimuths, marker="s", color="black")
+    top.set_ylim(-max(azimuths) * 0.75, max(azimuths) * 1.1)
+    top.set_yticks([a for a in (0, 180, 360) if a <= max(azimuths) * 1.1])
     top.set_ylabel("azimuth (deg)", color="black")
+    top.annotate("azimuth", (poses[len(poses) // 2], azimuths[len(poses) // 2]), textcoords="offset points",
+                 xytext=(-8, 6), ha="right", color="black")
     twin = top.twinx()
     twin.plot(poses, apertures, marker="^", color="dimgrey", linestyle="--")
+    twin.set_ylim(min(apertures) - 0.1 * (max(apertures) - min(apertures)),
+                  max(apertures) + 1.2 * (max(apertures) - min(apertures)))
+    twin.set_yticks(range(int(min(apertures)) // 30 * 30, int(max(apertures)) + 1, 30))
     twin.set_ylabel("full aperture (deg)", color="dimgrey")
+    twin.annotate("full aperture", (poses[len(poses) // 2], apertures[len(poses) // 2]), textcoords="offset points",
+                  xytext=(8, -6), ha="left", va="top", color="dimgrey")
     top.set_xlabel("camera pose along the path")
     axes = []
     for index, (preset, rows_of_model) in enumerate(models.items()):
