@@ -27,6 +27,11 @@ STYLES = {
     "auto": ("#7f7f7f", "P"),
 }
 assert len({c for c, _ in STYLES.values()}) == len(STYLES) and len({m for _, m in STYLES.values()}) == len(STYLES)
+# Legend labels where the name alone would mislead: "exact" runs on the CPU in every plot.
+LABELS = {"exact": "exact (CPU reference)"}
+# times_per_model spreads the strategies' points of one configuration sideways by at most this much
+# either way (log10 units of the primary cells), so that equal times do not hide one another.
+TIME_DODGE_DECADES = 0.12
 
 
 def style(name):
@@ -46,28 +51,32 @@ def ordered(names):
 
 def handles(plt, names, **extra):
     """Legend handles: one line with its marker per strategy, in the registry's order."""
-    return [plt.Line2D([], [], label=n, **style(n), **extra) for n in ordered(names)]
+    return [plt.Line2D([], [], label=LABELS.get(n, n), **style(n), **extra) for n in ordered(names)]
 
 
 def times_per_model(plt, points, title, ylabel):
     """Stage times of every strategy, one panel per model (2 columns): `points` is a list of
     (model, strategy, primary cells, ms); a line joins one model's primary fractions. Log axes, the
-    same ms range in every panel; one legend below the panels. Returns the figure."""
+    same ms range in every panel; one legend below the panels. A strategy's points sit at most
+    TIME_DODGE_DECADES beside their primary cells (said in the x label), so that strategies with
+    equal times stay visible side by side. Returns the figure."""
     models = list(dict.fromkeys(p[0] for p in points))
+    names = ordered(p[1] for p in points)
     columns = min(2, len(models))
     rows = -(-len(models) // columns)
     fig, axes = plt.subplots(rows, columns, figsize=(cx.PLOT_WIDTH_IN, 1.2 + 2.6 * rows), sharey=True, squeeze=False)
     for ax, model in zip(axes.flat, models):
         mine = [p for p in points if p[0] == model]
         for name in ordered(p[1] for p in mine):
-            xy = sorted((cells, ms) for _, strategy, cells, ms in mine if strategy == name)
-            ax.plot(*zip(*xy), "-", linewidth=1, **style(name))
+            dodge = 10 ** (TIME_DODGE_DECADES * (2 * names.index(name) / max(1, len(names) - 1) - 1))
+            xy = sorted((cells * dodge, ms) for _, strategy, cells, ms in mine if strategy == name)
+            ax.plot(*zip(*xy), "-", linewidth=1, markersize=5, **style(name))
         ax.set(xscale="log", yscale="log", title=model)
         ax.grid(True, which="both", linewidth=0.3)
     for ax in axes.flat[len(models):]:
         ax.set_visible(False)
     for ax in axes[-1]:
-        ax.set_xlabel("primary cells (log scale)")
+        ax.set_xlabel(f"primary cells (log scale; strategies\nspread sideways by at most {TIME_DODGE_DECADES:g} decades)")
     for ax in axes[:, 0]:
         ax.set_ylabel(ylabel)
     fig.suptitle(title)

@@ -355,7 +355,7 @@ def plot_error(plt, rows, protocol, path):
     axes[0].set(xlabel=f"pixels wrong by more than {100 * tolerance:g}%\nof the depth range (%, log scale above "
                        f"{WRONG_PERCENT_LINEAR_BELOW:g})", xlim=(-WRONG_PERCENT_LINEAR_BELOW / 2, 150))
     axes[1].set(xscale="log", xlabel="mean absolute depth error\n(render units, log scale)")
-    axes[0].set_yticks(range(len(names)), names)
+    axes[0].set_yticks(range(len(names)), [strategy_style.LABELS.get(n, n) for n in names])
     axes[0].invert_yaxis()
     for ax in axes:
         ax.grid(True, which="both", axis="x", linewidth=0.3)
@@ -364,7 +364,8 @@ def plot_error(plt, rows, protocol, path):
     az, el, _ = protocol["quality_camera_az_el_dist"]
     fig.suptitle(f"Cut error against the exact cone field ({w}x{h}, pose {az}/{el}, aperture {APERTURE_DEG} deg),\n"
                  f"one point per model and primary fraction ({len(configurations)} per strategy); the frustum strategies\n"
-                 f"cut the paper's frustum union, another surface than the cone field: their error is that difference")
+                 f"cut the paper's frustum union, another surface than the cone field: their error is that difference;\n"
+                 f"exact's own error is the depth buffer's quantisation, the floor of this measurement")
     cx.save_figure(fig, path)
     plt.close(fig)
 

@@ -176,15 +176,16 @@ def measure(exp):
 def plot(exp, document):
     """The two sweeps' plots, from the document (the composed figures are renders: measure makes them)."""
     device = cx.device_label(document["context"])
-    for name, xlabel, setting, log_x, format_value in (
-            ("time_vs_aperture", "full aperture angle (degrees, horizontal = vertical)", "1% primaries", False,
+    for name, xlabel, setting, log_axes, format_value in (
+            ("time_vs_aperture", "full aperture angle\n(degrees, horizontal = vertical)", "1% primaries", False,
              lambda v: f"{v:g} deg"),
-            ("time_vs_primary_fraction", "primary fraction (of active cells, log scale)", "aperture 60 degrees", True,
+            ("time_vs_primary_fraction", "primary fraction\n(of active cells, log scale)", "aperture 60 degrees", True,
              lambda v: f"{100 * v:g}%")):
         sweep = document[name]
         what = name.removeprefix("time_vs_").replace("_", " ")
         sweeps.plot_sweep(sweep, xlabel, f"Frame time vs {what} ({sweep['model']}, {sweep['size'][0]}x{sweep['size'][1]}, "
-                                         f"{setting})\non {device}", exp.path(name + ".png"), format_value, log_x=log_x)
+                                         f"{setting})\non {device}", exp.path(name + ".png"), format_value, log_x=log_axes,
+                          log_y=log_axes)
 
 
 def main():

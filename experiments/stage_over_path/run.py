@@ -95,6 +95,7 @@ def plot(exp, result):
                   max(apertures) + 1.2 * (max(apertures) - min(apertures)))
     twin.set_yticks(range(int(min(apertures)) // 30 * 30, int(max(apertures)) + 1, 30))
     twin.set_ylabel("full aperture (deg)", color="dimgrey")
+    twin.grid(False)  # one set of grid lines in the panel: the azimuth's
     twin.annotate("full aperture", (poses[len(poses) // 2], apertures[len(poses) // 2]), textcoords="offset points",
                   xytext=(8, -6), ha="left", va="top", color="dimgrey")
     top.set_xlabel("camera pose along the path")
@@ -105,7 +106,7 @@ def plot(exp, result):
                                 totals_by_round(rows_of_model))
         if index % 2 == 0:
             ax.set_ylabel("time (ms)")
-        ax.set_title(f"{preset} ({int(rows_of_model[0]['cells']):,} cells, {int(rows_of_model[0]['primary_cells'])} primaries)")
+        ax.set_title(f"{preset} ({int(rows_of_model[0]['cells']):,} cells, {int(rows_of_model[0]['primary_cells']):,} primaries)")
         axes.append(ax)
     for ax in axes[-2:]:
         ax.set_xlabel("pose (azimuth and aperture\nrise together: not separable)")
