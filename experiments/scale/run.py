@@ -207,13 +207,13 @@ def plot(exp, document):
     for r in (r for r in rows if is_default(r)):
         y = r["peak_bytes_per_active_cell"]
         # Right of the point (the next model's point is well below); near the target line, where
-        # the models sit a decade apart at about the same height, left of the point, alternately
-        # under and over the line (the lower limit leaves room for the ones under it).
+        # the models sit a decade apart at about the same height: the last model's label under the
+        # line ending at its point, the others' over it starting at theirs (the lower limit leaves room).
         below = [q for q in rows if is_default(q) and q["peak_bytes_per_active_cell"] < 1.5 * MEMORY_TARGET]
-        if r in below:  # a decade apart the labels are wider than the gap between the points
-            over = below.index(r) % 2 == 1
-            memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", ha="right",
-                            va="bottom" if over else "top", xytext=(-8, 12 if over else -6))
+        if r in below:  # a decade apart the labels are wider than the gap: the last under, the others over
+            last = r is below[-1]
+            memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", ha="right" if last else "left",
+                            va="top" if last else "bottom", xytext=(8, -8) if last else (2, 8))
         else:
             memory.annotate(r["preset"], (r["active_cells"], y), textcoords="offset points", xytext=(6, 0), va="center")
     memory.set_ylim(bottom=min(r["peak_bytes_per_active_cell"] for r in rows) / 5)
