@@ -26,9 +26,11 @@ frame's loop time (events, script, panel, render when something changed, blit, s
 fenced stage times; medians over the frames of all rounds are reported, with each round's median
 beside them.
 
-The gallery's screenshot comes from one more, untimed run: a 1920x1080 window (960x540 with
---quick) with the panel and overlays at --ui-scale 2.25 and the colour bar's text sized to print,
-so every text prints at 7 pt or more when the figure is 182 mm wide; the same script.
+The gallery's screenshot comes from one more, untimed run: a 1920x1440 window (960x720 with
+--quick; taller than the timed runs' so that the panel shows its property and cut sections) with
+the panel and overlays at --ui-scale 2.5 and the colour bar's text sized to print, so every text
+prints at 7 pt or more when the figure is 182 mm wide; the same script. Its overlay's times are
+that window's, not the timed runs'.
 """
 import math
 import os
@@ -43,7 +45,7 @@ import report_markdown as md  # noqa: E402
 
 
 PRINTED_TEXT_PT = 7  # the gallery's smallest text at 182 mm wide (experiments/figures/compose.py MIN_TEXT_PT)
-SCREENSHOT_UI_SCALE = 2.25  # Dear ImGui's 13 px font at 29 px: 2.8 mm when 1920 px print 182 mm wide
+SCREENSHOT_UI_SCALE = 2.5  # Dear ImGui's 13 px font at 32.5 px, digits 20 px: 7.4 pt when 1920 px print 182 mm wide
 
 
 def script_text(turns, ranges, idle, screenshot, drag):
@@ -103,12 +105,12 @@ def measure(exp):
                     runs[name].append(cx.json.loads(f.read()))
         # The screenshot goes to scratch and is copied at the end: rewriting the tracked figure
         # during the runs would make the viewer record a dirty revision.
-        shot_size = (960, 540) if exp.quick else (1920, 1080)
+        shot_size = (960, 720) if exp.quick else (1920, 1440)
         text_px = math.ceil(PRINTED_TEXT_PT * 25.4 / 72 / cx.PRINT_WIDTH_MM * shot_size[0])
         script = os.path.join(scratch, "script-screenshot.txt")
         with open(script, "w") as f:
             f.write(script_text(turns, ranges, idle, os.path.join(scratch, "viewer_petra.png"), drag=False))
-        subprocess.run([xvfb_run, "-a", "-s", "-screen 0 1920x1080x24", exp.cutaway, "view", "preset:petra",
+        subprocess.run([xvfb_run, "-a", "-s", f"-screen 0 {shot_size[0]}x{shot_size[1]}x24", exp.cutaway, "view", "preset:petra",
                         "--size", str(shot_size[0]), str(shot_size[1]), "--ui-scale", str(SCREENSHOT_UI_SCALE),
                         "--text-height", str(text_px), "--interaction-fps", "0", "--script", script],
                        check=True, stdout=subprocess.DEVNULL)

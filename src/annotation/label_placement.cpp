@@ -78,6 +78,26 @@ int conflicts(const PixelRect& box, std::size_t r, const std::vector<LabelReques
     return count;
 }
 
+/// The first of `boxes` (a label's candidates for request `r`) with the fewest conflicts among the
+/// labels `placed`; none if `boxes` is empty.
+std::optional<PixelRect> least_conflicting(const std::vector<PixelRect>& boxes, std::size_t r,
+                                           const std::vector<LabelRequest>& requests, const std::vector<PlacedLabel>& placed,
+                                           const std::vector<PixelRect>& obstacles) {
+    std::optional<PixelRect> chosen;
+    int fewest = std::numeric_limits<int>::max();
+    for (const PixelRect& box : boxes) {
+        if (const int c = conflicts(box, r, requests, placed, obstacles); c < fewest) {
+            fewest = c;
+            chosen = box;
+            if (c == 0) break;
+        }
+    }
+    return chosen;
+}
+
+/// Passes of placing again the labels with conflicts (each moves a label only to fewer conflicts).
+constexpr int relabel_passes = 4;
+
 }  // namespace
 
 float label_text_scale(int height, float min_text_px) {
@@ -90,6 +110,7 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
     const float pad = 2 * s, gap = 3 * s;
     const float x1 = std::max(1.0f, float(width) - reserved_right), y1 = float(height);
     std::vector<PlacedLabel> placed;
+    std::vector<std::vector<PixelRect>> candidates;  // per placed label, its boxes inside the image, nearest first
     for (std::size_t r = 0; r < requests.size(); ++r) {
         const LabelRequest& request = requests[r];
         if (!(request.anchor_x >= 0 && request.anchor_x < float(width) && request.anchor_y >= 0 && request.anchor_y < y1)) continue;
@@ -98,26 +119,39 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
         const PixelRect ink = ink_box(at_origin);
         if (ink.x0 > ink.x1) continue;  // blank text
         const PixelRect box0{ink.x0 - pad, ink.y0 - pad, ink.x1 + pad, ink.y1 + pad};
-        // The first candidate with the fewest conflicts, none if it can.
-        std::optional<PixelRect> chosen;
-        int fewest = std::numeric_limits<int>::max();
-        for (const auto& [dx, dy] : candidate_offsets(box0.width(), box0.height(), gap)) {
-            const PixelRect box = moved(box0, request.anchor_x + dx - box0.x0, request.anchor_y + dy - box0.y0);
-            if (!inside(box, x1, y1)) continue;
-            if (const int c = conflicts(box, r, requests, placed, obstacles); c < fewest) {
-                fewest = c;
-                chosen = box;
-                if (c == 0) break;
-            }
-        }
-        if (!chosen) chosen = clamped(moved(box0, request.anchor_x + gap, request.anchor_y + gap), float(width), y1);
+        std::vector<PixelRect> boxes;
+        for (const auto& [dx, dy] : candidate_offsets(box0.width(), box0.height(), gap))
+            if (const PixelRect box = moved(box0, request.anchor_x + dx - box0.x0, request.anchor_y + dy - box0.y0); inside(box, x1, y1))
+                boxes.push_back(box);
+        const std::optional<PixelRect> chosen = least_conflicting(boxes, r, requests, placed, obstacles);
         PlacedLabel label;
-        label.box = *chosen;
-        label.line = {request.text, chosen->x0 - box0.x0, chosen->y0 - box0.y0, s};
+        label.box = chosen ? *chosen : clamped(moved(box0, request.anchor_x + gap, request.anchor_y + gap), float(width), y1);
+        label.line = {request.text, label.box.x0 - box0.x0, label.box.y0 - box0.y0, s};
         label.anchor_x = request.anchor_x;
         label.anchor_y = request.anchor_y;
         label.request = r;
         placed.push_back(label);
+        candidates.push_back(std::move(boxes));
+    }
+    // Placed one after another, an early label may take the only clear spot of a later one (wellheads
+    // along the image's edge); each label with a conflict is placed again among all the others, while
+    // that lowers its conflicts (every move lowers their sum, so the passes end).
+    for (int pass = 0; pass < relabel_passes; ++pass) {
+        bool moved_any = false;
+        for (std::size_t i = 0; i < placed.size(); ++i) {
+            std::vector<PlacedLabel> others = placed;
+            others.erase(others.begin() + std::ptrdiff_t(i));
+            PlacedLabel& label = placed[i];
+            const int now = conflicts(label.box, label.request, requests, others, obstacles);
+            if (now == 0) continue;
+            const std::optional<PixelRect> better = least_conflicting(candidates[i], label.request, requests, others, obstacles);
+            if (!better || conflicts(*better, label.request, requests, others, obstacles) >= now) continue;
+            label.line.x += better->x0 - label.box.x0;
+            label.line.y += better->y0 - label.box.y0;
+            label.box = *better;
+            moved_any = true;
+        }
+        if (!moved_any) break;
     }
     return placed;
 }

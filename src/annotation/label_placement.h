@@ -35,9 +35,11 @@ float label_text_scale(int height, float min_text_px = 0);
 /// lies inside the image (left of its `reserved_right` columns), overlaps no label or leader line
 /// placed before, covers no other request's anchor and whose own leader (anchor to the box's
 /// nearest point) crosses no label placed before; where none is clear (crowded wells), the one
-/// with the fewest such conflicts, overlapping labels last. `obstacles`: boxes already drawn on the
-/// image (the frame's caption) that labels keep clear of as of each other. Every box returned lies
-/// inside the image.
+/// with the fewest such conflicts, overlapping labels last. Then each label left with a conflict is
+/// placed again among all the others (an early label may have taken a later one's only clear
+/// spot), while that lowers its conflicts. `obstacles`: boxes already drawn on the image (the
+/// frame's caption) that labels keep clear of as of each other. Every box returned lies inside the
+/// image.
 std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests, int width, int height,
                                       float reserved_right = 0, float min_text_px = 0,
                                       const std::vector<PixelRect>& obstacles = {});

@@ -26,6 +26,7 @@
 #include "app_core/run_context_json.h"
 #include "app_core/frame_wells.h"
 #include "app_core/step_value_sources.h"
+#include "annotation/label_placement.h"
 #include "annotation/property_units.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cutaway_renderer.h"
@@ -172,10 +173,15 @@ public:
         primaries_only_.only = pipeline::OnlyLayer::primaries;
     }
 
-    /// Draws each frame's date (from `steps`, none when empty) and report step of `step_count`.
+    /// Draws each frame's date (from `steps`, none when empty) and report step of `step_count`,
+    /// the model framed below the caption (the same rows in every frame: the camera does not jump).
     void caption_with(std::vector<eclipse::ReportStep> steps, std::size_t step_count) {
         caption_steps_ = std::move(steps);
         caption_step_count_ = step_count;
+        const std::string first = eclipse::step_caption(label_.property, eclipse::date_at(caption_steps_, 0.0), 0.0, step_count);
+        if (const auto caption = annotation::place_caption(first, scene_.width, scene_.height,
+                                                           renderer_.status(settings_).colour_bar_reserved_width, label_.min_text_px))
+            caption_rows_ = caption->box.y1 + caption->box.y0;  // the caption and a margin as wide as above it
     }
 
     /// Frame `f` of `frame`: its stats entry.
@@ -233,8 +239,9 @@ private:
         if (frame_count_ > 1) pose.azimuth_deg += float(options_.orbit_deg * double(f) / double(frame_count_ - 1));
         const float bar_width = renderer_.status(settings_).colour_bar_reserved_width;
         if (scene_.freeze_pose && f == 0)
-            renderer_.freeze(pipeline::make_orbit_camera(renderer_.frame(), *scene_.freeze_pose, scene_.width, scene_.height, bar_width));
-        return pipeline::make_orbit_camera(renderer_.frame(), pose, scene_.width, scene_.height, bar_width);
+            renderer_.freeze(pipeline::make_orbit_camera(renderer_.frame(), *scene_.freeze_pose, scene_.width, scene_.height, bar_width,
+                                                         0, caption_rows_));
+        return pipeline::make_orbit_camera(renderer_.frame(), pose, scene_.width, scene_.height, bar_width, 0, caption_rows_);
     }
 
     /// The frame's primaries, where they changed. Under none they are the step's values in the
@@ -293,6 +300,7 @@ private:
     std::size_t uploaded_bytes_ = 0;  ///< by the frame's upload
     std::vector<eclipse::ReportStep> caption_steps_;  ///< caption_with: the dates
     std::size_t caption_step_count_ = 0;              ///< caption_with: report steps (0: no caption)
+    float caption_rows_ = 0;                          ///< caption_with: top rows the model is framed below
 };
 
 /// What stats.json says of the run beside its frames.

@@ -54,12 +54,17 @@ ProjectedBox project_box(const std::vector<glm::vec3>& points, float radius, con
     return box;
 }
 
+/// The image's free area in normalised device coordinates: [x0, x1] x [y0, y1].
+struct FreeArea {
+    glm::vec2 min{-1.0f}, max{1.0f};
+};
+
 /// Share of the free area that the projected box fills in its tighter dimension, after panning so
 /// that its centre sits at the free area's centre (`framing.offset` is updated). Infinite when a
 /// point is behind the eye.
 float centred_fill(const std::vector<glm::vec3>& points, float radius, const glm::vec3& target, const ViewAxes& axes,
-                   const glm::vec2& free_x, Framing& framing) {
-    const glm::vec2 free_centre{0.5f * (free_x[0] + free_x[1]), 0.0f}, free_size{free_x[1] - free_x[0], 2.0f};
+                   const FreeArea& free, Framing& framing) {
+    const glm::vec2 free_centre = 0.5f * (free.min + free.max), free_size = free.max - free.min;
     ProjectedBox box;
     // The box's image moves by offset / depth: a few steps converge (depth differs little
     // across the box at a framing distance).
@@ -74,23 +79,22 @@ float centred_fill(const std::vector<glm::vec3>& points, float radius, const glm
 }
 
 /// The distance (bisected on a log scale) and pan at which the model's projected points fill
-/// `fill` of the free area [free_x[0], free_x[1]] x [-1, 1] (normalised device coordinates) in its
-/// tighter dimension, centred in it.
-Framing frame_model(const ModelFrame& frame, const glm::vec3& target, const ViewAxes& axes, const glm::vec2& free_x, float fill) {
+/// `fill` of the free area in its tighter dimension, centred in it.
+Framing frame_model(const ModelFrame& frame, const glm::vec3& target, const ViewAxes& axes, const FreeArea& free, float fill) {
     const float radius = std::max(frame.radius(), 1e-6f);
     const std::vector<glm::vec3> points = framing_points(frame);
     float near = 0.5f * radius, far = 1e3f * radius / axes.tan_y;
     Framing framing{far, glm::vec3(0)};
     for (int step = 0; step < 48; ++step) {
         Framing trial{std::sqrt(near * far), framing.offset};
-        if (centred_fill(points, radius, target, axes, free_x, trial) > fill) {
+        if (centred_fill(points, radius, target, axes, free, trial) > fill) {
             near = trial.distance;
         } else {
             far = trial.distance;
             framing = trial;
         }
     }
-    centred_fill(points, radius, target, axes, free_x, framing);  // the pan for the final distance
+    centred_fill(points, radius, target, axes, free, framing);  // the pan for the final distance
     return framing;
 }
 
@@ -99,7 +103,7 @@ Framing frame_model(const ModelFrame& frame, const glm::vec3& target, const View
 float Camera::focal_px() const { return 0.5f * float(height) / std::tan(0.5f * fovy_rad); }
 
 Camera make_orbit_camera(const ModelFrame& frame, const OrbitPose& pose, int width, int height, float reserved_right_px,
-                         float reserved_left_px) {
+                         float reserved_left_px, float reserved_top_px) {
     Camera camera;
     camera.width = width;
     camera.height = height;
@@ -118,10 +122,12 @@ Camera make_orbit_camera(const ModelFrame& frame, const OrbitPose& pose, int wid
         axes.tan_y = std::tan(0.5f * camera.fovy_rad);
         axes.tan_x = axes.tan_y * aspect;
         // Columns kept free at either side (the colour bar, the viewer's panel), the model framed
-        // in at least the middle fifth of the image.
+        // in at least the middle fifth of the image; rows at the top (a caption), at most a quarter.
         const float right = std::clamp(reserved_right_px / float(width), 0.0f, 0.5f);
         const float left = std::clamp(reserved_left_px / float(width), 0.0f, 0.8f - right);
-        framing = frame_model(frame, pose.target, axes, {2.0f * left - 1.0f, 1.0f - 2.0f * right}, framed_fill);
+        const float top = std::clamp(reserved_top_px / float(height), 0.0f, 0.25f);
+        const FreeArea free{{2.0f * left - 1.0f, -1.0f}, {1.0f - 2.0f * right, 1.0f - 2.0f * top}};
+        framing = frame_model(frame, pose.target, axes, free, framed_fill);
     }
     const glm::vec3 look_at = pose.target + framing.offset;
     camera.eye = look_at + framing.distance * direction;

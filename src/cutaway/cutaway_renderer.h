@@ -189,6 +189,9 @@ public:
     /// Colours cells by `values` (one per Eclipse cell) mapped from the label's range.
     void set_colouring(const std::vector<float>& values, const ColourBarLabel& label,
                        ValueStorage storage = ValueStorage::float32);
+    /// The primary range the colour bar marks (none: no mark), uploading nothing: the viewer's range
+    /// follows the user's slider; the colouring stays as set_colouring left it.
+    void mark_primary_range(const std::optional<ColourBarLabel::Span>& range) { label_.primary_range = range; }
     /// The primary cells: given as flags (one per Eclipse cell), or chosen on the GPU as the active
     /// cells whose colouring value lies in a range (and inside an IJK box), which uploads nothing.
     /// A range needs the values at float32: throws std::logic_error after unorm16 values.

@@ -56,6 +56,7 @@ void ViewerScene::select_primaries(pipeline::CutawayRenderer& renderer) const {
         renderer.select({property_.primary_range, box_});
     else
         renderer.select(pipeline::Primaries::none());
+    renderer.mark_primary_range(property_.colour_bar_label(primaries_).primary_range);
 }
 
 void ViewerScene::rebuild_renderer(int width, int height, const pipeline::FrameSettings& settings) {
@@ -89,7 +90,7 @@ void ViewerScene::apply_selection(pipeline::CutawayRenderer& renderer) const {
 }
 
 void ViewerScene::apply_colouring(pipeline::CutawayRenderer& renderer) const {
-    renderer.set_colouring(property_.values(), property_.colour_bar_label());
+    renderer.set_colouring(property_.values(), property_.colour_bar_label(primaries_));
 }
 
 std::size_t ViewerScene::primary_count() const { return renderer_ ? renderer_->status().primary_cells : 0; }
@@ -116,7 +117,7 @@ std::unique_ptr<StepPlayer> ViewerScene::player(temporal::Coherence coherence, s
     std::unique_ptr<temporal::StepValueSource> source = app::step_values_of(model_, property_.name);
     // One colour scale for every played step (--colour-range, else the values' span over all of
     // them): a step's own percentiles would recolour the front as it moves.
-    playing_colours_ = property_.colour_bar_label();
+    playing_colours_ = property_.colour_bar_label(primaries_);
     playing_colours_.property = property_.name;  // the overlay shows the date and step
     if (options_colour_range_.empty()) {
         const grid::PrimaryRange span = temporal::value_range_over_steps(model_.grid, *source, 0, source->step_count() - 1);

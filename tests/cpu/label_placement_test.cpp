@@ -33,13 +33,13 @@ std::vector<LabelRequest> crowded_wells() {
     return {{"PROD1", 520, 60}, {"PROD2", 540, 70}, {"PROD3", 530, 85}, {"PROD4", 560, 60}, {"INJ1", 100, 200}, {"INJ2", 110, 215}};
 }
 
-TEST(LabelPlacement, LabelsClearOfEachOtherTheirLeadersAndEveryWellhead) {
-    const std::vector<LabelRequest> requests = crowded_wells();
-    const std::vector<PlacedLabel> placed = place_labels(requests, 640, 360, 0, 14);
+/// Every label inside the `width` x `height` image, covering no other wellhead, overlapping no other
+/// label and crossed by no other label's leader.
+void expect_clear(const std::vector<LabelRequest>& requests, const std::vector<PlacedLabel>& placed, float width, float height) {
     ASSERT_EQ(placed.size(), requests.size());
     for (std::size_t a = 0; a < placed.size(); ++a) {
         const PlacedLabel& label = placed[a];
-        EXPECT_TRUE(label.box.x0 >= 0 && label.box.y0 >= 0 && label.box.x1 <= 640 && label.box.y1 <= 360) << label.line.text;
+        EXPECT_TRUE(label.box.x0 >= 0 && label.box.y0 >= 0 && label.box.x1 <= width && label.box.y1 <= height) << label.line.text;
         for (std::size_t r = 0; r < requests.size(); ++r) {
             if (r == label.request) continue;
             EXPECT_FALSE(contains(label.box, requests[r].anchor_x, requests[r].anchor_y))
@@ -54,6 +54,22 @@ TEST(LabelPlacement, LabelsClearOfEachOtherTheirLeadersAndEveryWellhead) {
                 << "the leader of " << other.line.text << " crosses " << label.line.text;
         }
     }
+}
+
+TEST(LabelPlacement, LabelsClearOfEachOtherTheirLeadersAndEveryWellhead) {
+    const std::vector<LabelRequest> requests = crowded_wells();
+    expect_clear(requests, place_labels(requests, 640, 360, 0, 14), 640, 360);
+}
+
+TEST(LabelPlacement, WellheadsAlongTheTopEdgeGetClearLabels) {
+    // A generated deck's producers seen from above (wells_waterflood.png, 1280x720, text 36 px): the
+    // wellheads run along the image's top edge, where no label fits above or beside them. Placed one
+    // after another, the first took the spot below its neighbour and PROD2's leader crossed PROD1's
+    // name; a label moved again once all are placed finds the spots where none crosses another.
+    const std::vector<LabelRequest> requests{{"INJ1", 53.9f, 239.2f},  {"INJ2", 265.2f, 290.6f}, {"INJ3", 402.2f, 314.4f},
+                                             {"INJ4", 630.5f, 428.9f},  {"PROD1", 572.3f, 14.8f}, {"PROD2", 708.1f, 21.8f},
+                                             {"PROD3", 831.0f, 59.2f}, {"PROD4", 927.3f, 110.9f}};
+    expect_clear(requests, place_labels(requests, 1280, 720, 212, 36), 1280 - 212, 720);
 }
 
 TEST(LabelPlacement, LabelsKeepClearOfTheFrameCaption) {

@@ -1,6 +1,7 @@
 // What a figure's reader sees around the model (issue 15): the framed model fills the panel
 // (its bounding box at least 85% of the panel's width or height), the colour bar draws only where
-// its layout says and never over the model, and the silhouette has a colour of its own, apart
+// its layout says and never over the model (nor under the viewer's panel or an animation's
+// caption, when the camera keeps their columns or rows), and the silhouette has a colour of its own, apart
 // from the red lines where the cut meets the shell.
 #include <gtest/gtest.h>
 
@@ -69,6 +70,13 @@ void check_framing(const grid::CornerPointGrid& grid, const char* name, int widt
         const PixelBox beside = model_pixels(pipeline::FrameReadback(*renderer).read_eclipse_ids(), width, height);
         EXPECT_GE(float(beside.x0), panel - 1.0f) << "model under the panel, " << name << " azimuth " << pose.azimuth_deg;
         EXPECT_LT(float(beside.x1), bounds.x0) << "model under the colour bar beside the panel, " << name;
+        // An animation's date caption keeps the top rows: the model is framed below them.
+        const float caption_rows = 0.1f * float(height);
+        renderer->render(settings, pipeline::make_orbit_camera(renderer->frame(), pose, width, height,
+                                                               renderer->status(settings).colour_bar_reserved_width, 0, caption_rows));
+        const PixelBox below = model_pixels(pipeline::FrameReadback(*renderer).read_eclipse_ids(), width, height);
+        EXPECT_GE(float(below.y0), caption_rows - 1.0f) << "model under the caption, " << name << " azimuth " << pose.azimuth_deg;
+        EXPECT_LT(float(below.x1), bounds.x0) << "model under the colour bar below the caption, " << name;
 
         // The bar draws exactly where its layout says: over the background (the model stays clear
         // of the bar, checked above), the frame with and without it differs only inside the
