@@ -278,8 +278,8 @@ def readme_body(document):
                                                  f"({w['primaries_before']} -> {w['primaries_after']} primaries)"
                                                  for mode, w in entry["largest_flicker"].items()])
     lines += ["", "Smooth spreads a step's many entries and exits over its frames (pops and flicker fall about as many "
-                  "times as there are frames per step), and each cell that enters opens its own cut over the frames of a "
-                  "report step before it enters (from where its view rays enter the model, or beside primaries from "
+                  "times as there are frames per step), and each cell that enters opens its own cut over the frames of two "
+                  "report steps before it enters (at most 8 frames; from where its view rays enter the model, or beside primaries from "
                   "their walls, to the cell's rear; the frames ahead are made before they are shown), so it is drawn as "
                   "a primary the frame it is selected; a cell that leaves closes its cut over as many frames after; the "
                   "seed strategies' cone slope follows the primaries' centroid a share per frame. A single cell entering "

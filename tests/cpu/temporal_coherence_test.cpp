@@ -172,8 +172,9 @@ TEST(CellOpenings, ABriefSelectionOpensAheadAShortAbsenceKeepsTheCutAndOneFrameC
     });
     CellOpenings at_once(1, {2, 1, 1});
     run_openings(at_once, 1, {{1, 0}, {0, 1}, {1, 1}}, [&](std::size_t) { EXPECT_TRUE(at_once.openings().empty()); });
-    EXPECT_EQ(frames_to_open(4), 5u);
+    EXPECT_EQ(frames_to_open(4), 8u);
     EXPECT_EQ(frames_to_open(1), 2u);
+    EXPECT_EQ(frames_to_open(3), 6u);
     EXPECT_EQ(frames_to_open(24), CellOpenings::max_frames_to_open);
     EXPECT_THROW(CellOpenings(0, {1, 1, 1}), std::invalid_argument);
     EXPECT_THROW(CellOpenings(CellOpenings::max_frames_to_open + 1, {1, 1, 1}), std::invalid_argument);
@@ -292,7 +293,7 @@ TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensCellsCutsBeforeThe
     const AnimationTimeline timeline{0, 4, 4};
     CoherentSequence none(grid, source, timeline, Coherence::none, late, 0.0f);
     CoherentSequence smooth(grid, source, timeline, Coherence::smooth, late, 0.0f);
-    const std::size_t opening_frames = frames_to_open(4);  // 5: opening over the 4 frames before entry
+    const std::size_t opening_frames = frames_to_open(4);  // 8: opening over the 7 frames before entry
     std::vector<std::vector<float>> opening;             // per frame, per cell
     std::vector<std::vector<std::uint8_t>> flags;        // per frame, smooth's
     for (std::size_t f = 0; f < timeline.frame_count(); ++f) {
@@ -308,7 +309,7 @@ TEST_F(ShockFront, FramesCountTheirPrimariesAndOnlySmoothOpensCellsCutsBeforeThe
         flags.push_back(*s.flags);
     }
     // Each cell that enters at frame f had its cut opening, wider frame by frame, in the frames
-    // f - 4 .. f - 1: it is drawn the frame its cut is open, not later.
+    // f - 7 .. f - 1: it is drawn the frame its cut is open, not later.
     std::size_t entries = 0;
     for (std::size_t f = opening_frames; f < flags.size(); ++f)
         for (std::size_t c = 0; c < flags[f].size(); ++c) {

@@ -8,7 +8,7 @@
 namespace cutaway::temporal {
 
 std::size_t frames_to_open(std::size_t frames_per_step) {
-    return std::min(frames_per_step + 1, CellOpenings::max_frames_to_open);
+    return std::min(2 * frames_per_step, CellOpenings::max_frames_to_open);
 }
 
 float CellOpenings::depth_share(float frames_share, bool beside_cut) {

@@ -29,9 +29,11 @@ struct OpeningCell {
     bool beside_cut = false;
 };
 
-/// Frames over which smooth coherence opens a cell's cut: a report step's frames and one more, at
-/// most CellOpenings::max_frames_to_open; the last of them is the first the cell is drawn.
-/// Longer openings flicker less (results/front_tracking measures the flicker against none's).
+/// Frames over which smooth coherence opens a cell's cut: two report steps' frames, at most
+/// CellOpenings::max_frames_to_open; the last of them is the first the cell is drawn. Longer
+/// openings flicker less (results/front_tracking measures the flicker against none's): at 4 frames
+/// a step, SPE9's gas front (a single cell entering) flickered 0.0515 in a frame over 5 frames and
+/// 0.0445 over 8, against none's 0.149 (2.9x and 3.3x).
 std::size_t frames_to_open(std::size_t frames_per_step);
 
 class CellOpenings {
