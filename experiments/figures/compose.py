@@ -45,9 +45,18 @@ def reflow(row, columns):
 
 
 def wrap(caption, width_px, font_px):
-    """Each line of `caption` wrapped to fit `width_px` at `font_px` (a character is about 0.55 em)."""
+    """Each line of `caption` wrapped to fit `width_px` at `font_px` (a character is about 0.55 em),
+    in as few lines as the full width needs, of about equal length (no word left alone on the last)."""
     chars = max(12, int(width_px / (0.55 * font_px)))
-    return "\n".join(textwrap.fill(line, chars) for line in caption.splitlines())
+
+    def balanced(line):
+        lines = textwrap.wrap(line, chars) or [line]
+        for width in range(-(-len(line) // len(lines)), chars):
+            if len(candidate := textwrap.wrap(line, width)) <= len(lines):
+                return candidate
+        return lines
+
+    return "\n".join("\n".join(balanced(line)) for line in caption.splitlines())
 
 
 def load(path):

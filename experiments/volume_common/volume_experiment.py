@@ -4,6 +4,7 @@ trimmed mean. Their command line, output folders and reports are every experimen
 (experiments/common/cutaway_experiment.py: each writes results/<experiment>/ and paper_figures/).
 """
 import json
+import math
 import os
 import shutil
 import statistics
@@ -48,6 +49,23 @@ def gl_caster_name(context):
     if "llvmpipe" in renderer:
         return "GL caster on llvmpipe (a CPU)"
     return "GPU caster" + (f" ({renderer.split('/')[0]})" if renderer else "")
+
+
+def log_time_axis(ax, times_ms, cx):
+    """A log time axis from the 1-2-5 step at or below the fastest time to the one at or above the
+    slowest (no empty decade), ticks labelled at 1, 2 and 5 of each decade in plain numbers."""
+    import matplotlib.ticker  # after cx.pyplot(), which finds matplotlib
+
+    def step(value, up):
+        decade = 10 ** math.floor(math.log10(value))
+        steps = [decade * m for m in (1, 2, 5, 10)]
+        return min(s for s in steps if s >= value) if up else max(s for s in steps if s <= value)
+
+    ax.set_yscale("log")
+    ax.set_ylim(step(min(times_ms), False), step(max(times_ms), True))
+    ax.yaxis.set_major_locator(matplotlib.ticker.LogLocator(subs=(1, 2, 5)))
+    ax.yaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(cx.plain_number))
+    ax.yaxis.set_minor_formatter(matplotlib.ticker.NullFormatter())
 
 
 def frame_times_ms(stats, stages=("exit_points", "ray_cast")):

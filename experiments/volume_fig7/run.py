@@ -16,7 +16,6 @@ numbers are means after dropping the min and max, quoted as such. A trial's time
 time of the exit points and ray casting passes (readback excluded), as `cutaway volume --stats`
 reports it.
 """
-import math
 import os
 import statistics
 import sys
@@ -103,10 +102,7 @@ def plot(exp, document):
         ax.errorbar(azimuths, medians, yerr=cx.min_max_bars(medians, [e[caster]["trials_ms"] for e in eyes]), marker=marker,
                     color=colour, capsize=3, label=f"{name}: {len(eyes[0][caster]['trials_ms'])} trials per eye; "
                                                    f"median over the eyes {summary[caster]['median_ms']:.1f} ms")
-    ax.set_yscale("log")
-    lowest = min(min(e[c]["trials_ms"]) for e in eyes for c in ("gpu", "cpu"))
-    highest = max(max(e[c]["trials_ms"]) for e in eyes for c in ("gpu", "cpu"))
-    ax.set_ylim(10 ** math.floor(math.log10(lowest)), 10 ** math.ceil(math.log10(highest)))  # labelled decades
+    vx.log_time_axis(ax, [t for e in eyes for c in ("gpu", "cpu") for t in e[c]["trials_ms"]], cx)
     ax.set_xticks(azimuths)
     ax.set_xlabel("eye azimuth (degrees, elevation 25)")
     ax.set_ylabel("time per frame (ms, log scale): an eye's\nmedian, bars its fastest to slowest trial")

@@ -16,7 +16,6 @@ larger lateral extent so the cube's footprint on screen stays the same), grey tr
 512x512 pixels, 20 timed trials of the GPU caster and 5 of the CPU caster (the paper's CPU series;
 the slow reference, all the machine's threads) after one warm-up each, mean after dropping min and max.
 """
-import math
 import os
 import statistics
 import sys
@@ -57,9 +56,7 @@ def plot(exp, result):
                     color=colour, capsize=3,
                     label=f"{name}{f', {threads} threads' if threads else ''}: median and min-max of "
                           f"{len(records[0]['trials_ms'])} trials per cube")
-    ax.set_yscale("log")
-    # Whole decades, so the log axis has labelled ticks however close the times are.
-    ax.set_ylim(10 ** math.floor(math.log10(min(shown_ms))), 10 ** math.ceil(math.log10(max(shown_ms))))
+    vx.log_time_axis(ax, shown_ms, cx)
     first, last = rows[0], rows[-1]
     k1 = [d // first["step"] for d in first["dims"]]
     # The size grows as k cubed: on a log axis the ten steps spread out (on a linear one four of

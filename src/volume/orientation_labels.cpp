@@ -29,10 +29,15 @@ bool inside(const annotation::PixelRect& r, float right_limit, int height) {
     return r.x0 >= 0 && r.y0 >= 0 && r.x1 <= right_limit && r.y1 <= float(height);
 }
 
+/// Share of an edge from its shared corner where inline and crossline values are left out: a value
+/// there could belong to either edge.
+constexpr double shared_corner_share = 0.12;
+
 /// Ticks at round values of `span` (voxel indices 0 .. n - 1 when unknown) along `edge`, whose
-/// voxel-space ends are `origin` and `end` on `axis`; labels clear of `placed` (which they join).
+/// voxel-space ends are `origin` and `end` on `axis`; labels clear of `placed` (which they join);
+/// none near `origin` when another edge starts there too (`shared_origin`).
 std::vector<AxisTick> edge_ticks(const ViewGeometry& view, int width, int height, float right_limit, float text_scale,
-                                 int axis, glm::vec3 origin, SurveySpan span, glm::vec2 centre,
+                                 int axis, glm::vec3 origin, SurveySpan span, glm::vec2 centre, bool shared_origin,
                                  std::vector<annotation::PixelRect>& placed) {
     const int voxels = int(std::lround(view.box[axis]));
     if (voxels < 1) return {};
@@ -45,6 +50,7 @@ std::vector<AxisTick> edge_ticks(const ViewGeometry& view, int width, int height
         const double share = voxels > 1 ? (values.values[k] - span.first) / (span.last - span.first) : 0.0;
         glm::vec3 p = origin;
         p[axis] = float(share * double(voxels - 1) + 0.5);
+        if (shared_origin && std::abs(p[axis] - origin[axis]) < shared_corner_share * view.box[axis]) continue;
         AxisTick tick;
         tick.value = values.values[k];
         tick.from = to_pixels(view, p, width, height);
@@ -136,11 +142,18 @@ std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, 
         edge.label.x = std::round(std::clamp(anchor.x - 0.5f * size.x, margin, std::max(margin, right_limit - margin - size.x)));
         edge.label.y = std::round(std::clamp(anchor.y - 0.5f * size.y, margin, float(height) - margin - size.y));
     }
+    // Axis names with a glyph's width of room of their own: a value keeps two glyphs from a name
+    // (one read as a word space: "crossline 25"), one from another value.
     std::vector<annotation::PixelRect> placed;
-    for (const AxisEdge& edge : edges) placed.push_back(annotation::ink_box(edge.label));
+    const float name_room = 6 * text_scale;
+    for (const AxisEdge& edge : edges) {
+        const annotation::PixelRect ink = annotation::ink_box(edge.label);
+        placed.push_back({ink.x0 - name_room, ink.y0 - name_room, ink.x1 + name_room, ink.y1 + name_room});
+    }
     for (int axis = 0; axis < 3; ++axis)
-        edges[std::size_t(axis)].ticks = edge_ticks(view, width, height, right_limit, text_scale, axis,
-                                                    origins[std::size_t(axis)], spans[axis], centre, placed);
+        edges[std::size_t(axis)].ticks =
+            edge_ticks(view, width, height, right_limit, text_scale, axis, origins[std::size_t(axis)], spans[axis], centre,
+                       origins[std::size_t(axis)] == origin && axis > 0, placed);
     return edges;
 }
 
