@@ -142,18 +142,28 @@ std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, 
         edge.label.x = std::round(std::clamp(anchor.x - 0.5f * size.x, margin, std::max(margin, right_limit - margin - size.x)));
         edge.label.y = std::round(std::clamp(anchor.y - 0.5f * size.y, margin, float(height) - margin - size.y));
     }
-    // Axis names with a glyph's width of room of their own: a value keeps two glyphs from a name
-    // (one read as a word space: "crossline 25"), one from another value.
+    // Axis names with half a glyph's width of room of their own beside them: a value on a name's
+    // line keeps one and a half glyphs from it (one reads as a word space: "crossline 25"), one
+    // from another value (two glyphs left a 640 px F3 render's crossline a single value).
     std::vector<annotation::PixelRect> placed;
-    const float name_room = 6 * text_scale;
+    const float name_room = 3 * text_scale;
     for (const AxisEdge& edge : edges) {
         const annotation::PixelRect ink = annotation::ink_box(edge.label);
-        placed.push_back({ink.x0 - name_room, ink.y0 - name_room, ink.x1 + name_room, ink.y1 + name_room});
+        placed.push_back({ink.x0 - name_room, ink.y0, ink.x1 + name_room, ink.y1});
     }
-    for (int axis = 0; axis < 3; ++axis)
-        edges[std::size_t(axis)].ticks =
-            edge_ticks(view, width, height, right_limit, text_scale, axis, origins[std::size_t(axis)], spans[axis], centre,
-                       origins[std::size_t(axis)] == origin && axis > 0, placed);
+    for (int axis = 0; axis < 3; ++axis) {
+        const glm::vec3 start = origins[std::size_t(axis)];
+        const bool shared = start == origin && axis > 0;
+        std::vector<annotation::PixelRect> before = placed;
+        std::vector<AxisTick> ticks = edge_ticks(view, width, height, right_limit, text_scale, axis, start, spans[axis], centre,
+                                                 shared, placed);
+        // A short edge that keeps fewer than two values away from the corner keeps its corner one.
+        if (shared && ticks.size() < 2) {
+            placed = std::move(before);
+            ticks = edge_ticks(view, width, height, right_limit, text_scale, axis, start, spans[axis], centre, false, placed);
+        }
+        edges[std::size_t(axis)].ticks = std::move(ticks);
+    }
     return edges;
 }
 

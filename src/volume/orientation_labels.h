@@ -28,7 +28,9 @@ struct AxisEdge {
 /// The edges along time, crossline and inline (in that order), text at `text_scale`; labels kept
 /// inside [0, right_limit) x [0, height). Ticks at round values of `axes` (voxel indices where a
 /// span is unknown), marks pointing away from the cube; a tick whose label would leave that area or
-/// come within a glyph's width of a label placed before it is left out.
+/// come within a glyph's width of a label placed before it (one and a half beside an axis name) is left out,
+/// and so are inline and crossline values at the corner the two edges share (where a value could
+/// be either's) unless that leaves an edge fewer than two.
 std::array<AxisEdge, 3> layout_orientation(const ViewGeometry& view, int width, int height, float right_limit,
                                            float text_scale, const SurveyAxes& axes = {});
 
