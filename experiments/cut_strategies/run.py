@@ -259,7 +259,7 @@ def report(exp, result):
         "reference), pose 0/25, same aperture. Footprint = `primary_pixels`, the visible primary pixels of the timed "
         f"frames at {size[0]}x{size[1]} (median) in the `frustum` row. Strategies are compared by ratios within one "
         "configuration (same model, fraction and poses, in the same process).",
-        headline=f"GPU jfa vs the CPU transform it replaced: {jfa['median']:.2f}x median" if jfa else None)
+        headline=f"jfa in GL vs the CPU transform it replaced: {jfa['median']:.2f}x median" if jfa else None)
     out.section("Crossover at matched accuracy",
                 "frustum / alternative time per configuration (> 1: the alternative is cheaper). `jfa2` is the near-exact "
                 "cone-field transform, `frustum-sweep` the exact union of the frustums in O(pixels); the Chamfer masks are "

@@ -230,7 +230,7 @@ def report(exp, document):
     result.table(["volumes", "count", "triangles", "frame ms", "cut_surface ms", "added", "secondary ms",
                   "SSAO+filter+post ms", "frame / no volume", "target"], cost_rows(rows), align="lrrrrrrrrl")
     result.text(per_triangle_sentence(rows)).text(drift_sentence(rows))
-    result.section("Figures",
+    result.section("What the figures show",
                    f"`cut_volumes.png`: preset:{config['panel_preset']} at {config['panel_size'][0]}x{config['panel_size'][1]}, "
                    "camera azimuth 215, elevation 40, `--aperture 0 0` (the cut is each volume's own footprint), "
                    "`--primaries none` and one volume per panel; the well panel draws the generated deck's wells "

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Figure 8 of Duan & Li: GPU and CPU ray casting time as the cube grows 10 times by 10x28x25 samples.
+"""Figure 8 of Duan & Li: GL (on a GPU where one ran it) and CPU ray casting time as the cube grows 10 times by 10x28x25 samples.
 
 Interface (for experiments/run_all):
   experiments/volume_fig8/run.py [--quick] [--force] [--report-only] [--build DIR] [--out DIR]
@@ -127,7 +127,7 @@ def report(exp, document):
     medians = [statistics.median(c["trials_ms"]) for c in gpu]
     cpu_medians = [statistics.median(c["trials_ms"]) for c in cpu] if both else []
     cpu_part = f" and {proto.get('cpu_trials')} of the CPU caster" if both else ""
-    ratios = f"; the CPU caster {min(document['cpu_over_gpu']):.1f}-{max(document['cpu_over_gpu']):.1f}x the GPU's" if both else ""
+    ratios = f"; the CPU caster {min(document['cpu_over_gpu']):.1f}-{max(document['cpu_over_gpu']):.1f}x the GL caster's" if both else ""
     result = md.Report(
         "Seismic figure 8: GPU and CPU ray casting time as the cube grows",
         f"Time to ray cast growing synthetic seismic cubes (growth-k, k = {steps[0]['step']}..{steps[-1]['step']}: "
