@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <optional>
 
 namespace cutaway::annotation {
@@ -78,17 +77,21 @@ int conflicts(const PixelRect& box, std::size_t r, const std::vector<LabelReques
     return count;
 }
 
+/// A label's box and its conflicts among the other labels.
+struct Choice {
+    PixelRect box;
+    int conflicts = 0;
+};
+
 /// The first of `boxes` (a label's candidates for request `r`) with the fewest conflicts among the
 /// labels `placed`; none if `boxes` is empty.
-std::optional<PixelRect> least_conflicting(const std::vector<PixelRect>& boxes, std::size_t r,
-                                           const std::vector<LabelRequest>& requests, const std::vector<PlacedLabel>& placed,
-                                           const std::vector<PixelRect>& obstacles) {
-    std::optional<PixelRect> chosen;
-    int fewest = std::numeric_limits<int>::max();
+std::optional<Choice> least_conflicting(const std::vector<PixelRect>& boxes, std::size_t r,
+                                        const std::vector<LabelRequest>& requests, const std::vector<PlacedLabel>& placed,
+                                        const std::vector<PixelRect>& obstacles) {
+    std::optional<Choice> chosen;
     for (const PixelRect& box : boxes) {
-        if (const int c = conflicts(box, r, requests, placed, obstacles); c < fewest) {
-            fewest = c;
-            chosen = box;
+        if (const int c = conflicts(box, r, requests, placed, obstacles); !chosen || c < chosen->conflicts) {
+            chosen = Choice{box, c};
             if (c == 0) break;
         }
     }
@@ -123,9 +126,9 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
         for (const auto& [dx, dy] : candidate_offsets(box0.width(), box0.height(), gap))
             if (const PixelRect box = moved(box0, request.anchor_x + dx - box0.x0, request.anchor_y + dy - box0.y0); inside(box, x1, y1))
                 boxes.push_back(box);
-        const std::optional<PixelRect> chosen = least_conflicting(boxes, r, requests, placed, obstacles);
+        const std::optional<Choice> chosen = least_conflicting(boxes, r, requests, placed, obstacles);
         PlacedLabel label;
-        label.box = chosen ? *chosen : clamped(moved(box0, request.anchor_x + gap, request.anchor_y + gap), float(width), y1);
+        label.box = chosen ? chosen->box : clamped(moved(box0, request.anchor_x + gap, request.anchor_y + gap), float(width), y1);
         label.line = {request.text, label.box.x0 - box0.x0, label.box.y0 - box0.y0, s};
         label.anchor_x = request.anchor_x;
         label.anchor_y = request.anchor_y;
@@ -144,11 +147,11 @@ std::vector<PlacedLabel> place_labels(const std::vector<LabelRequest>& requests,
             PlacedLabel& label = placed[i];
             const int now = conflicts(label.box, label.request, requests, others, obstacles);
             if (now == 0) continue;
-            const std::optional<PixelRect> better = least_conflicting(candidates[i], label.request, requests, others, obstacles);
-            if (!better || conflicts(*better, label.request, requests, others, obstacles) >= now) continue;
-            label.line.x += better->x0 - label.box.x0;
-            label.line.y += better->y0 - label.box.y0;
-            label.box = *better;
+            const std::optional<Choice> better = least_conflicting(candidates[i], label.request, requests, others, obstacles);
+            if (!better || better->conflicts >= now) continue;
+            label.line.x += better->box.x0 - label.box.x0;
+            label.line.y += better->box.y0 - label.box.y0;
+            label.box = better->box;
             moved_any = true;
         }
         if (!moved_any) break;
