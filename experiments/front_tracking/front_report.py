@@ -83,7 +83,7 @@ def dates_figure(name, model, steps, frames, path):
     return shown
 
 
-SUMMARIES = ("pop_max", "cut_flicker_max", "primary_exposure_min", "context_share_mean", "frame_count", "frames_wall_s",
+SUMMARIES = ("pop_max", "pop_reversals_total", "cut_flicker_max", "primary_exposure_min", "context_share_mean", "frame_count", "frames_wall_s",
              "frame_ms_median", "report_steps_read")
 
 
@@ -162,6 +162,7 @@ def targets(document):
             "cut_flicker_max": {"none": none["cut_flicker_max"], "smooth": smooth["cut_flicker_max"], "ratio": flicker,
                                 "holds": flicker >= FLICKER_RATIO},
             "pop_max": {"none": none["pop_max"], "smooth": smooth["pop_max"], "ratio": pops, "holds": pops >= POP_RATIO},
+            "pop_reversals_total": {mode: run.get("pop_reversals_total") for mode, run in entry["runs"].items()},
             "cut_flicker_after_first_switch": _after_first_switch(none, smooth),
             "context_share_at_steps": {"none": none["context_share_at_steps"], "smooth": smooth["context_share_at_steps"],
                                        "relative_change": context, "holds": abs(context) <= CONTEXT_TOLERANCE,
@@ -247,12 +248,13 @@ def readme_body(document):
     lines = ["Context: " + p["context_share"] + ".", "",
              "## Targets", "",
              "| model | property, size, frames | exposure min none / smooth | cut flicker max none / smooth (ratio) "
-             "| pop max none / smooth (ratio) | flicker max after report step 1 none / smooth (ratio; not a target) "
+             "| pop max none / smooth (ratio) | cells turning back none / smooth (not a target) | flicker max after report step 1 none / smooth (ratio; not a target) "
              "| context share at report steps none / smooth (change); first frame; all frames |",
-             "|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|"]
     for name, entry in document["models"].items():
         m, model = t[name], p["models"][name]
         e, f, q, c = m["primary_exposure_min"], m["cut_flicker_max"], m["pop_max"], m["context_share_at_steps"]
+        back = m["pop_reversals_total"]
         shown = entry["runs"]["none"]["per_frame"]["time_step"]
         later = m["cut_flicker_after_first_switch"]
         lines.append(f"| {name} ({entry['report_steps']} report steps {entry['first_date'][:10]} .. {entry['last_date'][:10]}; "
@@ -262,6 +264,7 @@ def readme_body(document):
                      f"{_number(e['none'])} / {_number(e['smooth'])} {_mark(e['holds'])} | "
                      f"{_number(f['none'], 3)} / {_number(f['smooth'], 3)} ({_number(f['ratio'], 3)}x) {_mark(f['holds'])} | "
                      f"{q['none']} / {q['smooth']} ({_number(q['ratio'], 3)}x) {_mark(q['holds'])} | "
+                     f"{_number(back['none'])} / {_number(back['smooth'])} | "
                      f"{_number(later['none'], 3)} / {_number(later['smooth'], 3)} ({_number(later['ratio'], 3)}x) | "
                      f"{_number(c['none'], 3)} / {_number(c['smooth'], 3)} ({100 * c['relative_change']:+.1f}%) {_mark(c['holds'])}; "
                      f"{_number(c['first_frame']['none'], 3)} / {_number(c['first_frame']['smooth'], 3)}; "
@@ -270,7 +273,9 @@ def readme_body(document):
     lines += ["", f"Targets: exposure min 1.0 in both modes; none/smooth ratio of cut flicker max and of pop max at least "
                   f"{FLICKER_RATIO:g}; context share of smooth within {100 * CONTEXT_TOLERANCE:.0f}% of none's. Cut flicker: the share "
                   "of model pixels whose state (cut away or not) changed since the previous frame; pops: cells entering and "
-                  "leaving the drawn primary set. In a waterflood the switch from step 0 (no primaries yet) to step 1 is one "
+                  "leaving the drawn primary set. Cells turning back (summed over the run): a cell leaving the primary set "
+                  "after it entered in an earlier frame, or entering after it left, the \"cells [that] arbitrary pop in and "
+                  "out\" of the paper's open problem; a front that only advances has none. In a waterflood the switch from step 0 (no primaries yet) to step 1 is one "
                   "event that decides both modes' flicker maximum; the column after the pops gives the maximum over the "
                   "frames after step 1, where the front moves on (not a target of the issue).", "",
               "Where each largest flicker happens (fractional report step, primary cells before and after):", ""]
@@ -285,7 +290,9 @@ def readme_body(document):
                   "seed strategies' cone slope follows the primaries' centroid a share per frame. A single cell entering "
                   "in a new place so flips its cut a share at a time. The opening's length and pace are empirical "
                   "choices on zaphirus and SPE9 (src/cutaway/temporal/cell_openings.h). Pops are whole cells and "
-                  "cannot be split over frames: a 3x lower pop max needs none's to be at least 3.", "",
+                  "cannot be split over frames: a 3x lower pop max needs none's to be at least 3. Where none's is lower (a "
+                  "front that adds a cell or two per report step), smooth can only halve it, by entering those cells in "
+                  "different frames; what it removes there is the cells turning back, which the hysteresis stops.", "",
                   f"Upload per switch of report step (bytes per active cell, largest over the run; target at most "
                   f"{UPLOAD_PER_ACTIVE_CELL:g} at any frame after the first, both modes):", ""]
     lines += [line + f"; {_mark(t[name]['upload_per_active_cell']['holds'])}" for name, line in zip(document["models"], _per_model(
@@ -302,7 +309,7 @@ def readme_body(document):
               f"{_mark(a['holds'])}); median frame {timing['frame_ms_median']:.1f} ms against {timing['render_ms_median']:.1f} ms.",
               "", "## Files", "",
               "- `stats_MODEL_MODE.json`: each metric run's stats.json (per frame: time_step, primary_exposure, pop_in, "
-              "pop_out, cut_flicker, context_share, cells_opening, upload_bytes, ms; summaries; configuration; machine)",
+              "pop_out, pop_reversals, cut_flicker, context_share, cells_opening, upload_bytes, ms; summaries; configuration; machine)",
               f"- `MODEL_MODE.mp4`: the videos, {p['video']['size'][0]}x{p['video']['size'][1]}, {p['video']['fps']} fps, "
               f"crf {p['video']['crf']}",
               "- `front_dates_MODEL.png`: the front at 4 dates halfway between report steps, none above smooth",

@@ -26,10 +26,10 @@
 #include "app_core/run_context_json.h"
 #include "app_core/frame_wells.h"
 #include "app_core/step_value_sources.h"
-#include "annotation/label_placement.h"
 #include "annotation/property_units.h"
 #include "cutaway/cut_surface/cut_strategy_choice.h"
 #include "cutaway/cutaway_renderer.h"
+#include "cutaway/frame_caption.h"
 #include "cutaway/renderer_readback.h"
 #include "cutaway/temporal/coherence.h"
 #include "cutaway/temporal/coherent_sequence.h"
@@ -179,9 +179,8 @@ public:
         caption_steps_ = std::move(steps);
         caption_step_count_ = step_count;
         const std::string first = eclipse::step_caption(label_.property, eclipse::date_at(caption_steps_, 0.0), 0.0, step_count);
-        if (const auto caption = annotation::place_caption(first, scene_.width, scene_.height,
-                                                           renderer_.status(settings_).colour_bar_reserved_width, label_.min_text_px))
-            caption_rows_ = caption->box.y1 + caption->box.y0;  // the caption and a margin as wide as above it
+        caption_rows_ = pipeline::caption_reserved_rows(first, scene_.width, scene_.height,
+                                                        renderer_.status(settings_).colour_bar_reserved_width, label_.min_text_px);
     }
 
     /// Frame `f` of `frame`: its stats entry.
@@ -207,6 +206,8 @@ public:
             const metrics::PopCounts pops = metrics::count_pops(previous_flags_, *frame.flags);
             entry["pop_in"] = pops.in;
             entry["pop_out"] = pops.out;
+            if (!reversals_) reversals_.emplace(frame.flags->size());
+            entry["pop_reversals"] = reversals_->count(previous_flags_, *frame.flags);
         }
         if (options_.metrics) add_image_metrics(entry, renderer_, primaries_only_, camera, previous_states_);
         previous_flags_ = *frame.flags;
@@ -293,6 +294,7 @@ private:
     grid::PrimaryRange primary_range_;
     std::optional<grid::IjkBox> box_;
     std::vector<std::uint8_t> previous_flags_;
+    std::optional<metrics::PopReversals> reversals_;  ///< from frame 1: each cell's last change
     std::vector<metrics::CutState> previous_states_;
     bool had_openings_ = false;
     std::optional<glm::vec3> cone_reference_;  ///< smooth: the eased point (ease_cone_reference)

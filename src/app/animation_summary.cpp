@@ -30,10 +30,14 @@ void put_extreme(json& stats, const std::string& name, const json& frames, const
 
 void put_frame_summaries(json& stats, const json& frames, double encoder_finish_ms) {
     json pops = json::array();
-    for (const json& frame : frames)
+    std::size_t reversals = 0;
+    for (const json& frame : frames) {
         if (frame.contains("pop_in")) pops.push_back({{"pop", frame["pop_in"].get<double>() + frame["pop_out"].get<double>()}});
+        reversals += frame.value("pop_reversals", std::size_t(0));
+    }
     put_extreme(stats, "pop_max", pops, "pop", true, "one frame: no frame before it");
     if (stats["pop_max"].is_number()) stats["pop_max"] = stats["pop_max"].get<std::size_t>();
+    stats["pop_reversals_total"] = reversals;
     put_extreme(stats, "cut_flicker_max", frames, "cut_flicker", true, "one frame, or --no-metrics");
     put_extreme(stats, "primary_exposure_min", frames, "primary_exposure", false,
                 "--no-metrics, or no frame has a primary pixel");

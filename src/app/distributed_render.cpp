@@ -213,12 +213,15 @@ struct RankScene {
         property.owned = std::vector<float>();  // (= {} would keep the capacity)
         property.external = nullptr;
         model.grid = {};  // the loaded block and its halo go; the renderer's block stays
-        // Framed as the single-process frame is: beside the colour bar rank 0 draws.
-        const float bar_width = rank->renderer().status(options.frame_settings()).colour_bar_reserved_width;
-        camera = pipeline::make_orbit_camera(frame, options.camera_pose(), options.width, options.height, bar_width);
+        // Framed as the single-process frame is: beside the colour bar and below the caption rank 0 draws.
+        pipeline::FrameSettings settings = options.frame_settings();
+        settings.caption = caption;
+        const pipeline::RendererStatus status = rank->renderer().status(settings);
+        const float bar_width = status.colour_bar_reserved_width, caption_rows = status.caption_reserved_height;
+        camera = pipeline::make_orbit_camera(frame, options.camera_pose(), options.width, options.height, bar_width, 0, caption_rows);
         if (options.freeze_pose)
-            rank->renderer().freeze(
-                pipeline::make_orbit_camera(frame, *options.freeze_pose, options.width, options.height, bar_width));
+            rank->renderer().freeze(pipeline::make_orbit_camera(frame, *options.freeze_pose, options.width, options.height, bar_width,
+                                                                0, caption_rows));
     }
 
     grid::GridDims whole_dims;

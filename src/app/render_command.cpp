@@ -132,10 +132,14 @@ void hold_frame_properties(LoadedModel& model, const RenderOptions& options) {
 /// The frame's camera beside the colour bar; with --freeze-camera the frozen cut's camera set.
 pipeline::Camera frame_camera(pipeline::CutawayRenderer& renderer, const pipeline::FrameSettings& settings,
                               const RenderOptions& options) {
-    const float bar_width = renderer.status(settings).colour_bar_reserved_width;
+    // Framed beside the colour bar and below the caption (a case's report step), if any.
+    const pipeline::RendererStatus status = renderer.status(settings);
+    const float bar_width = status.colour_bar_reserved_width, caption_rows = status.caption_reserved_height;
     if (options.freeze_pose)
-        renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *options.freeze_pose, options.width, options.height, bar_width));
-    return pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height, bar_width);
+        renderer.freeze(pipeline::make_orbit_camera(renderer.frame(), *options.freeze_pose, options.width, options.height, bar_width,
+                                                    0, caption_rows));
+    return pipeline::make_orbit_camera(renderer.frame(), options.camera_pose(), options.width, options.height, bar_width, 0,
+                                       caption_rows);
 }
 
 /// --warmup untimed frames, then --repeat timed ones.

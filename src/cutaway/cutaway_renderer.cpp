@@ -261,6 +261,8 @@ RendererStatus CutawayRenderer::status(const FrameSettings& settings) const {
     status.cut_strategy = cut_strategy(settings);
     status.auto_sweep_from = auto_sweep_from_;
     status.colour_bar_reserved_width = colour_bar_reserved_width(settings);
+    status.caption_reserved_height = caption_reserved_rows(settings.caption, width_, height_, status.colour_bar_reserved_width,
+                                                           label_.min_text_px);
     status.frozen = frozen_camera_.has_value();
     status.frames_redrawn = frames_redrawn_;
     status.face_count_readback_bytes = visible_.count_readback_bytes();

@@ -133,6 +133,9 @@ struct RendererStatus {
     /// Columns at the image's right edge a framed camera leaves to the colour bar (0 without one):
     /// the `reserved_right_px` of make_orbit_camera.
     float colour_bar_reserved_width = 0;
+    /// Rows at the image's top a framed camera leaves to settings.caption (0 without one): the
+    /// `reserved_top_px` of make_orbit_camera (frame_caption.h caption_reserved_rows).
+    float caption_reserved_height = 0;
     bool frozen = false;
     std::size_t frames_redrawn = 0;      ///< frames drawn twice because the culling's face buffer grew
     /// Bytes of the culling's face count read back after frames (0 while its buffer holds every

@@ -6,6 +6,11 @@
 
 namespace cutaway::pipeline {
 
+float caption_reserved_rows(const std::string& text, int width, int height, float reserved_right, float min_text_px) {
+    const auto caption = annotation::place_caption(text, width, height, reserved_right, min_text_px);
+    return caption ? caption->box.y1 + caption->box.y0 : 0.0f;
+}
+
 void FrameCaption::draw(const gl::Framebuffer& target, int width, int height, const std::string& text, float reserved_right,
                         float min_text_px) {
     const auto caption = annotation::place_caption(text, width, height, reserved_right, min_text_px);

@@ -9,6 +9,12 @@
 
 namespace cutaway::pipeline {
 
+/// Rows at the top of a width x height image that `text`'s caption takes, with a margin below it as
+/// wide as the one above: the `reserved_top_px` of make_orbit_camera that frames the model below
+/// the caption (0 for blank text or an image too small for it). `reserved_right`, `min_text_px`:
+/// as draw's.
+float caption_reserved_rows(const std::string& text, int width, int height, float reserved_right, float min_text_px);
+
 class FrameCaption {
 public:
     explicit FrameCaption(const gl::ShaderLibrary& shaders) : batch_(shaders) {}

@@ -24,7 +24,7 @@ std::string date_at(const std::vector<eclipse::ReportStep>& steps, double time_s
 
 std::string step_caption(const std::string& property, const std::string& date, double time_step, std::size_t step_count) {
     char step[64];
-    std::snprintf(step, sizeof step, "(step %.4g of %zu)", time_step, step_count > 0 ? step_count - 1 : 0);
+    std::snprintf(step, sizeof step, "(step %.4g of 0-%zu)", time_step, step_count > 0 ? step_count - 1 : 0);
     return property + "  " + (date.empty() ? "" : date + "  ") + step;
 }
 

@@ -13,8 +13,9 @@ namespace cutaway::eclipse {
 /// it. Empty when `steps` is empty (a model without dates, e.g. a generated flood).
 std::string date_at(const std::vector<eclipse::ReportStep>& steps, double time_step);
 
-/// What the viewer and animate write over the frame: "SWAT  2025-11-03  (step 0.5 of 30)", without the
-/// date when there is none.
+/// What the viewer and animate write over the frame: "SWAT  2025-11-03  (step 0.5 of 0-30)" for 31
+/// report steps (the steps' 0-based indices, as --time-step counts them), without the date when
+/// there is none.
 std::string step_caption(const std::string& property, const std::string& date, double time_step, std::size_t step_count);
 
 }  // namespace cutaway::eclipse

@@ -27,6 +27,20 @@ PopCounts count_pops(const std::vector<std::uint8_t>& before, const std::vector<
     return pops;
 }
 
+std::size_t PopReversals::count(const std::vector<std::uint8_t>& before, const std::vector<std::uint8_t>& after) {
+    require_same_size(last_change_.size(), before.size(), "primary flags before");
+    require_same_size(last_change_.size(), after.size(), "primary flags after");
+    std::size_t reversals = 0;
+    for (std::size_t c = 0; c < after.size(); ++c) {
+        const bool was = before[c] != 0, is = after[c] != 0;
+        if (was == is) continue;
+        const std::int8_t change = is ? 1 : -1;
+        reversals += last_change_[c] == -change;
+        last_change_[c] = change;
+    }
+    return reversals;
+}
+
 std::vector<CutState> cut_states(const std::vector<std::uint32_t>& cell, const std::vector<std::uint32_t>& flags) {
     require_same_size(cell.size(), flags.size(), "cell ids and flags");
     std::vector<CutState> states(cell.size(), CutState::background);

@@ -16,6 +16,23 @@ struct PopCounts {
 /// std::invalid_argument when the sizes differ.
 PopCounts count_pops(const std::vector<std::uint8_t>& before, const std::vector<std::uint8_t>& after);
 
+/// The paper's open problem is cells that "arbitrary pop in and out" of the primary set: over an
+/// animation, a reversal is a cell leaving the set after it entered in an earlier frame, or
+/// entering after it left. A front that only advances has none; a value hovering at a range
+/// limit makes one at each crossing after its first.
+class PopReversals {
+public:
+    explicit PopReversals(std::size_t cells) : last_change_(cells, 0) {}
+
+    /// The reversals from `before` to `after` (one flag per cell, nonzero = primary), each cell's
+    /// change recorded for the frames after. Throws std::invalid_argument when a size differs
+    /// from the cell count.
+    std::size_t count(const std::vector<std::uint8_t>& before, const std::vector<std::uint8_t>& after);
+
+private:
+    std::vector<std::int8_t> last_change_;  ///< per cell: +1 entered, -1 left, 0 not changed yet
+};
+
 /// What a pixel shows, for the flicker metric.
 enum class CutState : std::uint8_t {
     background = 0,  ///< no cell

@@ -199,7 +199,7 @@ TEST(AxisTicks, RoundStepsAndDigits) {
 // the colour bar's columns, shrunk rather than cut when the image is narrow; nothing to draw for
 // blank text or an image too small for it.
 TEST(FrameCaption, StaysInsideTheImageLeftOfTheColourBar) {
-    const std::string text = "SWAT  2031-06-15  (step 2.5 of 30)";
+    const std::string text = "SWAT  2031-06-15  (step 2.5 of 0-30)";
     for (const Size size : {Size{1920, 1080}, Size{320, 180}, Size{120, 400}}) {
         const float reserved = 0.15f * float(size.width);
         const auto caption = place_caption(text, size.width, size.height, reserved);

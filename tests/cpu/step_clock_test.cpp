@@ -29,8 +29,8 @@ TEST(StepClock, DatesBetweenStepsAreInterpolatedInDaysAcrossMonthEnds) {
 }
 
 TEST(StepClock, CaptionNamesPropertyDateAndStep) {
-    EXPECT_EQ(step_caption("SWAT", "2025-01-21", 0.5, 31), "SWAT  2025-01-21  (step 0.5 of 30)");
-    EXPECT_EQ(step_caption("SWAT", "", 3, 6), "SWAT  (step 3 of 5)");
+    EXPECT_EQ(step_caption("SWAT", "2025-01-21", 0.5, 31), "SWAT  2025-01-21  (step 0.5 of 0-30)");
+    EXPECT_EQ(step_caption("SWAT", "", 3, 6), "SWAT  (step 3 of 0-5)");
 }
 
 }  // namespace

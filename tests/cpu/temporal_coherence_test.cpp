@@ -329,5 +329,30 @@ TEST_F(ShockFront, SmoothHysteresisKeepsPrimariesTheBandCovers) {
     expect_steps_select_as(smooth, timeline, kept);
 }
 
+TEST(PopReversals, SmoothsHysteresisStopsValuesHoveringAtTheLimitFromPoppingInAndOut) {
+    // Every cell's value crosses the primary range's lower limit (0.5) at each report step, by
+    // 0.02 either way: the paper's "cells may arbitrary pop in and out". None selects anew and
+    // turns every cell back at every step after the first change; smooth's band (0.05 of the
+    // colour span 0-1, larger than the 0.02 swing) keeps a cell once it entered.
+    const grid::CornerPointGrid grid = front_grid();
+    std::vector<std::vector<float>> steps;
+    for (int step = 0; step < 6; ++step) steps.emplace_back(grid.cell_count(), step % 2 ? 0.52f : 0.48f);
+    const VectorSteps source{steps};
+    const AnimationTimeline timeline{0, 5, 4};
+    std::size_t reversals[2] = {0, 0};
+    for (const Coherence mode : {Coherence::none, Coherence::smooth}) {
+        CoherentSequence sequence(grid, source, timeline, mode, {0.5f, 1.0f}, 0.05f);
+        metrics::PopReversals counter(grid.cell_count());
+        std::vector<std::uint8_t> previous;
+        for (std::size_t f = 0; f < timeline.frame_count(); ++f) {
+            const CoherentSequence::Frame frame = sequence.next();
+            if (f > 0) reversals[mode == Coherence::smooth] += counter.count(previous, *frame.flags);
+            previous = *frame.flags;
+        }
+    }
+    EXPECT_EQ(reversals[0], 4 * grid.cell_count());  // in at 1, out at 2, in at 3, out at 4, in at 5
+    EXPECT_EQ(reversals[1], 0u);
+}
+
 }  // namespace
 }  // namespace cutaway::temporal

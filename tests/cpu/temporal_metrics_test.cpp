@@ -16,6 +16,17 @@ TEST(TemporalMetrics, PopsCountCellsEnteringAndLeaving) {
     EXPECT_THROW(count_pops({0, 1}, {0}), std::invalid_argument);
 }
 
+TEST(TemporalMetrics, ReversalsCountOnlyCellsTurningBack) {
+    // Cell 0 enters and stays (a front advancing: no reversal); cell 1 hovers at a range limit
+    // (in, out, in: two reversals); cell 2 leaves, then comes back (one); cell 3 never changes.
+    PopReversals reversals(4);
+    EXPECT_EQ(reversals.count({0, 0, 1, 1}, {1, 1, 0, 1}), 0u);  // first changes: nothing to reverse
+    EXPECT_EQ(reversals.count({1, 1, 0, 1}, {1, 0, 0, 1}), 1u);  // cell 1 leaves after entering
+    EXPECT_EQ(reversals.count({1, 0, 0, 1}, {1, 1, 1, 1}), 2u);  // cell 1 back, cell 2 back
+    EXPECT_EQ(reversals.count({1, 1, 1, 1}, {1, 1, 1, 1}), 0u);
+    EXPECT_THROW(reversals.count({0, 1}, {0, 1}), std::invalid_argument);
+}
+
 TEST(TemporalMetrics, CutAwayIsExactlyTheCutFill) {
     const std::vector<std::uint32_t> cell{0, 5, 5, 7, 7};
     const std::vector<std::uint32_t> flags{flag_cut_fill, 0, flag_cut_fill, flag_primary, flag_cut_fill | flag_border};

@@ -180,7 +180,7 @@ TEST(FigureLayout, CaptionDrawsItsTextOnlyInsideItsBox) {
     renderer->render(settings, camera);
     const gl::RgbaImage plain = pipeline::FrameReadback(*renderer).read_image();
     const std::vector<std::uint32_t> ids = pipeline::FrameReadback(*renderer).read_eclipse_ids();
-    const std::string text = "SWAT  2031-06-15  (step 2.5 of 30)";
+    const std::string text = "SWAT  2031-06-15  (step 2.5 of 0-30)";
     settings.caption = text;
     renderer->render(settings, camera);
     const gl::RgbaImage captioned = pipeline::FrameReadback(*renderer).read_image();
@@ -210,6 +210,17 @@ TEST(FigureLayout, CaptionDrawsItsTextOnlyInsideItsBox) {
     // Capitals at least 2% of the height (the colour bar's), legible when the frame is a figure.
     EXPECT_GE(caption->line.scale * annotation::cap_height_px, 0.02f * height);
     EXPECT_EQ(restored, background) << "an empty caption draws nothing";
+
+    // render and animate frame the model below the caption by the rows the renderer reserves for
+    // it (the box and a margin as wide as above it): no model pixel in the box's rows.
+    EXPECT_EQ(renderer->status(settings).caption_reserved_height, 0.0f) << "no caption, no rows";
+    settings.caption = text;
+    const float rows = renderer->status(settings).caption_reserved_height;
+    EXPECT_FLOAT_EQ(rows, caption->box.y1 + caption->box.y0);
+    renderer->render(settings, pipeline::make_orbit_camera(renderer->frame(), {35, 30, 0, glm::vec3(0)}, width, height,
+                                                           renderer->status(settings).colour_bar_reserved_width, 0, rows));
+    const PixelBox below = model_pixels(pipeline::FrameReadback(*renderer).read_eclipse_ids(), width, height);
+    EXPECT_GE(float(below.y0), caption->box.y1) << "model under the caption";
 }
 
 TEST(FigureLayout, PrimaryPixelsShowTheirColourMapColour) {
