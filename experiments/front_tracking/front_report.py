@@ -291,8 +291,8 @@ def readme_body(document):
                   "in a new place so flips its cut a share at a time. The opening's length and pace are empirical "
                   "choices on zaphirus and SPE9 (src/cutaway/temporal/cell_openings.h). Pops are whole cells and "
                   "cannot be split over frames: a 3x lower pop max needs none's to be at least 3. Where none's is lower (a "
-                  "front that adds a cell or two per report step), smooth can only halve it, by entering those cells in "
-                  "different frames; what it removes there is the cells turning back, which the hysteresis stops.", "",
+                  "front that adds a cell or two per report step), smooth can at most halve it, by entering those cells "
+                  "in different frames.", "",
                   f"Upload per switch of report step (bytes per active cell, largest over the run; target at most "
                   f"{UPLOAD_PER_ACTIVE_CELL:g} at any frame after the first, both modes):", ""]
     lines += [line + f"; {_mark(t[name]['upload_per_active_cell']['holds'])}" for name, line in zip(document["models"], _per_model(
