@@ -26,6 +26,7 @@ uniform vec2 projection_scale;   // P[0][0], P[1][1]
 uniform vec2 viewport_size;
 uniform float radius;            // render units
 uniform float strength;
+uniform float min_factor;        // the least factor: occluded pixels stay dark, never black
 #ifdef CUT_DEPTH
 layout(rg32ui, binding = img_scene_id) uniform readonly uimage2D scene_id;          // compact cell + 1, pixel flags
 layout(r32f, binding = img_post_cut_depth) uniform readonly image2D cut_depth;     // the resolved cut, the model camera's
@@ -85,5 +86,5 @@ void main() {
         float occludes = max(dot(normal, d) * inversesqrt(distance2 + 1e-12) - 0.05, 0.0) / (1.0 + distance2 * inverse_radius2);
         occlusion += depth > 0.0 ? occludes : 0.0;
     }
-    imageStore(ambient, target, vec4(clamp(1.0 - strength * occlusion / float(SAMPLES), 0.0, 1.0), here_depth, 0.0, 0.0));
+    imageStore(ambient, target, vec4(clamp(1.0 - strength * occlusion / float(SAMPLES), min_factor, 1.0), here_depth, 0.0, 0.0));
 }

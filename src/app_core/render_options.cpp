@@ -107,6 +107,7 @@ nlohmann::json RenderOptions::describe() const {
             {"line_width_px", s.line_width_px}, {"mean_filter", s.mean_filter},
             {"mean_filter_kernel", pipeline::to_string(s.mean_filter_kernel)}, {"ssao", s.ssao},
             {"ssao_samples", s.ssao_samples}, {"ssao_radius", s.ssao_radius}, {"ssao_strength", s.ssao_strength},
+            {"ssao_min_factor", s.ssao_min_factor},
             {"ssao_resolution", s.ssao_half_resolution ? "half" : "full"}, {"saturation", s.saturation},
             {"silhouette", s.silhouette}, {"silhouette_width_px", s.silhouette_width_px}, {"contours", s.contours},
             {"hide_internal_lines", s.hide_internal_lines}, {"see_through", s.see_through}, {"only", pipeline::to_string(s.only)},

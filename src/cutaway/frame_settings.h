@@ -52,6 +52,10 @@ struct FrameSettings {
     /// differences are in the commit that set these).
     float ssao_radius = 0.045f;            ///< fraction of the model radius
     float ssao_strength = 4.0f;            ///< occlusion factor = 1 - strength * mean sample occlusion
+    /// The least occlusion factor: a pixel keeps at least this share of its colour. At strength 4
+    /// a narrow crevice (a fault's gap seen beside a cut wall) reached 0 and drew black, read as a
+    /// crack through the model (issue 46's referee); it stays dark, not black.
+    float ssao_min_factor = 0.4f;
     /// true: occlusion computed for one pixel in four and upsampled by depth (post/ssao.comp,
     /// post/composite.comp); false: for every pixel, as the paper.
     bool ssao_half_resolution = true;

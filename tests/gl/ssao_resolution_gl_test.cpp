@@ -19,7 +19,7 @@ namespace {
 // vertical flip of the read-back keeps row parity (height - 1 is even).
 constexpr int width = 321, height = 241;
 
-gl::RgbaImage render_petra(bool ssao, bool half_resolution, const pipeline::OrbitPose& pose) {
+gl::RgbaImage render_petra(bool ssao, bool half_resolution, const pipeline::OrbitPose& pose, float strength = 1.6f) {
     auto renderer = make_renderer(petra(), width, height);
     const std::vector<float>& poro = *petra().property("PORO");
     renderer->select(grid::select_primaries(petra(), poro, "PORO", grid::range_for_fraction(petra(), poro, "PORO", 0.01)));
@@ -30,7 +30,7 @@ gl::RgbaImage render_petra(bool ssao, bool half_resolution, const pipeline::Orbi
     // The bounds below were measured at this strength. The upsampling's fidelity does not depend on
     // it: a stronger occlusion scales every difference between the two frames alike (at the default
     // 4.0, 1.6-2.2% of the interpolated pixels cross the 24/255 level, the same edges).
-    settings.ssao_strength = 1.6f;
+    settings.ssao_strength = strength;
     renderer->render(settings, pipeline::make_orbit_camera(renderer->frame(), pose, width, height));
     return pipeline::FrameReadback(*renderer).read_image();
 }
@@ -70,6 +70,31 @@ TEST(SsaoResolution, HalfResolutionKeepsSampledPixelsAndStaysCloseElsewhere) {
         // would mean the upsampling blurs across edges.
         EXPECT_LE(double(others_off), 0.01 * double(others));
     }
+}
+
+// A crevice (a fault's gap beside a cut wall) drew black at the default strength: occlusion keeps
+// every pixel at least FrameSettings::ssao_min_factor of its colour. The full-resolution pass at
+// the default strength: each pixel's factor is its own, so colour with / without SSAO is the
+// factor (within the 8-bit rounding of both, 1/255 each, and a channel of at least 16 so that
+// the rounding stays below a tenth of the factor).
+TEST(SsaoResolution, OcclusionDarkensButNeverBlackens) {
+    const pipeline::FrameSettings defaults;
+    const pipeline::OrbitPose pose{35, 30, 0, glm::vec3(0)};
+    const gl::RgbaImage occluded = render_petra(true, false, pose, defaults.ssao_strength);
+    const gl::RgbaImage plain = render_petra(false, false, pose, defaults.ssao_strength);
+    double least = 1.0;
+    std::size_t darkened = 0;
+    for (std::size_t p = 0; p < std::size_t(width) * height; ++p)
+        for (std::size_t c = 0; c < 3; ++c) {
+            const double without = plain.pixels[4 * p + c], with = occluded.pixels[4 * p + c];
+            if (without < 16) continue;
+            least = std::min(least, (with + 1.0) / without);
+            darkened += with < 0.7 * without;
+        }
+    std::cout << "ssao at strength " << defaults.ssao_strength << ": least colour share " << least << ", " << darkened
+              << " channels darker than 0.7\n";
+    EXPECT_GT(darkened, std::size_t(width * height / 200)) << "SSAO should still darken creases";
+    EXPECT_GE(least, defaults.ssao_min_factor - 1e-6);
 }
 
 }  // namespace

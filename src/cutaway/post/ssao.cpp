@@ -23,6 +23,7 @@ void Ssao::apply(const SceneTargets& scene, const PostTargets& post, const Camer
     gl::set_uniform(p, "viewport_size", glm::vec2(float(camera.width), float(camera.height)));
     gl::set_uniform(p, "radius", radius);
     gl::set_uniform(p, "strength", settings.ssao_strength);
+    gl::set_uniform(p, "min_factor", settings.ssao_min_factor);
     glBindImageTexture(shared::img_scene_normal_depth, scene.normal_depth.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_RG32UI);
     glBindImageTexture(shared::img_post_ambient, post.ambient.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG32F);
     gl::wait_for_draws_before_image_loads();
