@@ -173,6 +173,7 @@ struct RankScene {
             frame = distributed::global_model_frame(mpi, part, bounds, options.z_scale);
             property.colour_range = distributed::global_value_range(mpi, own_range);
             wells = distributed_wells(mpi, chosen_wells, model, source, bounds, options.well_radius);
+            pipeline::keep_wellheads_in_view(frame, wells);  // framed as the single-process frame is
             const grid::PrimaryRange extremes = distributed::global_value_range(mpi, own_extremes);
             property.primary_range = options.range.empty() ? distributed::global_range_for_fraction(
                                                                  mpi, own_values, primary_fraction(options), extremes.max)

@@ -31,12 +31,13 @@ struct ViewAxes {
 
 /// The points framing looks at: the model's outline, or its box's 8 corners.
 std::vector<glm::vec3> framing_points(const ModelFrame& frame) {
-    if (!frame.outline.empty()) return frame.outline;
-    std::vector<glm::vec3> corners;
-    for (int c = 0; c < 8; ++c)
-        corners.push_back({c & 1 ? frame.render_max.x : frame.render_min.x, c & 2 ? frame.render_max.y : frame.render_min.y,
-                           c & 4 ? frame.render_max.z : frame.render_min.z});
-    return corners;
+    std::vector<glm::vec3> points = frame.outline;
+    if (points.empty())
+        for (int c = 0; c < 8; ++c)
+            points.push_back({c & 1 ? frame.render_max.x : frame.render_min.x, c & 2 ? frame.render_max.y : frame.render_min.y,
+                              c & 4 ? frame.render_max.z : frame.render_min.z});
+    points.insert(points.end(), frame.drawn_with.begin(), frame.drawn_with.end());
+    return points;
 }
 
 ProjectedBox project_box(const std::vector<glm::vec3>& points, float radius, const glm::vec3& target, const ViewAxes& axes,

@@ -240,7 +240,10 @@ void CutawayRenderer::set_opening_cells(const std::vector<temporal::OpeningCell>
     frozen_valid_ = false;
 }
 
-void CutawayRenderer::set_wells(const WellSet& wells) { wells_.set(wells, frame_); }
+void CutawayRenderer::set_wells(const WellSet& wells) {
+    wells_.set(wells, frame_);
+    keep_wellheads_in_view(frame_, wells);
+}
 
 void CutawayRenderer::freeze(const std::optional<Camera>& camera) {
     frozen_camera_ = camera;

@@ -22,6 +22,9 @@ struct ModelFrame {
     /// along 64 directions), for framing the model itself rather than its bounding box; empty
     /// means: use the box's corners.
     std::vector<glm::vec3> outline;
+    /// Render-space points drawn with the model that a framed camera keeps in view beside it: the
+    /// wellheads of the wells drawn, which stand above the model's top (keep_wellheads_in_view).
+    std::vector<glm::vec3> drawn_with;
 
     glm::vec3 to_render(const grid::Point3& p) const {
         return {float(p.x - centre.x), float(p.y - centre.y), float(up_sign * (p.z - centre.z) * z_scale)};

@@ -34,6 +34,12 @@ WellTubes::WellTubes(const gl::ShaderLibrary& shaders)
     glVertexArrayAttribFormat(va, 3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TubeVertex, colour));
 }
 
+void keep_wellheads_in_view(ModelFrame& frame, const WellSet& wells) {
+    frame.drawn_with.clear();
+    for (const DrawnWell& well : wells.wells)
+        if (!well.path.empty()) frame.drawn_with.push_back(frame.to_render(well.path.front()));
+}
+
 void WellTubes::set(const WellSet& set, const ModelFrame& frame) {
     if (set.wells.size() > shared::max_drawn_wells)
         throw std::invalid_argument("wells: " + std::to_string(set.wells.size()) + " to draw, expected at most " +

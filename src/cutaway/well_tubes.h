@@ -32,6 +32,11 @@ struct WellSet {
     double radius = 0;
 };
 
+/// Sets `frame.drawn_with` to the wellheads of `wells` (each path's first point, render space), so
+/// that a framed camera shows every well drawn whole with the model. A frame that changes its
+/// wells (an animation where a well is drilled) may so change its framing.
+void keep_wellheads_in_view(ModelFrame& frame, const WellSet& wells);
+
 /// A wellhead as the labels need it: the well's name, colour and its path's first point (render space).
 struct WellHead {
     std::string name;
