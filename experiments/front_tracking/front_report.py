@@ -83,8 +83,8 @@ def dates_figure(name, model, steps, frames, path):
     return shown
 
 
-SUMMARIES = ("pop_max", "pop_reversals_total", "cut_flicker_max", "primary_exposure_min", "context_share_mean", "frame_count", "frames_wall_s",
-             "frame_ms_median", "report_steps_read")
+SUMMARIES = ("pop_max", "pop_reversals_total", "cut_flicker_max", "primary_exposure_min", "context_share_mean",
+             "frame_count", "frames_wall_s", "frame_ms_median", "report_steps_read")
 
 
 def model_entry(case, model, steps, runs, dates):
@@ -248,7 +248,8 @@ def readme_body(document):
     lines = ["Context: " + p["context_share"] + ".", "",
              "## Targets", "",
              "| model | property, size, frames | exposure min none / smooth | cut flicker max none / smooth (ratio) "
-             "| pop max none / smooth (ratio) | cells turning back none / smooth (not a target) | flicker max after report step 1 none / smooth (ratio; not a target) "
+             "| pop max none / smooth (ratio) | cells turning back none / smooth (not a target) "
+             "| flicker max after report step 1 none / smooth (ratio; not a target) "
              "| context share at report steps none / smooth (change); first frame; all frames |",
              "|---|---|---|---|---|---|---|---|"]
     for name, entry in document["models"].items():
@@ -275,7 +276,8 @@ def readme_body(document):
                   "of model pixels whose state (cut away or not) changed since the previous frame; pops: cells entering and "
                   "leaving the drawn primary set. Cells turning back (summed over the run): a cell leaving the primary set "
                   "after it entered in an earlier frame, or entering after it left, the \"cells [that] arbitrary pop in and "
-                  "out\" of the paper's open problem; a front that only advances has none. In a waterflood the switch from step 0 (no primaries yet) to step 1 is one "
+                  "out\" of the paper's open problem; a front that only advances has none. In a waterflood the switch from "
+                  "step 0 (no primaries yet) to step 1 is one "
                   "event that decides both modes' flicker maximum; the column after the pops gives the maximum over the "
                   "frames after step 1, where the front moves on (not a target of the issue).", "",
               "Where each largest flicker happens (fractional report step, primary cells before and after):", ""]

@@ -47,9 +47,8 @@ inline constexpr float framed_fill = 0.97f;
 /// With `pose.distance` 0 the camera is framed: moved along the view direction and panned so that
 /// the model's projected outline (and what is drawn with it: ModelFrame::drawn_with) fills
 /// `framed_fill` of the image left of its `reserved_right_px` rightmost columns (kept for the
-/// colour bar) and `reserved_left_px`
-/// leftmost ones (the viewer's control panel), and below its `reserved_top_px` top rows (an
-/// animation's date caption), centred there.
+/// colour bar) and `reserved_left_px` leftmost ones (the viewer's control panel), and below its
+/// `reserved_top_px` top rows (a report step's caption), centred there.
 Camera make_orbit_camera(const ModelFrame& frame, const OrbitPose& pose, int width, int height,
                          float reserved_right_px = 0, float reserved_left_px = 0, float reserved_top_px = 0);
 

@@ -218,7 +218,8 @@ public:
     void set_opening_cells(const std::vector<temporal::OpeningCell>& cells);
 
     /// The wells drawn from now on (an empty set: none): their tubes are built and uploaded here,
-    /// once per set; frame() holds their wellheads, so that a framed camera shows them. Throws std::invalid_argument for a well whose path or radius makes no tube.
+    /// once per set; frame() holds their wellheads, so that a framed camera shows them. Throws
+    /// std::invalid_argument for a well whose path or radius makes no tube.
     void set_wells(const WellSet& wells);
 
     /// Freeze view: the cut of `camera` is kept (stage 1 is not re-run) until freeze(std::nullopt).
